@@ -1,0 +1,74 @@
+#include "collide/separating_axis.h"
+
+#include <vector>
+
+namespace cc::sat {
+
+double TriangleSet::magnitude() const { return std::max({max_abs(t.v[0]), max_abs(t.v[1]), max_abs(t.v[2])}); }
+
+Interval TriangleSet::project(const Vec3& axis) const {
+  const double p0 = dot(axis, t.v[0]), p1 = dot(axis, t.v[1]), p2 = dot(axis, t.v[2]);
+  return {std::min({p0, p1, p2}), std::max({p0, p1, p2})};
+}
+
+Vec3 TriangleSet::centroid() const {
+  const auto mean = [this](int k) { return fp::sum3(t.v[0][k], t.v[1][k], t.v[2][k]) / 3; };
+  return {mean(0), mean(1), mean(2)};
+}
+
+double BoxSet::magnitude() const { return std::max(max_abs(box.lo), max_abs(box.hi)); }
+
+Interval BoxSet::project(const Vec3& axis) const {
+  double low[3], high[3];
+  for (int k = 0; k < 3; ++k) {
+    const double a = axis[k] * box.lo[k], b = axis[k] * box.hi[k];
+    low[k] = std::min(a, b);
+    high[k] = std::max(a, b);
+  }
+  return {fp::sum3(low[0], low[1], low[2]), fp::sum3(high[0], high[1], high[2])};
+}
+
+Vec3 BoxSet::centroid() const { return 0.5 * (box.lo + box.hi); }
+
+template <class A, class B>
+bool separates(const Vec3& axis, const A& a, const B& b, double perturbation) {
+  const Interval pa = a.project(axis), pb = b.project(axis);
+  const double gap = std::max(pb.lo - pa.hi, pa.lo - pb.hi);
+  // Each projected end is off by at most 3u |axis|_1 magnitude (a product and two additions
+  // per term), the gap adds one rounding; 5u covers both and the bound's own rounding.
+  const double error =
+      norm1(axis) * (5 * fp::u * (a.magnitude() + b.magnitude()) + perturbation) + fp::subnormal_slack;
+  return gap > error;
+}
+
+template <class A, class B>
+bool separated_by_degenerate_axes(const A& a, const B& b, std::span<const Vec3> generators,
+                                  double perturbation) {
+  std::vector<Vec3> normals;
+  for (std::size_t i = 0; i < generators.size(); ++i) {
+    for (std::size_t j = i + 1; j < generators.size(); ++j) {
+      const Vec3 c = unit_scaled(cross(generators[i], generators[j]));
+      if (c == Vec3{}) continue;
+      if (separates(c, a, b, perturbation)) return true;
+      normals.push_back(c);
+    }
+  }
+  for (const Vec3& c : normals) {  // in-plane normals of a flat Minkowski difference
+    for (const Vec3& g : generators) {
+      if (separates(unit_scaled(cross(c, g)), a, b, perturbation)) return true;
+    }
+  }
+  const Vec3 o = unit_scaled(b.centroid() - a.centroid());
+  for (const Vec3& g : generators) {  // a collinear difference: along and across its line
+    if (separates(g, a, b, perturbation)) return true;
+    if (separates(unit_scaled(cross(g, unit_scaled(cross(g, o)))), a, b, perturbation)) return true;
+  }
+  return separates(o, a, b, perturbation);  // two points
+}
+
+template bool separates(const Vec3&, const TriangleSet&, const TriangleSet&, double);
+template bool separates(const Vec3&, const BoxSet&, const TriangleSet&, double);
+template bool separated_by_degenerate_axes(const TriangleSet&, const TriangleSet&, std::span<const Vec3>, double);
+template bool separated_by_degenerate_axes(const BoxSet&, const TriangleSet&, std::span<const Vec3>, double);
+
+}  // namespace cc::sat

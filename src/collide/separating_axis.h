@@ -1,0 +1,52 @@
+// Certified separating-axis tests shared by the triangle queries (an internal header).
+//
+// Any direction is a valid candidate axis: if the projections of two convex sets onto it are
+// disjoint, so are the sets. So an axis may be computed with rounding errors; only the
+// projections onto the axis as computed need an error bound, and an axis separates only when
+// the gap between the projected intervals exceeds that bound.
+#pragma once
+
+#include <span>
+
+#include "collide/aabb.h"
+#include "collide/triangle.h"
+
+namespace cc::sat {
+
+/// A closed interval of projections.
+struct Interval {
+  double lo, hi;
+};
+
+/// The vertices of a triangle as a convex set to project.
+struct TriangleSet {
+  const Triangle& t;
+  double magnitude() const;                 // largest absolute coordinate
+  Interval project(const Vec3& axis) const;  // each end within 3u |axis|_1 magnitude()
+  Vec3 centroid() const;
+};
+
+/// An axis-aligned box as a convex set to project.
+struct BoxSet {
+  const Aabb& box;
+  double magnitude() const;
+  Interval project(const Vec3& axis) const;
+  Vec3 centroid() const;
+};
+
+/// True when the projections of a and b onto `axis` are apart by more than their rounding
+/// error, with both sets' coordinates also allowed to be off by `perturbation` (a bound on
+/// errors made before, such as a change of frame).
+template <class A, class B>
+bool separates(const Vec3& axis, const A& a, const B& b, double perturbation);
+
+/// The candidate axes that the usual face and edge axes lack when the Minkowski difference of
+/// a and b is not full-dimensional (coplanar or degenerate shapes): for the edge directions
+/// `generators` of both sets, every cross product c of two of them, every c x g, every g,
+/// every g x (g x o) and o, where o joins the centroids. With these the test is complete for
+/// flat, collinear and single-point configurations. True when one of them separates.
+template <class A, class B>
+bool separated_by_degenerate_axes(const A& a, const B& b, std::span<const Vec3> generators,
+                                  double perturbation);
+
+}  // namespace cc::sat
