@@ -1,0 +1,13 @@
+// The exact rational reference, as the harness sees it.
+#pragma once
+
+#include "harness/oracle.h"
+
+namespace cc::exact {
+
+class ExactRationalReference final : public harness::ExactReference {
+ public:
+  harness::ExactVerdict judge(const harness::Input& input) const override;
+};
+
+}  // namespace cc::exact

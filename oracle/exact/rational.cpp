@@ -1,0 +1,101 @@
+#include "oracle/exact/rational.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+namespace cc::exact {
+
+Rational rational(double x) {
+  if (!std::isfinite(x)) throw std::invalid_argument("rational(): not a finite double");
+  Rational q;
+  mpq_set_d(q.get_mpq_t(), x);  // exact for every finite double
+  return q;
+}
+
+double to_double(const Rational& q) {
+  // mpq_get_d truncates; round to nearest by comparing with the two neighbours.
+  const double t = mpq_get_d(q.get_mpq_t());
+  if (!std::isfinite(t)) return t;
+  const double up = std::nextafter(t, q > 0 ? INFINITY : -INFINITY);
+  if (!std::isfinite(up)) return t;
+  const Rational dt = abs(q - rational(t)), du = abs(rational(up) - q);
+  if (du < dt) return up;
+  return t;
+}
+
+QVec3 rational(const Vec3& v) { return {rational(v.x), rational(v.y), rational(v.z)}; }
+QVec3 operator+(const QVec3& a, const QVec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
+QVec3 operator-(const QVec3& a, const QVec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }
+QVec3 operator*(const Rational& s, const QVec3& a) { return {s * a.x, s * a.y, s * a.z}; }
+Rational dot(const QVec3& a, const QVec3& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+QVec3 cross(const QVec3& a, const QVec3& b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+bool is_zero(const QVec3& a) { return sgn(a.x) == 0 && sgn(a.y) == 0 && sgn(a.z) == 0; }
+namespace {
+
+// floor(log2(|q|)) up to one (from the bit lengths), for q != 0.
+long rough_log2(const Rational& q) {
+  return static_cast<long>(mpz_sizeinbase(q.get_num_mpz_t(), 2)) -
+         static_cast<long>(mpz_sizeinbase(q.get_den_mpz_t(), 2));
+}
+
+// q * 2^-e, exactly.
+Rational scaled(const Rational& q, long e) {
+  Rational r;
+  if (e >= 0) {
+    mpq_div_2exp(r.get_mpq_t(), q.get_mpq_t(), static_cast<unsigned long>(e));
+  } else {
+    mpq_mul_2exp(r.get_mpq_t(), q.get_mpq_t(), static_cast<unsigned long>(-e));
+  }
+  return r;
+}
+
+Magnitude normalised(double m, long e) {
+  if (m == 0 || !std::isfinite(m)) return {m, 0};
+  int k = 0;
+  const double f = std::frexp(m, &k);  // m = f 2^k, |f| in [0.5, 1)
+  return {2 * f, e + k - 1};
+}
+
+}  // namespace
+
+Magnitude Magnitude::of(const Rational& q) {
+  if (sgn(q) == 0) return {};
+  const long e = rough_log2(q);
+  return normalised(exact::to_double(scaled(q, e)), e);
+}
+
+double Magnitude::to_double() const {
+  if (m == 0) return 0;
+  if (e > 2000) return std::copysign(INFINITY, m);
+  if (e < -2000) return std::copysign(0.0, m);
+  return std::ldexp(m, static_cast<int>(e));
+}
+
+Magnitude operator*(Magnitude a, Magnitude b) { return normalised(a.m * b.m, a.e + b.e); }
+Magnitude operator/(Magnitude a, Magnitude b) { return normalised(a.m / b.m, a.e - b.e); }
+
+Magnitude length(const QVec3& a) {
+  long e = std::numeric_limits<long>::min();
+  for (int i = 0; i < 3; ++i) {
+    if (sgn(a[i]) != 0) e = std::max(e, rough_log2(a[i]));
+  }
+  if (e == std::numeric_limits<long>::min()) return {};
+  const QVec3 b{scaled(a.x, e), scaled(a.y, e), scaled(a.z, e)};
+  return normalised(std::sqrt(to_double(dot(b, b))), e);
+}
+
+Vec3 to_double(const QVec3& a) { return {to_double(a.x), to_double(a.y), to_double(a.z)}; }
+
+double max_magnitude(std::initializer_list<double> values) {
+  double m = 0;
+  for (double v : values) {
+    if (std::isfinite(v)) m = std::max(m, std::fabs(v));
+  }
+  return m;
+}
+
+}  // namespace cc::exact

@@ -1,0 +1,26 @@
+// What a party says about one query.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace cc::harness {
+
+/// The answer to a query: whether the shapes meet, and for some queries parameters of the
+/// contact. ray_aabb: {t_enter, t_exit} when hit.
+struct Answer {
+  bool hit = false;
+  std::vector<double> params;
+  friend bool operator==(const Answer&, const Answer&) = default;
+};
+
+/// The answer of one second-opinion party (FCL or libccd) to one query.
+struct Opinion {
+  enum class Status { answered, not_applicable, failed };
+  std::string party;  // e.g. "fcl.OBBd::overlap"
+  Status status = Status::not_applicable;
+  Answer answer;
+  std::string detail;  // why not applicable, or what failed
+};
+
+}  // namespace cc::harness

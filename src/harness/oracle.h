@@ -1,0 +1,47 @@
+// The harness reaches the oracles only through these interfaces; oracle/ implements them.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "harness/answer.h"
+#include "harness/input.h"
+
+namespace cc::harness {
+
+/// Whether a query's inputs lie in the library's documented domain.
+enum class Contract {
+  in,           // in the domain: the library's band applies
+  documented,   // outside it, but the library documents its answer (NaN gives false, ...)
+  unspecified,  // outside it, and the library only promises not to crash
+};
+
+/// The exact reference's verdict on one query.
+struct ExactVerdict {
+  Contract contract = Contract::in;
+  bool decided = true;  // false: the reference cannot decide this input ("undecided")
+  Answer answer;        // the exact answer, or the documented one out of contract
+  /// How far the case is from the decision boundary, relative to the inputs' scale: > 0 the
+  /// shapes overlap by that much, < 0 they are apart by that much, 0 they touch. NaN when
+  /// there is no such measure (out of contract).
+  double margin = 0;
+  std::string note;  // why out of contract or undecided
+};
+
+class ExactReference {
+ public:
+  virtual ~ExactReference() = default;
+  virtual ExactVerdict judge(const Input& input) const = 0;
+};
+
+class SecondOpinion {
+ public:
+  virtual ~SecondOpinion() = default;
+  /// One opinion per party that covers this kind of query (possibly "not applicable").
+  virtual std::vector<Opinion> opinions(const Input& input) const = 0;
+  /// The parties that answer this kind of query, in the order of opinions().
+  virtual std::vector<std::string> parties(QueryKind kind) const = 0;
+};
+
+}  // namespace cc::harness
