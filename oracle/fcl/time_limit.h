@@ -1,0 +1,17 @@
+// A time limit for oracle calls that may never return (internal to oracle/fcl).
+#pragma once
+
+#include <functional>
+
+namespace cc::fcl_oracle {
+
+/// Runs f. If it has not returned after `seconds` of wall-clock time, abandons it with a jump
+/// out of a SIGALRM handler and returns false. Only for single-threaded code that holds no
+/// locks and whose abandoned heap objects may leak: libccd's GJK and MPR loops, which do not
+/// terminate on some inputs (long, thin triangles; huge coordinates).
+bool run_with_time_limit(double seconds, const std::function<void()>& f);
+
+/// The limit used for libccd calls: they take microseconds when they return at all.
+inline constexpr double kLibccdTimeLimit = 0.05;
+
+}  // namespace cc::fcl_oracle
