@@ -1,0 +1,47 @@
+// A source of choices for the generators, in the spirit of Hypothesis: a generator draws small
+// integers, and a draw of 0 always means the simplest option. Drawn at random the choices make
+// a campaign; replayed from a vector that RapidCheck shrinks toward zeros they make a property
+// whose counterexamples shrink toward simple values.
+#pragma once
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+namespace cc::harness {
+
+class Choices {
+ public:
+  virtual ~Choices() = default;
+  /// A choice in [0, n) (n >= 1); 0 is the simplest.
+  virtual std::uint64_t draw(std::uint64_t n) = 0;
+  /// A choice made with probability about percent/100; false is the simplest.
+  bool chance(int percent) { return draw(100) < static_cast<std::uint64_t>(percent); }
+};
+
+/// Choices from a seeded pseudo-random generator (xoshiro256**).
+class RandomChoices final : public Choices {
+ public:
+  explicit RandomChoices(std::uint64_t seed);
+  std::uint64_t draw(std::uint64_t n) override;
+  std::uint64_t next();
+
+ private:
+  std::uint64_t s_[4];
+};
+
+/// Choices read from a recorded sequence (each taken modulo n); 0 once it runs out.
+class ReplayChoices final : public Choices {
+ public:
+  explicit ReplayChoices(std::span<const std::uint64_t> recorded) : recorded_(recorded) {}
+  std::uint64_t draw(std::uint64_t n) override;
+
+ private:
+  std::span<const std::uint64_t> recorded_;
+  std::size_t next_ = 0;
+};
+
+/// A 64-bit mix of two values (splitmix64 finaliser), for deriving per-case seeds.
+std::uint64_t mix_seed(std::uint64_t a, std::uint64_t b);
+
+}  // namespace cc::harness

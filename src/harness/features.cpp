@@ -1,0 +1,103 @@
+#include "harness/features.h"
+
+#include "collide/kdop.h"
+
+namespace cc::harness {
+namespace {
+
+bool is_zero(const Vec3& v) { return v.x == 0 && v.y == 0 && v.z == 0; }
+
+bool degenerate(const Triangle& t) { return is_zero(cross(t.v[1] - t.v[0], t.v[2] - t.v[0])); }
+
+bool zero_extent(const Aabb& b) { return b.lo.x == b.hi.x || b.lo.y == b.hi.y || b.lo.z == b.hi.z; }
+
+// Two nonzero vectors with a zero cross product (as computed; exact for the simple values the
+// generators use to build parallel configurations).
+bool parallel(const Vec3& a, const Vec3& b) { return !is_zero(a) && !is_zero(b) && is_zero(cross(a, b)); }
+
+Vec3 edge(const Triangle& t, int i) { return t.v[(i + 1) % 3] - t.v[i]; }
+
+// A triangle edge or normal parallel to one of the given axes.
+bool parallel_to_axes(const Triangle& t, const Mat3& axes) {
+  const Vec3 n = cross(edge(t, 0), edge(t, 1));
+  for (const Vec3& a : axes.col) {
+    if (parallel(n, a)) return true;
+    for (int i = 0; i < 3; ++i) {
+      if (parallel(edge(t, i), a)) return true;
+    }
+  }
+  return false;
+}
+
+struct Of {
+  Features operator()(const RayAabbInput& in) const {
+    Features f;
+    for (int k = 0; k < 3; ++k) f.parallel |= in.ray.dir[k] == 0 || std::isinf(1.0 / in.ray.dir[k]);
+    f.degenerate = is_zero(in.ray.dir) || in.ray.tmin == in.ray.tmax || zero_extent(in.box);
+    return f;
+  }
+  Features operator()(const SphereSphereInput& in) const { return {false, false, in.a.radius == 0 || in.b.radius == 0}; }
+  Features operator()(const AabbAabbInput& in) const {
+    Features f;
+    for (int k = 0; k < 3; ++k) {
+      f.parallel |= in.a.lo[k] == in.b.hi[k] || in.a.hi[k] == in.b.lo[k] || in.a.lo[k] == in.b.lo[k] ||
+                    in.a.hi[k] == in.b.hi[k];
+    }
+    f.degenerate = zero_extent(in.a) || zero_extent(in.b);
+    return f;
+  }
+  Features operator()(const KdopKdopInput& in) const {
+    Features f;
+    for (const KdopDirection& d : kdop_directions(in.k)) {
+      const Vec3 dir{static_cast<double>(d.x), static_cast<double>(d.y), static_cast<double>(d.z)};
+      for (const Vec3& p : in.a) {
+        for (const Vec3& q : in.b) f.parallel |= dot(dir, p) == dot(dir, q);
+      }
+    }
+    const auto single = [](const std::vector<Vec3>& s) {
+      for (const Vec3& p : s) {
+        if (!(p == s.front())) return false;
+      }
+      return true;
+    };
+    f.degenerate = single(in.a) || single(in.b);
+    return f;
+  }
+  Features operator()(const ObbObbInput& in) const {
+    Features f;
+    for (const Vec3& a : in.a.axes.col) {
+      for (const Vec3& b : in.b.axes.col) f.parallel |= parallel(a, b);
+    }
+    f.degenerate = in.a.half.x == 0 || in.a.half.y == 0 || in.a.half.z == 0 || in.b.half.x == 0 ||
+                   in.b.half.y == 0 || in.b.half.z == 0;
+    return f;
+  }
+  Features operator()(const TriAabbInput& in) const {
+    return {false, parallel_to_axes(in.tri, Mat3::identity()), degenerate(in.tri) || zero_extent(in.box)};
+  }
+  Features operator()(const TriObbInput& in) const {
+    return {false, parallel_to_axes(in.tri, in.box.axes),
+            degenerate(in.tri) || in.box.half.x == 0 || in.box.half.y == 0 || in.box.half.z == 0};
+  }
+  Features operator()(const TriTriInput& in) const {
+    Features f;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) f.parallel |= parallel(edge(in.a, i), edge(in.b, j));
+    }
+    f.parallel |= parallel(cross(edge(in.a, 0), edge(in.a, 1)), cross(edge(in.b, 0), edge(in.b, 1)));
+    f.degenerate = degenerate(in.a) || degenerate(in.b);
+    return f;
+  }
+};
+
+}  // namespace
+
+Features features_of(const Input& input, const ExactVerdict& exact) {
+  Features f = std::visit(Of{}, input);
+  f.touching = exact.contract == Contract::in && exact.decided && exact.answer.hit && exact.margin == 0;
+  return f;
+}
+
+bool parallel_applies(QueryKind kind) { return kind != QueryKind::sphere_sphere; }
+
+}  // namespace cc::harness

@@ -1,0 +1,22 @@
+#include "harness/generate.h"
+
+#include "harness/generate_detail.h"
+
+namespace cc::harness {
+
+Input generate(QueryKind kind, Choices& choices, const GenerateOptions& options) {
+  ValueSource values(choices, ValueRange{8, true, options.out_of_contract});
+  switch (kind) {
+    case QueryKind::ray_aabb: return detail::generate_ray_aabb(values, options);
+    case QueryKind::sphere_sphere: return detail::generate_sphere_sphere(values, options);
+    case QueryKind::aabb_aabb: return detail::generate_aabb_aabb(values, options);
+    case QueryKind::kdop_kdop: return detail::generate_kdop_kdop(values, options);
+    case QueryKind::obb_obb: return detail::generate_obb_obb(values, options);
+    case QueryKind::tri_aabb: return detail::generate_tri_aabb(values, options);
+    case QueryKind::tri_obb: return detail::generate_tri_obb(values, options);
+    case QueryKind::tri_tri: return detail::generate_tri_tri(values, options);
+  }
+  return {};
+}
+
+}  // namespace cc::harness

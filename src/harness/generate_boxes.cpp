@@ -1,0 +1,164 @@
+// Generators for aabb_aabb, kdop_kdop and obb_obb, and the box helpers the others share.
+#include <cmath>
+#include <tuple>
+#include <utility>
+
+#include "collide/kdop.h"
+#include "harness/generate_detail.h"
+#include "harness/rotation.h"
+
+namespace cc::harness::detail {
+namespace {
+
+// Places [lo, hi] on one axis relative to [a_lo, a_hi]: touching above or below, overlapping,
+// or (with `nudged`) a few ULPs away from touching.
+std::pair<double, double> place_on_axis(ValueSource& v, double a_lo, double a_hi, bool touch, bool nudged) {
+  const double len = v.length();
+  if (touch) {
+    if (v.choices().chance(50)) {
+      const double lo = nudged ? v.nudge(a_hi) : a_hi;
+      return {lo, lo + len};
+    }
+    const double hi = nudged ? v.nudge(a_lo) : a_lo;
+    return {hi - len, hi};
+  }
+  const double anchors[] = {a_lo, a_hi, 0.5 * (a_lo + a_hi)};
+  const double lo = anchors[v.choices().draw(3)] - (v.choices().chance(50) ? 0.0 : len);
+  return {lo, lo + v.length()};
+}
+
+}  // namespace
+
+Aabb draw_aabb(ValueSource& v, const GenerateOptions& options) {
+  Aabb b;
+  b.lo = v.point();
+  for (int k = 0; k < 3; ++k) b.hi[k] = b.lo[k] + v.length();
+  if (options.out_of_contract && v.choices().chance(15)) {
+    const int k = static_cast<int>(v.choices().draw(3));
+    std::swap(b.lo[k], b.hi[k]);
+    if (b.lo[k] == b.hi[k]) b.lo[k] = std::nextafter(b.hi[k], INFINITY);
+  }
+  return b;
+}
+
+Vec3 draw_boundary_point(ValueSource& v, const Aabb& box) {
+  Vec3 p;
+  const auto on_bounds = 1 + v.choices().draw(3);  // 3: a corner, 2: an edge, 1: a face
+  const auto first = v.choices().draw(3);
+  for (std::uint64_t i = 0; i < 3; ++i) {
+    const int k = static_cast<int>((first + i) % 3);
+    if (i < on_bounds) {
+      p[k] = v.choices().chance(50) ? box.lo[k] : box.hi[k];
+    } else {
+      p[k] = 0.5 * (box.lo[k] + box.hi[k]);
+    }
+  }
+  return p;
+}
+
+AabbAabbInput generate_aabb_aabb(ValueSource& v, const GenerateOptions& options) {
+  AabbAabbInput in;
+  in.a = draw_aabb(v, options);
+  switch (v.choices().draw(5)) {
+    case 0: in.b = draw_aabb(v, options); break;
+    case 1:
+    case 2: {  // touching on 1 to 3 axes (face, edge, corner), exactly or a few ULPs off
+      const bool nudged = v.choices().chance(30);
+      const auto touching = 1 + v.choices().draw(3);
+      const auto first = v.choices().draw(3);
+      for (std::uint64_t i = 0; i < 3; ++i) {
+        const int k = static_cast<int>((first + i) % 3);
+        std::tie(in.b.lo[k], in.b.hi[k]) = place_on_axis(v, in.a.lo[k], in.a.hi[k], i < touching, nudged);
+      }
+      break;
+    }
+    case 3: in.b = in.a; break;
+    default: {  // a point of A's boundary, or a point nudged off it
+      const Vec3 p = draw_boundary_point(v, in.a);
+      in.b = {p, p};
+      if (v.choices().chance(50)) {
+        const int k = static_cast<int>(v.choices().draw(3));
+        in.b.lo[k] = in.b.hi[k] = v.nudge(p[k]);
+      }
+    }
+  }
+  if (v.choices().chance(50)) std::swap(in.a, in.b);
+  return in;
+}
+
+KdopKdopInput generate_kdop_kdop(ValueSource& v, const GenerateOptions&) {
+  static constexpr int kKs[] = {18, 6, 14, 16, 24, 26};
+  KdopKdopInput in;
+  in.k = kKs[v.choices().draw(6)];
+  const Vec3 center = v.point();
+  const auto cluster = [&](std::vector<Vec3>& points) {
+    const auto n = 1 + v.choices().draw(5);
+    for (std::uint64_t i = 0; i < n; ++i) points.push_back(v.choices().chance(40) ? center + v.point() : v.point());
+  };
+  cluster(in.a);
+  switch (v.choices().draw(4)) {
+    case 0: cluster(in.b); break;
+    case 1: {  // share a point of A, or repeat A
+      in.b.push_back(in.a[v.choices().draw(in.a.size())]);
+      if (v.choices().chance(50)) in.b = in.a;
+      break;
+    }
+    default: {  // B shifted so that its k-DOP touches A's on one slab (exact when the sums are)
+      cluster(in.b);
+      const auto dirs = kdop_directions(in.k);
+      const KdopDirection d = dirs[v.choices().draw(dirs.size())];
+      const Vec3 dir{static_cast<double>(d.x), static_cast<double>(d.y), static_cast<double>(d.z)};
+      double a_max = -INFINITY, b_min = INFINITY;
+      for (const Vec3& p : in.a) a_max = std::max(a_max, dot(dir, p));
+      for (const Vec3& p : in.b) b_min = std::min(b_min, dot(dir, p));
+      double shift = a_max - b_min;
+      if (v.choices().chance(25)) shift = v.nudge(shift);
+      const int axis = d.x != 0 ? 0 : (d.y != 0 ? 1 : 2);
+      for (Vec3& p : in.b) p[axis] += shift * dir[axis];
+    }
+  }
+  return in;
+}
+
+Obb draw_obb(ValueSource& v, const GenerateOptions& options) {
+  Obb b;
+  b.center = v.point();
+  b.half = {v.length(), v.length(), v.length()};
+  b.axes = draw_rotation(v);
+  if (options.out_of_contract) {
+    if (v.choices().chance(10)) b.axes = draw_non_orthonormal(v);
+    if (v.choices().chance(10)) b.half[static_cast<int>(v.choices().draw(3))] = -v.length() - 1;
+  }
+  return b;
+}
+
+ObbObbInput generate_obb_obb(ValueSource& v, const GenerateOptions& options) {
+  ObbObbInput in;
+  in.a = draw_obb(v, options);
+  in.b = draw_obb(v, options);
+  const auto mode = v.choices().draw(5);
+  if (mode == 1 || mode == 3) in.b.axes = draw_rotation_near(v, in.a.axes);  // nearly parallel edges
+  if (mode >= 1 && mode <= 3) {
+    // B against a face of A: its centre at a_k + (B's radius along A_k) from A's, plus an offset
+    // inside the face. Exact for exactly orthonormal axes and simple values, else within ULPs.
+    const int k = static_cast<int>(v.choices().draw(3));
+    const Vec3 n = in.a.axes.col[k];
+    double rb = 0;
+    for (int j = 0; j < 3; ++j) rb += in.b.half[j] * std::fabs(dot(n, in.b.axes.col[j]));
+    double reach = in.a.half[k] + rb;
+    if (mode == 2) reach = v.nudge(reach);
+    const double sign = v.choices().chance(50) ? -1.0 : 1.0;
+    Vec3 c = in.a.center + (sign * reach) * n;
+    for (int i = 1; i < 3; ++i) {
+      const int j = (k + i) % 3;
+      const double along = v.choices().chance(50) ? 0.0 : in.a.half[j] * (v.choices().chance(50) ? 1.0 : 0.5);
+      c = c + (v.choices().chance(50) ? along : -along) * in.a.axes.col[j];
+    }
+    in.b.center = c;
+  } else if (mode == 4) {
+    in.b.center = in.a.center;
+  }
+  return in;
+}
+
+}  // namespace cc::harness::detail

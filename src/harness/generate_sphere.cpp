@@ -1,0 +1,51 @@
+// Generator for sphere_sphere: balls touching by construction (centres apart by a Pythagorean
+// quadruple times a power of two, radii summing exactly to its length), a few ULPs from
+// touching, concentric, and points (radius 0).
+#include <cmath>
+
+#include "harness/generate_detail.h"
+
+namespace cc::harness::detail {
+namespace {
+
+struct Quadruple {
+  int a, b, c, d;  // a^2 + b^2 + c^2 = d^2
+};
+constexpr Quadruple kQuadruples[] = {{0, 0, 1, 1}, {0, 3, 4, 5}, {1, 2, 2, 3},  {2, 3, 6, 7},
+                                     {1, 4, 8, 9}, {2, 6, 9, 11}, {0, 5, 12, 13}, {4, 4, 7, 9}};
+
+Sphere draw_sphere(ValueSource& v, const GenerateOptions& options) {
+  Sphere s{v.point(), v.length()};
+  if (options.out_of_contract && v.choices().chance(10)) s.radius = -s.radius - 1;
+  return s;
+}
+
+}  // namespace
+
+SphereSphereInput generate_sphere_sphere(ValueSource& v, const GenerateOptions& options) {
+  SphereSphereInput in;
+  in.a = draw_sphere(v, options);
+  const auto mode = v.choices().draw(4);
+  switch (mode) {
+    case 0: in.b = draw_sphere(v, options); break;
+    case 1:
+    case 2: {  // touching by construction (case 2: then moved a few ULPs)
+      const Quadruple q = kQuadruples[v.choices().draw(std::size(kQuadruples))];
+      Vec3 offset{static_cast<double>(q.a), static_cast<double>(q.b), static_cast<double>(q.c)};
+      for (int i = 2; i > 0; --i) std::swap(offset[i], offset[static_cast<int>(v.choices().draw(i + 1))]);
+      for (int k = 0; k < 3; ++k) offset[k] *= v.choices().chance(50) ? -1 : 1;
+      const double scale = std::ldexp(1.0, v.small_int(8));
+      const double reach = scale * q.d;
+      in.a.radius = reach * static_cast<double>(v.choices().draw(5)) / 4;  // 0, 1/4, ..., 1 of the reach
+      in.b.center = in.a.center + scale * offset;
+      in.b.radius = reach - in.a.radius;
+      if (mode == 2) in.b.radius = std::fabs(v.nudge(in.b.radius));
+      break;
+    }
+    default:  // concentric, or the same point
+      in.b = {in.a.center, v.choices().chance(50) ? v.length() : in.a.radius};
+  }
+  return in;
+}
+
+}  // namespace cc::harness::detail
