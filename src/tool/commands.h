@@ -1,0 +1,15 @@
+// The subcommands of the crosscheck tool, each registered on the CLI11 app.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+namespace cc::tool {
+
+/// Exit codes: 0 success, 1 the run found an impl_bug (or a replay changed), 2 bad input.
+inline constexpr int kExitFound = 1;
+inline constexpr int kExitBadInput = 2;
+
+void add_campaign_command(CLI::App& app, int& exit_code);
+void add_bands_command(CLI::App& app, int& exit_code);
+
+}  // namespace cc::tool

@@ -1,0 +1,10 @@
+// The oracles the tool wires into the harness: the exact rational reference and FCL/libccd.
+#pragma once
+
+#include "harness/campaign.h"
+
+namespace cc::tool {
+
+harness::Oracles make_oracles();
+
+}  // namespace cc::tool
