@@ -1,0 +1,68 @@
+// The campaign's supervision: a second opinion that crashes or hangs on some cases costs the
+// campaign a worker, not the run; each such case is recorded as a finding and can be rebuilt.
+#include "harness/campaign.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <functional>
+
+#include "harness/input_json.h"
+#include "harness/library.h"
+#include "oracle/exact/exact_reference.h"
+
+namespace cc::harness {
+namespace {
+
+std::size_t fingerprint(const Input& in) { return std::hash<std::string>{}(input_to_json(in).dump()); }
+bool crashes_on(const Input& in) { return fingerprint(in) % 3001 == 0; }
+bool hangs_on(const Input& in) { return fingerprint(in) % 4999 == 7; }
+
+// Answers like FCL's AABB test, but crashes or hangs on a few inputs.
+class Unreliable final : public SecondOpinion {
+ public:
+  std::vector<Opinion> opinions(const Input& in) const override {
+    if (crashes_on(in)) std::raise(SIGSEGV);
+    while (hangs_on(in)) pause();
+    return {{"fcl.AABBd::overlap", Opinion::Status::answered, ask_library(in), ""}};
+  }
+  std::vector<std::string> parties(QueryKind) const override { return {"fcl.AABBd::overlap"}; }
+};
+
+TEST(Campaign, SurvivesCrashesAndHangsInAnOracle) {
+  CampaignOptions options;
+  options.kinds = {QueryKind::aabb_aabb};
+  options.seconds = 3;
+  options.seed = 5;
+  options.workers = 2;
+  options.case_timeout_seconds = 0.3;
+  const Oracles oracles{[] { return std::make_unique<exact::ExactRationalReference>(); },
+                        [] { return std::make_unique<Unreliable>(); }};
+  const CampaignResult r = run_campaign(options, oracles);
+
+  int crashes = 0, hangs = 0;
+  for (const Finding& f : r.findings) {
+    ASSERT_FALSE(f.crash.empty()) << "the library and the exact reference agree here";
+    EXPECT_EQ(f.evaluation.verdict.cls, CaseClass::oracle_crash);
+    // The finding's input is the case the worker was on.
+    EXPECT_EQ(input_to_json(f.input).dump(),
+              input_to_json(campaign_case(options.seed, f.kind, f.case_index, options.out_of_contract_percent)).dump());
+    if (f.crash.find("hung") != std::string::npos) {
+      ++hangs;
+      EXPECT_TRUE(hangs_on(f.input)) << f.crash;
+    } else {
+      ++crashes;
+      EXPECT_TRUE(crashes_on(f.input)) << f.crash;
+    }
+  }
+  EXPECT_GT(crashes, 0);
+  EXPECT_GT(hangs, 0);
+  const KindTally& t = r.tallies.at(QueryKind::aabb_aabb);
+  EXPECT_GT(t.cases, 10000u);
+  EXPECT_EQ(t.count(CaseClass::oracle_crash), static_cast<std::uint64_t>(crashes + hangs));
+  EXPECT_EQ(t.count(CaseClass::impl_bug), 0u);
+}
+
+}  // namespace
+}  // namespace cc::harness

@@ -1,0 +1,103 @@
+// The exact reference's verdicts on cases worked out by hand.
+#include "oracle/exact/judges.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+
+namespace cc::exact {
+namespace {
+
+using harness::Contract;
+const double kNan = std::numeric_limits<double>::quiet_NaN();
+const Aabb kUnit{{0, 0, 0}, {1, 1, 1}};
+
+harness::RayAabbInput ray(Vec3 o, Vec3 d, double tmin = 0, double tmax = INFINITY) { return {{o, d, tmin, tmax}, kUnit}; }
+
+TEST(JudgeRayAabb, HitThroughTheMiddle) {
+  // Along x through the centre: t in [1, 2]; the box may shrink by 0.5 before the ray misses.
+  const ExactVerdict v = judge(ray({-1, 0.5, 0.5}, {1, 0, 0}));
+  EXPECT_EQ(v.contract, Contract::in);
+  EXPECT_TRUE(v.answer.hit);
+  EXPECT_EQ(v.answer.params, (std::vector<double>{1, 2}));
+  EXPECT_DOUBLE_EQ(v.margin, 0.5);
+}
+
+TEST(JudgeRayAabb, MissAndTouch) {
+  // Parallel to y's slab, 1 above it: the box must grow by 1; scale 2.
+  const ExactVerdict miss = judge(ray({-1, 2, 0.5}, {1, 0, 0}));
+  EXPECT_FALSE(miss.answer.hit);
+  EXPECT_DOUBLE_EQ(miss.margin, -0.5);
+  // On the boundary of that slab: touching, margin 0.
+  const ExactVerdict touch = judge(ray({-1, 1, 0.5}, {1, 0, 0}));
+  EXPECT_TRUE(touch.answer.hit);
+  EXPECT_EQ(touch.margin, 0);
+  // Diagonal past a corner: entry on x at t = 2 after exit on y at t = 1.5: the box must grow
+  // by (2 - 1.5) * 1 * 1 / (1 + 1) = 0.25; scale 2.
+  const ExactVerdict corner = judge(ray({-2, -0.5, 0.5}, {1, 1, 0}));
+  EXPECT_FALSE(corner.answer.hit);
+  EXPECT_DOUBLE_EQ(corner.margin, -0.125);
+}
+
+TEST(JudgeRayAabb, ContractAndDocumentedAnswers) {
+  EXPECT_EQ(judge(ray({kNan, 0.5, 0.5}, {1, 0, 0})).contract, Contract::documented);
+  EXPECT_FALSE(judge(ray({kNan, 0.5, 0.5}, {1, 0, 0})).answer.hit);
+  EXPECT_EQ(judge(ray({-INFINITY, 0.5, 0.5}, {1, 0, 0})).contract, Contract::documented);
+  // A component whose reciprocal overflows is parallel by contract: in the domain, with a note.
+  const ExactVerdict tiny = judge(ray({0.5, -1, 0.5}, {std::numeric_limits<double>::denorm_min(), 1, 0}));
+  EXPECT_EQ(tiny.contract, Contract::in);
+  EXPECT_TRUE(tiny.answer.hit);
+  EXPECT_FALSE(tiny.note.empty());
+  // A slab parameter beyond 2^1000: outside the domain, unspecified.
+  EXPECT_EQ(judge(ray({-1, 0.5, 0.5}, {0x1p-1000, 1, 0})).contract, Contract::unspecified);
+}
+
+TEST(JudgeSphereSphere, MarginIsTheGapBetweenSurfacesOverTheScale) {
+  EXPECT_EQ(judge(harness::SphereSphereInput{{{0, 0, 0}, 2}, {{3, 4, 0}, 3}}).margin, 0);
+  const ExactVerdict apart = judge(harness::SphereSphereInput{{{0, 0, 0}, 1}, {{4, 0, 0}, 1}});
+  EXPECT_FALSE(apart.answer.hit);
+  EXPECT_DOUBLE_EQ(apart.margin, -0.5);
+  EXPECT_EQ(judge(harness::SphereSphereInput{{{0, 0, 0}, -1}, {{0, 0, 0}, 1}}).contract, Contract::documented);
+  EXPECT_EQ(judge(harness::SphereSphereInput{{{0x1p501, 0, 0}, 1}, {{0, 0, 0}, 1}}).contract, Contract::unspecified);
+}
+
+TEST(JudgeAabbAabb, MarginIsTheSmallestOverlap) {
+  EXPECT_DOUBLE_EQ(judge(harness::AabbAabbInput{kUnit, {{0.75, 0, 0}, {1.75, 1, 1}}}).margin, 0.25 / 1.75);
+  const ExactVerdict apart = judge(harness::AabbAabbInput{kUnit, {{3, 0, 0}, {4, 1, 1}}});
+  EXPECT_FALSE(apart.answer.hit);
+  EXPECT_DOUBLE_EQ(apart.margin, -2.0 / 4);
+  EXPECT_EQ(judge(harness::AabbAabbInput{kUnit, {{1, 0, 0}, {0, 1, 1}}}).contract, Contract::documented);
+}
+
+TEST(JudgeKdopKdop, SeparatedOnADiagonalSlab) {
+  // {(0,1),(1,0)} and {(1,2),(2,1)} on (1,1,0): [1,1] and [3,3], a gap of 2 / sqrt(2); scale 2.
+  const ExactVerdict v = judge(harness::KdopKdopInput{18, {{0, 1, 0}, {1, 0, 0}}, {{1, 2, 0}, {2, 1, 0}}});
+  EXPECT_FALSE(v.answer.hit);
+  EXPECT_NEAR(v.margin, -std::sqrt(2.0) / 2, 1e-15);
+  EXPECT_TRUE(judge(harness::KdopKdopInput{6, {{0, 1, 0}, {1, 0, 0}}, {{1, 2, 0}, {2, 1, 0}}}).answer.hit);
+}
+
+TEST(JudgeObbObb, TheBoxIsTheParallelepipedOfItsMatrix) {
+  const Obb a{{0, 0, 0}, {1, 1, 1}, Mat3::identity()};
+  EXPECT_TRUE(judge(harness::ObbObbInput{a, {{2, 0, 0}, {1, 1, 1}, Mat3::identity()}}).answer.hit);
+  EXPECT_EQ(judge(harness::ObbObbInput{a, {{2, 0, 0}, {1, 1, 1}, Mat3::identity()}}).margin, 0);
+  // A matrix beyond the orthonormality tolerance is outside the domain.
+  const Mat3 stretched = Mat3::from_columns({1 + 0x1p-40, 0, 0}, {0, 1, 0}, {0, 0, 1});
+  EXPECT_EQ(judge(harness::ObbObbInput{a, {{5, 0, 0}, {1, 1, 1}, stretched}}).contract, Contract::unspecified);
+  EXPECT_EQ(judge(harness::ObbObbInput{a, {{5, 0, 0}, {-1, 1, 1}, Mat3::identity()}}).contract, Contract::documented);
+}
+
+TEST(JudgeTriangles, DomainsAndAnswers) {
+  const Triangle t{{Vec3{0, 0, 0}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}};
+  EXPECT_TRUE(judge(harness::TriTriInput{t, t}).answer.hit);
+  EXPECT_EQ(judge(harness::TriTriInput{t, {{Vec3{0, 0, kNan}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}}}).contract,
+            Contract::documented);
+  EXPECT_EQ(judge(harness::TriTriInput{t, {{Vec3{0, 0, 0x1p301}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}}}).contract,
+            Contract::unspecified);
+  EXPECT_TRUE(judge(harness::TriAabbInput{t, {{0, 0, 0}, {0, 0, 0}}}).answer.hit);  // a point box at a vertex
+  EXPECT_FALSE(judge(harness::TriAabbInput{t, {{0.6, 0.6, 0}, {0.6, 0.6, 0}}}).answer.hit);
+}
+
+}  // namespace
+}  // namespace cc::exact
