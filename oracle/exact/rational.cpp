@@ -1,6 +1,8 @@
 #include "oracle/exact/rational.h"
 
 #include <algorithm>
+#include <cstdint>
+#include <cstring>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -22,6 +24,11 @@ double to_double(const Rational& q) {
   if (!std::isfinite(up)) return t;
   const Rational dt = abs(q - rational(t)), du = abs(rational(up) - q);
   if (du < dt) return up;
+  if (du == dt) {  // a tie: to the even significand
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &t, sizeof bits);
+    return (bits & 1) ? up : t;
+  }
   return t;
 }
 
