@@ -129,7 +129,7 @@ struct Worker {
 Input campaign_case(std::uint64_t seed, QueryKind kind, std::uint64_t case_index, int out_of_contract_percent) {
   RandomChoices choices(mix_seed(mix_seed(seed, static_cast<std::uint64_t>(kind)), case_index));
   GenerateOptions options;
-  options.out_of_contract = choices.draw(100) < static_cast<std::uint64_t>(out_of_contract_percent);
+  options.out_of_contract = choices.chance(out_of_contract_percent);
   return generate(kind, choices, options);
 }
 

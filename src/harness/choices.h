@@ -15,8 +15,8 @@ class Choices {
   virtual ~Choices() = default;
   /// A choice in [0, n) (n >= 1); 0 is the simplest.
   virtual std::uint64_t draw(std::uint64_t n) = 0;
-  /// A choice made with probability about percent/100; false is the simplest.
-  bool chance(int percent) { return draw(100) < static_cast<std::uint64_t>(percent); }
+  /// A choice made with probability about percent/100; false is the simplest (a draw of 0).
+  bool chance(int percent) { return draw(100) >= static_cast<std::uint64_t>(100 - percent); }
 };
 
 /// Choices from a seeded pseudo-random generator (xoshiro256**).

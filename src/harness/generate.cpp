@@ -5,7 +5,10 @@
 namespace cc::harness {
 
 Input generate(QueryKind kind, Choices& choices, const GenerateOptions& options) {
-  ValueSource values(choices, ValueRange{8, true, options.out_of_contract});
+  // Huge magnitudes dwarf every other coordinate, and with them the library's band: one case in
+  // seven gets them.
+  const bool huge = choices.chance(15);
+  ValueSource values(choices, ValueRange{8, true, huge, options.out_of_contract});
   switch (kind) {
     case QueryKind::ray_aabb: return detail::generate_ray_aabb(values, options);
     case QueryKind::sphere_sphere: return detail::generate_sphere_sphere(values, options);

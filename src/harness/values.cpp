@@ -41,28 +41,27 @@ double ValueSource::coordinate() {
     const double sign = choices_.chance(50) ? -1.0 : 1.0;
     return remember(sign * std::ldexp(1.0, small_int(24)));
   }
-  if (c < 90 || !range_.extreme) {
+  if (c < 92 || !range_.extreme) {
     // A generic value: sign, mantissa, exponent; the simplest is 1.0.
     const double sign = choices_.chance(50) ? -1.0 : 1.0;
     const double mantissa = 1.0 + static_cast<double>(choices_.draw(std::uint64_t{1} << 52)) * 0x1p-52;
     const int exponent = small_int(range_.max_exponent);
     return remember(sign * std::ldexp(mantissa, exponent));
   }
-  if (c < 93) return remember(-0.0);
+  if (c < 94) return remember(-0.0);
+  const double sign = choices_.chance(50) ? -1.0 : 1.0;
   if (c < 96) {
     // Subnormals: the smallest, the largest, or one in between.
-    const double sign = choices_.chance(50) ? -1.0 : 1.0;
     switch (choices_.draw(3)) {
       case 0: return remember(sign * std::numeric_limits<double>::denorm_min());
       case 1: return remember(sign * std::nextafter(std::numeric_limits<double>::min(), 0.0));
       default: return remember(sign * std::ldexp(static_cast<double>(1 + choices_.draw(1u << 30)), -1074));
     }
   }
-  if (c < 98 || !range_.special) {
-    // Tiny or huge, within the library's domains (2^300 is the smallest upper limit).
-    const double sign = choices_.chance(50) ? -1.0 : 1.0;
-    const int e = 100 + static_cast<int>(choices_.draw(190));
-    return remember(sign * std::ldexp(1.0, choices_.chance(50) ? -e : e));
+  const int e = 100 + static_cast<int>(choices_.draw(190));
+  if (c < 98 || !(range_.huge || range_.special)) return remember(sign * std::ldexp(1.0, -e));  // tiny
+  if (!range_.special || choices_.chance(50)) {
+    return remember(range_.huge ? sign * std::ldexp(1.0, e) : sign * std::ldexp(1.0, -e));
   }
   switch (choices_.draw(3)) {
     case 0: return remember(std::numeric_limits<double>::quiet_NaN());

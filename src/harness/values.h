@@ -12,9 +12,10 @@ namespace cc::harness {
 
 /// What a generated value may be.
 struct ValueRange {
-  int max_exponent = 8;         // "generic" values have magnitude below 2^max_exponent
-  bool extreme = true;          // also subnormals, tiny (2^-300..) and huge (..2^300) values
-  bool special = false;         // also NaN and infinities (out-of-contract properties)
+  int max_exponent = 8;  // "generic" values have magnitude below 2^max_exponent
+  bool extreme = true;   // also subnormals, -0 and tiny values (2^-290 .. 2^-100)
+  bool huge = false;     // also huge values (2^100 .. 2^290): they dwarf every other coordinate
+  bool special = false;  // also NaN and infinities (out-of-contract properties)
 };
 
 /// Draws values for one case and remembers them, so that later values can repeat an earlier
@@ -24,8 +25,8 @@ class ValueSource {
   ValueSource(Choices& choices, ValueRange range) : choices_(choices), range_(range) {}
 
   /// A coordinate: 0, a small integer, a half or quarter, an earlier value (or a few ULPs from
-  /// it), a power of two, a generic double, -0, and with range.extreme subnormals, tiny and huge
-  /// values; with range.special NaN and infinities.
+  /// it), a power of two, a generic double; with range.extreme -0, subnormals and tiny values;
+  /// with range.huge huge values; with range.special NaN and infinities.
   double coordinate();
   /// A non-negative length (extent, radius): 0 is the most likely simple value.
   double length();

@@ -37,7 +37,7 @@ TEST(ValueSource, ZeroChoicesGiveTheSimplestValue) {
 
 TEST(ValueSource, MeetsTheBoundaryValues) {
   RandomChoices c(1);
-  ValueSource v(c, {8, true, true});
+  ValueSource v(c, {8, true, true, true});
   bool zero = false, neg_zero = false, subnormal = false, nan = false, inf = false, huge = false, repeated = false;
   std::set<double> seen;
   for (int i = 0; i < 20000; ++i) {

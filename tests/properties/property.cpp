@@ -49,7 +49,7 @@ bool check_property(const std::string& name, harness::QueryKind kind, int out_of
     const auto choices = *rc::gen::container<std::vector<std::uint64_t>>(kChoices, rc::gen::arbitrary<std::uint64_t>());
     harness::ReplayChoices replay(choices);
     harness::GenerateOptions options;
-    options.out_of_contract = replay.draw(100) < static_cast<std::uint64_t>(out_of_contract_percent);
+    options.out_of_contract = replay.chance(out_of_contract_percent);
     body(harness::generate(kind, replay, options));
   });
 }
