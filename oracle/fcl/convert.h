@@ -18,17 +18,27 @@ inline fcl::Matrix3d to_fcl(const Mat3& m) {
   return r;
 }
 
-/// The rigid transform x -> axes x + center (FCL's default Transform3d is uninitialised).
+/// The same box frame as a proper rotation: a box is symmetric, so negating one axis of a
+/// mirror-image frame (det < 0) leaves the box unchanged. FCL passes rotations to libccd as
+/// quaternions, which cannot represent a reflection.
+inline Mat3 proper_frame(const Mat3& axes) {
+  const double det = dot(axes.col[0], cross(axes.col[1], axes.col[2]));
+  if (!(det < 0)) return axes;
+  return Mat3::from_columns(axes.col[0], axes.col[1], -axes.col[2]);
+}
+
+/// The rigid transform x -> axes x + center of a box (FCL's default Transform3d is
+/// uninitialised), with the frame made proper.
 inline fcl::Transform3d to_fcl_transform(const Mat3& axes, const Vec3& center) {
   fcl::Transform3d tf = fcl::Transform3d::Identity();
-  tf.linear() = to_fcl(axes);
+  tf.linear() = to_fcl(proper_frame(axes));
   tf.translation() = to_fcl(center);
   return tf;
 }
 
 inline fcl::OBBd to_fcl_obb(const Obb& b) {
   fcl::OBBd o;
-  o.axis = to_fcl(b.axes);
+  o.axis = to_fcl(proper_frame(b.axes));
   o.To = to_fcl(b.center);
   o.extent = to_fcl(b.half);
   return o;

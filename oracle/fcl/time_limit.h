@@ -12,6 +12,6 @@ namespace cc::fcl_oracle {
 bool run_with_time_limit(double seconds, const std::function<void()>& f);
 
 /// The limit used for libccd calls: they take microseconds when they return at all.
-inline constexpr double kLibccdTimeLimit = 0.05;
+inline constexpr double kLibccdTimeLimit = 0.02;
 
 }  // namespace cc::fcl_oracle

@@ -79,3 +79,24 @@ TEST(FclSecondOpinion, ACallThatNeverReturnsIsAFailedOpinion) {
 
 }  // namespace
 }  // namespace cc::fcl_oracle
+
+namespace cc::fcl_oracle {
+namespace {
+
+TEST(FclSecondOpinion, MirrorImageBoxFramesAreHandedToFclAsRotations) {
+  // The box with frame columns (0,0,1), (0,-1,0), (-1,0,0) (det = -1) around (-64, 3.5, 0) and a
+  // triangle deep inside it: found by the campaign as a "miss" from shapeTriangleIntersect until
+  // the adapter made the frame proper (libccd takes rotations as quaternions).
+  harness::TriObbInput in;
+  in.box = {{-64, 3.5, 2.225073858507201e-308},
+            {4.203376770019531, 4.227246846337192, 1.25},
+            Mat3::from_columns({0, 0, 1}, {0, -1, 0}, {-1, 0, 0})};
+  in.tri = {{Vec3{-62.75, 7.727246846337192, -4.203376770019531}, Vec3{-65.25, 3.5, -4.203376770019531},
+             Vec3{-67.5, 0.5, -0.010076055718200376}}};
+  const auto opinions = FclSecondOpinion().opinions(in);
+  ASSERT_EQ(opinions.size(), 1u);
+  EXPECT_TRUE(opinions[0].answer.hit);
+}
+
+}  // namespace
+}  // namespace cc::fcl_oracle
