@@ -11,6 +11,10 @@
 #include <string>
 #include <vector>
 
+#include <optional>
+#include <utility>
+
+#include "harness/input.h"
 #include "oracle/exact/rational.h"
 
 namespace cc::exact {
@@ -62,5 +66,9 @@ struct SatResult {
 };
 
 SatResult exact_sat(const ExactShape& a, const ExactShape& b);
+
+/// The two polytopes of an obb_obb, tri_aabb, tri_obb or tri_tri query (finite inputs), in the
+/// order the verdict uses (box first); nothing for other kinds.
+std::optional<std::pair<ExactShape, ExactShape>> polytopes_of(const harness::Input& input);
 
 }  // namespace cc::exact

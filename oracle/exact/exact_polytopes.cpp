@@ -33,6 +33,16 @@ ExactShape shape_of(const Triangle& t, const std::string& name) { return triangl
 
 }  // namespace
 
+std::optional<std::pair<ExactShape, ExactShape>> polytopes_of(const harness::Input& input) {
+  if (const auto* in = std::get_if<harness::ObbObbInput>(&input)) return std::pair{shape_of(in->a, "A"), shape_of(in->b, "B")};
+  if (const auto* in = std::get_if<harness::TriAabbInput>(&input)) {
+    return std::pair{box_shape(in->box.lo, in->box.hi, "B"), shape_of(in->tri, "T")};
+  }
+  if (const auto* in = std::get_if<harness::TriObbInput>(&input)) return std::pair{shape_of(in->box, "B"), shape_of(in->tri, "T")};
+  if (const auto* in = std::get_if<harness::TriTriInput>(&input)) return std::pair{shape_of(in->a, "A"), shape_of(in->b, "B")};
+  return std::nullopt;
+}
+
 ExactVerdict judge(const harness::ObbObbInput& in) {
   for (const Obb* b : {&in.a, &in.b}) {
     if (auto out = obb_outside_domain(*b)) return *out;

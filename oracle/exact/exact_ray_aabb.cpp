@@ -8,28 +8,75 @@
 // the ray touches it. Every condition of the answer is linear in delta -- entry_i(delta) =
 // (near_i - o_i - delta)/d_i, exit likewise -- so delta* is the largest of the deltas that each
 // condition needs, and margin = -delta* / scale.
+#include "oracle/exact/exact_ray_aabb.h"
+
 #include <cmath>
-#include <optional>
 
 #include "oracle/exact/domain.h"
 #include "oracle/exact/judges.h"
-#include "oracle/exact/rational.h"
 
 namespace cc::exact {
 namespace {
 
-struct Slab {
-  Rational near_t, far_t;  // entry and exit parameters
-  Rational speed;          // |d_i|
-};
+const char* const kAxis[] = {"x", "y", "z"};
 
 }  // namespace
+
+RayAnalysis analyse_ray(const harness::RayAabbInput& in) {
+  const Ray& ray = in.ray;
+  RayAnalysis r;
+  if (ray.tmin != -INFINITY) r.tmin = rational(ray.tmin);
+  if (ray.tmax != INFINITY) r.tmax = rational(ray.tmax);
+  r.enter = r.tmin;
+  r.exit = r.tmax;
+  bool first = true;
+  const auto need = [&](const Rational& v, const std::string& why) {
+    if (first || v > r.delta) r.delta = v, r.binding = why;
+    first = false;
+  };
+  bool outside_parallel_slab = false;
+  for (int i = 0; i < 3; ++i) {
+    RaySlab s{i, false, true, 0, 0, 0};
+    const double d = ray.dir[i];
+    const bool by_contract = d != 0 && std::isinf(1.0 / d);
+    if (by_contract) r.flushed += std::string(r.flushed.empty() ? "" : ", ") + "dir." + kAxis[i];
+    const Rational o = rational(ray.origin[i]), lo = rational(in.box.lo[i]), hi = rational(in.box.hi[i]);
+    if (d == 0 || by_contract) {
+      s.parallel = true;
+      s.origin_inside = !(o < lo || o > hi);
+      outside_parallel_slab |= !s.origin_inside;
+      need(lo - o, std::string("parallel to the ") + kAxis[i] + " slab, origin below it");
+      need(o - hi, std::string("parallel to the ") + kAxis[i] + " slab, origin above it");
+    } else {
+      const Rational di = rational(d);
+      s.near_t = (lo - o) / di;
+      s.far_t = (hi - o) / di;
+      if (sgn(di) < 0) std::swap(s.near_t, s.far_t);
+      s.speed = abs(di);
+      if (!r.enter || s.near_t > *r.enter) r.enter = s.near_t;
+      if (!r.exit || s.far_t < *r.exit) r.exit = s.far_t;
+    }
+    r.slabs.push_back(s);
+  }
+  for (const RaySlab& a : r.slabs) {
+    if (a.parallel) continue;
+    for (const RaySlab& b : r.slabs) {
+      if (b.parallel) continue;
+      need((a.near_t - b.far_t) * a.speed * b.speed / (a.speed + b.speed),
+           std::string("entry into the ") + kAxis[a.axis] + " slab against exit from the " + kAxis[b.axis] + " slab");
+    }
+    if (r.tmax) need((a.near_t - *r.tmax) * a.speed, std::string("entry into the ") + kAxis[a.axis] + " slab against tmax");
+    if (r.tmin) need((*r.tmin - a.far_t) * a.speed, std::string("tmin against exit from the ") + kAxis[a.axis] + " slab");
+  }
+  r.empty_range = r.tmin && r.tmax && *r.tmin > *r.tmax;
+  r.hit = !outside_parallel_slab && !r.empty_range && (!r.enter || !r.exit || *r.enter <= *r.exit);
+  return r;
+}
 
 ExactVerdict judge(const harness::RayAabbInput& in) {
   const Ray& ray = in.ray;
   const Aabb& box = in.box;
-  const Vec3 &o = ray.origin, &lo = box.lo, &hi = box.hi;
-  Vec3 d = ray.dir;
+  const Vec3 &o = ray.origin, &d = ray.dir, &lo = box.lo, &hi = box.hi;
   if (has_nan({o.x, o.y, o.z, d.x, d.y, d.z, lo.x, lo.y, lo.z, hi.x, hi.y, hi.z, ray.tmin, ray.tmax})) {
     return documented(false, "NaN input");
   }
@@ -38,74 +85,30 @@ ExactVerdict judge(const harness::RayAabbInput& in) {
   }
   if (ray.tmin == INFINITY || ray.tmax == -INFINITY) return documented(false, "tmin = +inf or tmax = -inf");
   if (lo.x > hi.x || lo.y > hi.y || lo.z > hi.z) return documented(false, "inverted box");
-
-  std::string flushed;
-  for (int i = 0; i < 3; ++i) {
-    if (d[i] != 0 && std::isinf(1.0 / d[i])) {  // documented: treated as parallel
-      flushed += std::string(flushed.empty() ? "" : ", ") + "dir." + "xyz"[i];
-      d[i] = 0;
-    }
-  }
   const double magnitude = max_magnitude({o.x, o.y, o.z, lo.x, lo.y, lo.z, hi.x, hi.y, hi.z});
-  const bool parallel_by_contract = !flushed.empty();
-
-  const std::optional<Rational> tmin =
-      ray.tmin == -INFINITY ? std::nullopt : std::optional<Rational>(rational(ray.tmin));
-  const std::optional<Rational> tmax =
-      ray.tmax == INFINITY ? std::nullopt : std::optional<Rational>(rational(ray.tmax));
-
-  std::optional<Rational> enter = tmin, exit = tmax;  // nullopt: -inf and +inf
-  std::optional<Rational> delta;                      // the growth each condition needs, maximised
-  const auto need = [&delta](const Rational& v) {
-    if (!delta || v > *delta) delta = v;
-  };
-  bool outside_parallel_slab = false;
-  std::vector<Slab> slabs;
-  const Rational limit = rational(0x1p1000);
-  for (int i = 0; i < 3; ++i) {
-    const Rational oi = rational(o[i]), li = rational(lo[i]), hi_i = rational(hi[i]);
-    if (d[i] == 0) {
-      need(li - oi);
-      need(oi - hi_i);
-      if (oi < li || oi > hi_i) outside_parallel_slab = true;
-      continue;
-    }
-    const Rational di = rational(d[i]);
-    Rational t0 = (li - oi) / di, t1 = (hi_i - oi) / di;
-    if (abs(t0) > limit || abs(t1) > limit) {
-      return unspecified("slab parameter beyond 2^1000 on axis " + std::string(1, "xyz"[i]));
-    }
-    if (sgn(di) < 0) std::swap(t0, t1);
-    if (!enter || t0 > *enter) enter = t0;
-    if (!exit || t1 < *exit) exit = t1;
-    slabs.push_back({t0, t1, abs(di)});
-  }
   if (auto why = scale_outside(magnitude, -900, 1000)) return unspecified(*why);
 
-  for (const Slab& a : slabs) {
-    for (const Slab& b : slabs) need((a.near_t - b.far_t) * a.speed * b.speed / (a.speed + b.speed));
-    if (tmax) need((a.near_t - *tmax) * a.speed);
-    if (tmin) need((*tmin - a.far_t) * a.speed);
+  const RayAnalysis r = analyse_ray(in);
+  const Rational limit = rational(0x1p1000);
+  for (const RaySlab& s : r.slabs) {
+    if (!s.parallel && (abs(s.near_t) > limit || abs(s.far_t) > limit)) {
+      return unspecified(std::string("slab parameter beyond 2^1000 on axis ") + "xyz"[s.axis]);
+    }
   }
-  const bool empty_range = tmin && tmax && *tmin > *tmax;
-  const bool hit = !outside_parallel_slab && !empty_range && (!enter || !exit || *enter <= *exit);
-
   ExactVerdict v;
-  v.answer.hit = hit;
-  if (hit) {
-    v.answer.params = {enter ? to_double(*enter) : -INFINITY, exit ? to_double(*exit) : INFINITY};
-  }
-  if (empty_range) {
+  v.answer.hit = r.hit;
+  if (r.hit) v.answer.params = {r.enter ? to_double(*r.enter) : -INFINITY, r.exit ? to_double(*r.exit) : INFINITY};
+  if (r.empty_range) {
     v.margin = -INFINITY;
   } else {
-    v.margin = -to_double(*delta) / scale_of(magnitude);
-    if ((sgn(*delta) <= 0) != hit) {
+    v.margin = -to_double(r.delta) / scale_of(magnitude);
+    if ((sgn(r.delta) <= 0) != r.hit) {
       v.decided = false;
       v.note = "internal inconsistency: margin and answer disagree";
     }
   }
-  if (parallel_by_contract) {  // in the domain: the contract defines such a ray as parallel
-    v.note = "direction component(s) " + flushed + " have an overflowing reciprocal: parallel by contract";
+  if (!r.flushed.empty()) {  // in the domain: the contract defines such a ray as parallel
+    v.note = "direction component(s) " + r.flushed + " have an overflowing reciprocal: parallel by contract";
   }
   return v;
 }

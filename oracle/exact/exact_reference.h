@@ -8,6 +8,7 @@ namespace cc::exact {
 class ExactRationalReference final : public harness::ExactReference {
  public:
   harness::ExactVerdict judge(const harness::Input& input) const override;
+  harness::Explanation explain(const harness::Input& input) const override;
 };
 
 }  // namespace cc::exact

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "harness/answer.h"
+#include "harness/explanation.h"
 #include "harness/input.h"
 
 namespace cc::harness {
@@ -33,6 +34,8 @@ class ExactReference {
  public:
   virtual ~ExactReference() = default;
   virtual ExactVerdict judge(const Input& input) const = 0;
+  /// The reasoning behind judge(), for triage. Out of contract inputs get what can be shown.
+  virtual Explanation explain(const Input& input) const = 0;
 };
 
 class SecondOpinion {

@@ -1,6 +1,7 @@
 // crosscheck campaign: the main job. Runs every query kind (or those named) for a time budget
 // and prints a table of classes per kind; each impl_bug, oracle_defect and oracle_crash is
 // printed with its exact inputs.
+#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -8,8 +9,15 @@
 #include <iostream>
 #include <thread>
 
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+
 #include "harness/campaign.h"
 #include "harness/input_json.h"
+#include "harness/shrink.h"
+#include "harness/signature.h"
+#include "tool/cases.h"
 #include "tool/commands.h"
 #include "tool/oracles.h"
 
@@ -27,6 +35,10 @@ struct CampaignArgs {
   int out_of_contract = 10;
   std::string json;
   int max_print = 20;
+  std::string corpora = "corpora";
+  std::string out = "corpora/new";
+  int max_new = 30;
+  int per_key = 1;
 };
 
 void print_table(const CampaignResult& r) {
@@ -96,6 +108,73 @@ Json result_json(const CampaignResult& r) {
           {"interrupted", r.interrupted}, {"queries", queries}, {"findings", findings}};
 }
 
+struct Stored {
+  int written = 0, known = 0, failed = 0, grouped = 0;
+};
+
+// Shrinks one finding and writes it as a new case file, in a child process: a shrinking step
+// may call FCL on inputs that crash it. Exit 0: written; 3: already stored; else failed.
+int store_one(const Finding& f, const CampaignArgs& args, const std::vector<std::string>& known) {
+  const auto is_known = [&](const Input& in) {
+    return std::binary_search(known.begin(), known.end(), case_file_name(in));
+  };
+  if (is_known(f.input)) return 3;
+  Input input = f.input;
+  Evaluation e = f.evaluation;
+  if (f.crash.empty()) {
+    const ShrinkResult r = shrink(f.input, f.evaluation, evaluate_with_oracles, 1500);
+    input = r.input;
+    e = r.evaluation;
+  }
+  if (is_known(input)) return 3;
+  const Provenance provenance{"campaign", std::nullopt, f.case_index, "seed " + std::to_string(args.seed)};
+  Case c = case_of(input, e, provenance, "untriaged: " + signature_of(f.kind, e) + (f.crash.empty() ? "" : "; " + f.crash));
+  c.provenance.seed = args.seed;
+  const auto path = std::filesystem::path(args.out) / std::string(name(f.kind)) / case_file_name(input);
+  try {
+    return write_new_case_file(path, c) ? 0 : 3;
+  } catch (const CaseFileError&) {
+    return 1;
+  }
+}
+
+Stored store_findings(const CampaignResult& r, const CampaignArgs& args) {
+  Stored s;
+  std::vector<std::string> known = stored_case_names(args.corpora);
+  std::map<std::string, int> per_key;
+  for (const Finding& f : r.findings) {
+    if (s.written >= args.max_new) break;
+    const std::string key = finding_key(f.input, f.evaluation) + (f.crash.empty() ? "" : " crash");
+    if (per_key[key]++ >= args.per_key) {
+      ++s.grouped;
+      continue;
+    }
+    std::fflush(nullptr);
+    const pid_t pid = fork();
+    if (pid == 0) std::_Exit(store_one(f, args, known));
+    int status = 0;
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (waitpid(pid, &status, WNOHANG) == 0) {
+      if (std::chrono::steady_clock::now() > deadline) {
+        kill(pid, SIGKILL);
+        waitpid(pid, &status, 0);
+        break;
+      }
+      usleep(10000);
+    }
+    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    if (code == 0) {
+      ++s.written;
+      known = stored_case_names(args.corpora);  // the new file may be under the corpus root
+    } else if (code == 3) {
+      ++s.known;
+    } else {
+      ++s.failed;
+    }
+  }
+  return s;
+}
+
 int run(const CampaignArgs& args) {
   CampaignOptions options;
   for (const std::string& q : args.queries) {
@@ -129,6 +208,13 @@ int run(const CampaignArgs& args) {
   print_findings(r, args.max_print);
   print_table(r);
   if (r.interrupted) std::printf("\n(interrupted after %.1f s)\n", r.seconds);
+  if (args.max_new > 0 && !r.findings.empty()) {
+    const Stored s = store_findings(r, args);
+    std::printf("\n%d new case file%s written to %s (shrunk; one per kind of finding), %d already stored under %s, "
+                "%d findings grouped with others%s\n",
+                s.written, s.written == 1 ? "" : "s", args.out.c_str(), s.known, args.corpora.c_str(), s.grouped,
+                s.failed ? (", " + std::to_string(s.failed) + " could not be stored").c_str() : "");
+  }
   if (!args.json.empty()) {
     std::ofstream out(args.json);
     out << result_json(r).dump(2) << "\n";
@@ -156,6 +242,13 @@ void add_campaign_command(CLI::App& app, int& exit_code) {
       ->capture_default_str();
   cmd->add_option("--json", args->json, "Write the summary and every finding to this JSON file");
   cmd->add_option("--max-print", args->max_print, "Findings printed per query and class")->capture_default_str();
+  cmd->add_option("--out", args->out, "Where new findings are written as shrunk case files")->capture_default_str();
+  cmd->add_option("--corpora", args->corpora, "Cases stored anywhere under this root are not written again")
+      ->capture_default_str();
+  cmd->add_option("--max-new", args->max_new, "New case files written at most (0: none)")->capture_default_str();
+  cmd->add_option("--per-kind-of-finding", args->per_key,
+                  "Cases written per kind of finding (same class, parties, features and margin decade)")
+      ->capture_default_str();
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

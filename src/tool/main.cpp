@@ -11,6 +11,10 @@ int main(int argc, char** argv) {
   int exit_code = 0;
   cc::tool::add_campaign_command(app, exit_code);
   cc::tool::add_bands_command(app, exit_code);
+  cc::tool::add_triage_command(app, exit_code);
+  cc::tool::add_shrink_command(app, exit_code);
+  cc::tool::add_replay_command(app, exit_code);
+  cc::tool::add_add_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,125 @@
+#include "tool/cases.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+#include "harness/library.h"
+#include "harness/number_text.h"
+#include "oracle/exact/exact_reference.h"
+#include "oracle/fcl/fcl_oracle.h"
+
+namespace cc::tool {
+
+using namespace harness;
+
+Evaluation evaluate_with_oracles(const Input& input) {
+  static const exact::ExactRationalReference exact;
+  static const fcl_oracle::FclSecondOpinion second;
+  return evaluate(input, exact, &second);
+}
+
+Case case_of(const Input& input, const Evaluation& e, Provenance provenance, std::string note) {
+  Case c;
+  c.input = input;
+  c.library = e.library;
+  c.exact = e.exact;
+  c.opinions = e.opinions;
+  c.cls = e.verdict.cls;
+  c.provenance = std::move(provenance);
+  c.note = std::move(note);
+  return c;
+}
+
+std::optional<Case> read_case_or_report(const std::filesystem::path& path) {
+  try {
+    return read_case_file(path);
+  } catch (const CaseFileError& e) {
+    std::fprintf(stderr, "crosscheck: %s\n", e.what());
+    return std::nullopt;
+  }
+}
+
+namespace {
+
+std::string answer_text(const Answer& a) {
+  std::string s = a.hit ? "hit" : "miss";
+  if (!a.params.empty()) {
+    s += " t = [";
+    for (std::size_t i = 0; i < a.params.size(); ++i) s += (i ? ", " : "") + format_double(a.params[i]);
+    s += "]";
+  }
+  return s;
+}
+
+std::string table(const Explanation& e) {
+  std::vector<std::size_t> width(e.columns.size(), 0);
+  for (std::size_t c = 0; c < e.columns.size(); ++c) width[c] = e.columns[c].size();
+  for (const auto& row : e.rows) {
+    for (std::size_t c = 0; c < row.size() && c < width.size(); ++c) width[c] = std::max(width[c], row[c].size());
+  }
+  std::ostringstream out;
+  const auto line = [&](const std::vector<std::string>& cells, const std::string& mark) {
+    out << "  " << mark << ' ';
+    for (std::size_t c = 0; c < cells.size() && c < width.size(); ++c) {
+      out << cells[c] << std::string(width[c] - cells[c].size() + 2, ' ');
+    }
+    out << '\n';
+  };
+  line(e.columns, " ");
+  for (std::size_t r = 0; r < e.rows.size(); ++r) {
+    line(e.rows[r], static_cast<int>(r) == e.deciding_row ? ">" : " ");
+  }
+  return out.str();
+}
+
+}  // namespace
+
+std::string triage_text(const std::string& title, const Case& recorded, const Evaluation& now, const Explanation& why) {
+  std::ostringstream out;
+  out << title << "\n";
+  out << "  query      " << name(kind_of(recorded.input)) << "\n";
+  out << "  class      " << to_string(now.verdict.cls);
+  if (now.verdict.cls != recorded.cls) out << "   (recorded: " << to_string(recorded.cls) << ")";
+  out << "\n";
+  if (!recorded.note.empty()) out << "  note       " << recorded.note << "\n";
+  out << "  inputs     " << input_to_json(recorded.input).dump() << "\n";
+  out << "  library    " << answer_text(now.library) << "   [" << to_string(now.verdict.parties[0].standing) << "]\n";
+  out << "  exact      " << answer_text(now.exact.answer);
+  if (now.exact.contract != Contract::in) out << "   (out of contract: " << now.exact.note << ")";
+  out << "\n";
+  for (std::size_t i = 0; i < now.opinions.size(); ++i) {
+    const Opinion& o = now.opinions[i];
+    const PartyStanding& p = now.verdict.parties[i + 1];
+    out << "  " << o.party << "  ";
+    if (o.status == Opinion::Status::answered) {
+      out << (o.answer.hit ? "hit" : "miss") << "   [" << to_string(p.standing) << "]";
+    } else {
+      out << (o.status == Opinion::Status::failed ? "failed: " : "n/a: ") << o.detail;
+    }
+    out << "\n";
+  }
+  char margin[120];
+  std::snprintf(margin, sizeof margin, "%.6g of the largest coordinate (%s); %.4g ULPs of the deciding quantity",
+                now.exact.margin,
+                now.exact.margin > 0 ? "overlapping" : (now.exact.margin < 0 ? "apart" : "touching"), why.deciding_ulps);
+  out << "  margin     " << margin << "\n";
+  if (!why.deciding.empty()) out << "  deciding   " << why.deciding << " = " << format_double(why.deciding_value) << "\n";
+  for (const auto& [k, v] : why.facts) out << "  " << k << ": " << v << "\n";
+  for (const PartyStanding& p : now.verdict.parties) {
+    if (p.standing == Standing::wrong || p.standing == Standing::within_band) out << "  why        " << p.party << ": " << p.why << "\n";
+  }
+  if (!why.rows.empty()) out << "  " << why.title << " (> marks the deciding one):\n" << table(why);
+  return out.str();
+}
+
+std::vector<std::string> stored_case_names(const std::filesystem::path& root) {
+  std::vector<std::string> names;
+  for (const auto& f : case_files_under({root})) names.push_back(f.filename().string());
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+}  // namespace cc::tool

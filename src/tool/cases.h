@@ -1,0 +1,38 @@
+// Cases in the tool: evaluating one with the real oracles, turning an evaluation into a case
+// file's contents, reading case files with the exit status of bad input, and triage text.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "harness/case_file.h"
+#include "harness/evaluate.h"
+#include "harness/explanation.h"
+
+namespace cc::tool {
+
+/// The three answers to an input, from the library, the exact reference and FCL/libccd.
+harness::Evaluation evaluate_with_oracles(const harness::Input& input);
+
+/// A case holding an input and its evaluation.
+harness::Case case_of(const harness::Input& input, const harness::Evaluation& e, harness::Provenance provenance,
+                      std::string note);
+
+/// Reads a case file; on bad input prints one line naming the file and the place to stderr and
+/// returns nothing.
+std::optional<harness::Case> read_case_or_report(const std::filesystem::path& path);
+
+/// The triage of a case: the answers, the class, the margin (also in ULPs of the deciding
+/// quantity) and the reasoning of the exact reference. `recorded` is the case as stored.
+std::string triage_text(const std::string& title, const harness::Case& recorded, const harness::Evaluation& now,
+                        const harness::Explanation& why);
+
+/// An SVG drawing of a case: three orthographic views and the deciding axis.
+std::string svg_of(const harness::Input& input, const harness::Explanation& why);
+
+/// Every case file name (hash.json) stored under `root`, for skipping known cases.
+std::vector<std::string> stored_case_names(const std::filesystem::path& root);
+
+}  // namespace cc::tool

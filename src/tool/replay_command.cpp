@@ -1,0 +1,95 @@
+// crosscheck replay DIR...: re-answers every stored case and reports each change: the library
+// now wrong, the exact reference answering otherwise, a second opinion behaving otherwise, or
+// the class changing. Exit 1 on any change (ctest's corpus label runs this), 2 on bad input.
+#include <cstdio>
+
+#include "oracle/exact/exact_reference.h"
+#include "tool/cases.h"
+#include "tool/commands.h"
+
+namespace cc::tool {
+namespace {
+
+using namespace harness;
+
+struct ReplayArgs {
+  std::vector<std::string> dirs;
+  bool quiet = false;
+};
+
+std::string said(const Opinion& o) {
+  switch (o.status) {
+    case Opinion::Status::answered: return o.answer.hit ? "hit" : "miss";
+    case Opinion::Status::not_applicable: return "n/a";
+    case Opinion::Status::failed: return "failed";
+  }
+  return "?";
+}
+
+// What changed between the stored case and its replay, one line each.
+std::vector<std::string> changes(const Case& c, const Evaluation& now) {
+  std::vector<std::string> out;
+  if (now.verdict.parties[0].standing == Standing::wrong) out.push_back("the library is wrong: " + now.verdict.parties[0].why);
+  if (now.exact.answer.hit != c.exact.answer.hit || now.exact.contract != c.exact.contract) {
+    out.push_back(std::string("the exact reference changed: recorded ") + (c.exact.answer.hit ? "hit" : "miss") + ", now " +
+                  (now.exact.answer.hit ? "hit" : "miss"));
+  }
+  for (const Opinion& before : c.opinions) {
+    for (const Opinion& after : now.opinions) {
+      if (after.party != before.party) continue;
+      if (said(after) != said(before)) {
+        out.push_back(before.party + " changed its behaviour: recorded " + said(before) + ", now " + said(after));
+      }
+    }
+  }
+  if (now.verdict.cls != c.cls) {
+    out.push_back("class changed: recorded " + std::string(to_string(c.cls)) + ", now " + std::string(to_string(now.verdict.cls)));
+  }
+  return out;
+}
+
+int run(const ReplayArgs& args) {
+  std::vector<std::filesystem::path> roots(args.dirs.begin(), args.dirs.end());
+  for (const auto& r : roots) {
+    if (!std::filesystem::exists(r)) {
+      std::fprintf(stderr, "crosscheck replay: %s: no such file or directory\n", r.string().c_str());
+      return kExitBadInput;
+    }
+  }
+  const exact::ExactRationalReference exact;
+  int cases = 0, changed = 0, bad = 0;
+  for (const auto& file : case_files_under(roots)) {
+    const auto c = read_case_or_report(file);
+    if (!c) {
+      ++bad;
+      continue;
+    }
+    ++cases;
+    const Evaluation now = evaluate_with_oracles(c->input);
+    const std::vector<std::string> what = changes(*c, now);
+    if (what.empty()) {
+      if (!args.quiet) std::printf("ok       %s  %s\n", file.string().c_str(), std::string(to_string(c->cls)).c_str());
+      continue;
+    }
+    ++changed;
+    std::printf("CHANGED  %s\n", file.string().c_str());
+    for (const std::string& w : what) std::printf("  - %s\n", w.c_str());
+    std::printf("%s\n", triage_text(file.string(), *c, now, exact.explain(c->input)).c_str());
+  }
+  std::printf("%d cases replayed: %d unchanged, %d changed%s\n", cases, cases - changed, changed,
+              bad ? (", " + std::to_string(bad) + " unreadable").c_str() : "");
+  if (bad) return kExitBadInput;
+  return changed ? kExitFound : 0;
+}
+
+}  // namespace
+
+void add_replay_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<ReplayArgs>();
+  auto* cmd = app.add_subcommand("replay", "Re-answer stored cases and report every change of class or behaviour");
+  cmd->add_option("dirs", args->dirs, "Directories (searched recursively) or case files")->required();
+  cmd->add_flag("-q,--quiet", args->quiet, "Print only the cases that changed");
+  cmd->callback([args, &exit_code] { exit_code = run(*args); });
+}
+
+}  // namespace cc::tool

@@ -1,0 +1,55 @@
+// crosscheck shrink FILE [-o OUT]: the simplest case that shows the same disagreement.
+#include <cstdio>
+
+#include "harness/shrink.h"
+#include "harness/signature.h"
+#include "tool/cases.h"
+#include "tool/commands.h"
+
+namespace cc::tool {
+namespace {
+
+struct ShrinkArgs {
+  std::string file;
+  std::string out;
+  int attempts = 4000;
+};
+
+int run(const ShrinkArgs& args) {
+  const auto c = read_case_or_report(args.file);
+  if (!c) return kExitBadInput;
+  const harness::Evaluation start = evaluate_with_oracles(c->input);
+  const harness::ShrinkResult r = harness::shrink(c->input, start, evaluate_with_oracles, args.attempts);
+  std::printf("%s: %s\n  %d values not small integers or halves before, %d after; %d of %d attempts kept\n",
+              args.file.c_str(), harness::signature_of(harness::kind_of(c->input), start).c_str(),
+              harness::complex_values(c->input), harness::complex_values(r.input), r.accepted, r.attempts);
+  harness::Provenance provenance{"shrink", c->provenance.seed, c->provenance.case_index, args.file};
+  const harness::Case shrunk = case_of(r.input, r.evaluation, provenance, c->note);
+  const std::filesystem::path out = args.out.empty() ? std::filesystem::path(args.file).parent_path() /
+                                                           harness::case_file_name(r.input)
+                                                     : std::filesystem::path(args.out);
+  try {
+    if (!harness::write_new_case_file(out, shrunk)) {
+      std::printf("  %s exists already: not overwritten\n", out.string().c_str());
+      return args.out.empty() ? 0 : kExitBadInput;
+    }
+  } catch (const harness::CaseFileError& e) {
+    std::fprintf(stderr, "crosscheck shrink: %s\n", e.what());
+    return kExitBadInput;
+  }
+  std::printf("  written to %s\n  inputs: %s\n", out.string().c_str(), harness::input_to_json(r.input).dump().c_str());
+  return 0;
+}
+
+}  // namespace
+
+void add_shrink_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<ShrinkArgs>();
+  auto* cmd = app.add_subcommand("shrink", "Minimise a case file, keeping its kind, class and disagreement");
+  cmd->add_option("file", args->file, "The case file")->required();
+  cmd->add_option("-o,--out", args->out, "Where to write the shrunk case (default: beside it, named by its hash)");
+  cmd->add_option("--attempts", args->attempts, "Evaluations to try at most")->capture_default_str();
+  cmd->callback([args, &exit_code] { exit_code = run(*args); });
+}
+
+}  // namespace cc::tool
