@@ -1,6 +1,7 @@
 #include "harness/shrink.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <vector>
 
@@ -24,6 +25,37 @@ int mantissa_bits(double x) {
     ++bits;
   }
   return std::max(bits, 1);
+}
+
+// The frames (rotation matrices) in a document: members named "axes", as JSON pointers.
+void frames(const Json& j, const std::string& pointer, std::vector<std::string>& out) {
+  if (!j.is_object()) return;
+  for (auto it = j.begin(); it != j.end(); ++it) {
+    if (it.key() == "axes") {
+      out.push_back(pointer + "/axes");
+    } else {
+      frames(it.value(), pointer + "/" + it.key(), out);
+    }
+  }
+}
+
+// The identity first, then the other 47 signed permutation matrices: the simplest frames, exactly
+// orthonormal. (As columns, in case-file layout.)
+std::vector<Json> simple_frames() {
+  std::vector<Json> out;
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (const auto& p : perms) {
+    for (int signs = 0; signs < 8; ++signs) {
+      Json m = Json::array();
+      for (int j = 0; j < 3; ++j) {
+        Vec3 column;
+        column[p[j]] = (signs >> j) & 1 ? -1.0 : 1.0;
+        m.push_back(Json::array({number_to_json(column.x), number_to_json(column.y), number_to_json(column.z)}));
+      }
+      out.push_back(m);
+    }
+  }
+  return out;
 }
 
 // The leaves of a JSON document that hold numbers, as JSON pointers.
@@ -93,7 +125,9 @@ int complex_values(const Input& input) {
   return n;
 }
 
-ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator& evaluate, int max_attempts) {
+ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator& evaluate, int max_attempts,
+                    double max_seconds) {
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(max_seconds);
   const QueryKind kind = kind_of(input);
   const std::string target = signature_of(kind, start);
   ShrinkResult r{input, start, 0, 0};
@@ -101,7 +135,7 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
 
   // Accepts a candidate document if it still shows the same disagreement.
   const auto attempt = [&](const Json& doc) {
-    if (r.attempts >= max_attempts) return false;
+    if (r.attempts >= max_attempts || std::chrono::steady_clock::now() > deadline) return false;
     ++r.attempts;
     Input candidate;
     try {
@@ -118,8 +152,23 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
     return true;
   };
 
-  for (bool progress = true; progress && r.attempts < max_attempts;) {
+  for (bool progress = true; progress && r.attempts < max_attempts && std::chrono::steady_clock::now() < deadline;) {
     progress = false;
+    // Frames toward the identity and the signed permutations, as a whole.
+    std::vector<std::string> frame_pointers;
+    frames(current, "", frame_pointers);
+    for (const std::string& p : frame_pointers) {
+      const Json::json_pointer ptr(p);
+      for (const Json& m : simple_frames()) {
+        if (current.at(ptr) == m) break;  // already the simplest one that works
+        Json doc = current;
+        doc[ptr] = m;
+        if (attempt(doc)) {
+          progress = true;
+          break;
+        }
+      }
+    }
     // Fewer points (k-DOP point sets): drop one at a time, keeping at least one per set.
     if (kind == QueryKind::kdop_kdop) {
       for (const char* set : {"a", "b"}) {

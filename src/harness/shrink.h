@@ -18,8 +18,11 @@ struct ShrinkResult {
   int accepted = 0;  // simplifications kept
 };
 
-/// Shrinks `input` (whose evaluation is `start`) with at most `max_attempts` evaluations.
-ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator& evaluate, int max_attempts = 4000);
+/// Shrinks `input` (whose evaluation is `start`) with at most `max_attempts` evaluations and
+/// within about `max_seconds`. Besides values, a box's frame moves toward the identity and the
+/// signed permutations as a whole (one entry alone would leave it non-orthonormal).
+ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator& evaluate, int max_attempts = 4000,
+                    double max_seconds = 60);
 
 /// How simple a double is, for ordering: 0, then integers by size, then halves by size, then
 /// values by the number of mantissa bits they need; non-finite values last.

@@ -110,11 +110,19 @@ Json result_json(const CampaignResult& r) {
 
 struct Stored {
   int written = 0, known = 0, failed = 0, grouped = 0;
+  std::vector<int> complex_before, complex_after;  // values not small integers or halves
 };
+
+double median(std::vector<int> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
 
 // Shrinks one finding and writes it as a new case file, in a child process: a shrinking step
 // may call FCL on inputs that crash it. Exit 0: written; 3: already stored; else failed.
-int store_one(const Finding& f, const CampaignArgs& args, const std::vector<std::string>& known) {
+int store_one(const Finding& f, const CampaignArgs& args, const std::vector<std::string>& known, int report) {
   const auto is_known = [&](const Input& in) {
     return std::binary_search(known.begin(), known.end(), case_file_name(in));
   };
@@ -122,10 +130,12 @@ int store_one(const Finding& f, const CampaignArgs& args, const std::vector<std:
   Input input = f.input;
   Evaluation e = f.evaluation;
   if (f.crash.empty()) {
-    const ShrinkResult r = shrink(f.input, f.evaluation, evaluate_with_oracles, 1500);
+    const ShrinkResult r = shrink(f.input, f.evaluation, evaluate_with_oracles, 3000, 20);
     input = r.input;
     e = r.evaluation;
   }
+  const std::string counts = std::to_string(complex_values(f.input)) + " " + std::to_string(complex_values(input)) + "\n";
+  if (::write(report, counts.data(), counts.size()) < 0) return 1;
   if (is_known(input)) return 3;
   const Provenance provenance{"campaign", std::nullopt, f.case_index, "seed " + std::to_string(args.seed)};
   Case c = case_of(input, e, provenance, "untriaged: " + signature_of(f.kind, e) + (f.crash.empty() ? "" : "; " + f.crash));
@@ -149,9 +159,15 @@ Stored store_findings(const CampaignResult& r, const CampaignArgs& args) {
       ++s.grouped;
       continue;
     }
+    int fds[2];
+    if (pipe(fds) != 0) break;
     std::fflush(nullptr);
     const pid_t pid = fork();
-    if (pid == 0) std::_Exit(store_one(f, args, known));
+    if (pid == 0) {
+      ::close(fds[0]);
+      std::_Exit(store_one(f, args, known, fds[1]));
+    }
+    ::close(fds[1]);
     int status = 0;
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
     while (waitpid(pid, &status, WNOHANG) == 0) {
@@ -162,6 +178,15 @@ Stored store_findings(const CampaignResult& r, const CampaignArgs& args) {
       }
       usleep(10000);
     }
+    char counts[64] = {};
+    if (::read(fds[0], counts, sizeof counts - 1) > 0) {
+      int before = 0, after = 0;
+      if (std::sscanf(counts, "%d %d", &before, &after) == 2) {
+        s.complex_before.push_back(before);
+        s.complex_after.push_back(after);
+      }
+    }
+    ::close(fds[0]);
     const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     if (code == 0) {
       ++s.written;
@@ -214,6 +239,11 @@ int run(const CampaignArgs& args) {
                 "%d findings grouped with others%s\n",
                 s.written, s.written == 1 ? "" : "s", args.out.c_str(), s.known, args.corpora.c_str(), s.grouped,
                 s.failed ? (", " + std::to_string(s.failed) + " could not be stored").c_str() : "");
+    if (!s.complex_before.empty()) {
+      std::printf("shrinking: median number of values that are not small integers or halves, %g before and %g "
+                  "after (over %zu findings)\n",
+                  median(s.complex_before), median(s.complex_after), s.complex_before.size());
+    }
   }
   if (!args.json.empty()) {
     std::ofstream out(args.json);

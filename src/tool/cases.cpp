@@ -103,8 +103,9 @@ std::string triage_text(const std::string& title, const Case& recorded, const Ev
   }
   char margin[120];
   std::snprintf(margin, sizeof margin, "%.6g of the largest coordinate (%s); %.4g ULPs of the deciding quantity",
-                now.exact.margin,
-                now.exact.margin > 0 ? "overlapping" : (now.exact.margin < 0 ? "apart" : "touching"), why.deciding_ulps);
+                now.exact.margin == 0 ? 0.0 : now.exact.margin,
+                now.exact.margin > 0 ? "overlapping" : (now.exact.margin < 0 ? "apart" : "touching"),
+                why.deciding_ulps == 0 ? 0.0 : why.deciding_ulps);
   out << "  margin     " << margin << "\n";
   if (!why.deciding.empty()) out << "  deciding   " << why.deciding << " = " << format_double(why.deciding_value) << "\n";
   for (const auto& [k, v] : why.facts) out << "  " << k << ": " << v << "\n";
