@@ -18,7 +18,7 @@ void set_timer(double seconds) {
   itimerval t{};
   t.it_value.tv_sec = static_cast<time_t>(seconds);
   t.it_value.tv_usec = static_cast<suseconds_t>((seconds - static_cast<double>(t.it_value.tv_sec)) * 1e6);
-  setitimer(ITIMER_REAL, &t, nullptr);
+  setitimer(ITIMER_VIRTUAL, &t, nullptr);
 }
 
 }  // namespace
@@ -28,7 +28,7 @@ bool run_with_time_limit(double seconds, const std::function<void()>& f) {
   struct sigaction previous {};
   action.sa_handler = on_alarm;
   sigemptyset(&action.sa_mask);
-  sigaction(SIGALRM, &action, &previous);
+  sigaction(SIGVTALRM, &action, &previous);
   bool finished = false;
   if (sigsetjmp(g_escape, 1) == 0) {
     g_armed = 1;
@@ -38,7 +38,7 @@ bool run_with_time_limit(double seconds, const std::function<void()>& f) {
   }
   g_armed = 0;
   set_timer(0);
-  sigaction(SIGALRM, &previous, nullptr);
+  sigaction(SIGVTALRM, &previous, nullptr);
   return finished;
 }
 

@@ -5,8 +5,9 @@
 
 namespace cc::fcl_oracle {
 
-/// Runs f. If it has not returned after `seconds` of wall-clock time, abandons it with a jump
-/// out of a SIGALRM handler and returns false. Only for single-threaded code that holds no
+/// Runs f. If it has not returned after `seconds` of CPU time, abandons it with a jump out of a
+/// SIGVTALRM handler and returns false. (CPU time, not SIGALRM: libFuzzer's own timeout uses
+/// SIGALRM and the real-time timer.) Only for single-threaded code that holds no
 /// locks and whose abandoned heap objects may leak: libccd's GJK and MPR loops, which do not
 /// terminate on some inputs (long, thin triangles; huge coordinates).
 bool run_with_time_limit(double seconds, const std::function<void()>& f);

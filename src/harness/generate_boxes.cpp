@@ -6,6 +6,7 @@
 #include "collide/kdop.h"
 #include "harness/generate_detail.h"
 #include "harness/rotation.h"
+#include "harness/touch.h"
 
 namespace cc::harness::detail {
 namespace {
@@ -103,19 +104,9 @@ KdopKdopInput generate_kdop_kdop(ValueSource& v, const GenerateOptions&) {
       if (v.choices().chance(50)) in.b = in.a;
       break;
     }
-    default: {  // B shifted so that its k-DOP touches A's on one slab (exact when the sums are)
+    default:  // B shifted so that its k-DOP touches A's on one slab (exact when the sums are)
       cluster(in.b);
-      const auto dirs = kdop_directions(in.k);
-      const KdopDirection d = dirs[v.choices().draw(dirs.size())];
-      const Vec3 dir{static_cast<double>(d.x), static_cast<double>(d.y), static_cast<double>(d.z)};
-      double a_max = -INFINITY, b_min = INFINITY;
-      for (const Vec3& p : in.a) a_max = std::max(a_max, dot(dir, p));
-      for (const Vec3& p : in.b) b_min = std::min(b_min, dot(dir, p));
-      double shift = a_max - b_min;
-      if (v.choices().chance(25)) shift = v.nudge(shift);
-      const int axis = d.x != 0 ? 0 : (d.y != 0 ? 1 : 2);
-      for (Vec3& p : in.b) p[axis] += shift * dir[axis];
-    }
+      shift_to_touch(in, v, v.choices().chance(25));
   }
   return in;
 }
@@ -139,22 +130,8 @@ ObbObbInput generate_obb_obb(ValueSource& v, const GenerateOptions& options) {
   const auto mode = v.choices().draw(5);
   if (mode == 1 || mode == 3) in.b.axes = draw_rotation_near(v, in.a.axes);  // nearly parallel edges
   if (mode >= 1 && mode <= 3) {
-    // B against a face of A: its centre at a_k + (B's radius along A_k) from A's, plus an offset
-    // inside the face. Exact for exactly orthonormal axes and simple values, else within ULPs.
-    const int k = static_cast<int>(v.choices().draw(3));
-    const Vec3 n = in.a.axes.col[k];
-    double rb = 0;
-    for (int j = 0; j < 3; ++j) rb += in.b.half[j] * std::fabs(dot(n, in.b.axes.col[j]));
-    double reach = in.a.half[k] + rb;
-    if (mode == 2) reach = v.nudge(reach);
-    const double sign = v.choices().chance(50) ? -1.0 : 1.0;
-    Vec3 c = in.a.center + (sign * reach) * n;
-    for (int i = 1; i < 3; ++i) {
-      const int j = (k + i) % 3;
-      const double along = v.choices().chance(50) ? 0.0 : in.a.half[j] * (v.choices().chance(50) ? 1.0 : 0.5);
-      c = c + (v.choices().chance(50) ? along : -along) * in.a.axes.col[j];
-    }
-    in.b.center = c;
+    // B against a face of A: exact for exactly orthonormal axes and simple values, else within ULPs.
+    place_against_face(in, v, mode == 2);
   } else if (mode == 4) {
     in.b.center = in.a.center;
   }

@@ -1,0 +1,58 @@
+#include "fuzz/fuzz_target.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "harness/evaluate.h"
+#include "harness/fuzz_record.h"
+#include "harness/input_json.h"
+#include "oracle/exact/exact_reference.h"
+#include "oracle/fcl/fcl_oracle.h"
+
+namespace cc::fuzz {
+namespace {
+
+using namespace harness;
+
+std::uint64_t fnv1a(const std::uint8_t* data, std::size_t size) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (std::size_t i = 0; i < size; ++i) h = (h ^ data[i]) * 0x100000001b3ULL;
+  return h;
+}
+
+// Keeps a finding's input bytes, named by class and hash (the same input is kept once).
+void keep(QueryKind kind, CaseClass cls, const std::uint8_t* data, std::size_t size) {
+  const char* dir = std::getenv("CROSSCHECK_FUZZ_FINDINGS");
+  if (dir == nullptr) return;
+  const auto folder = std::filesystem::path(dir) / std::string(name(kind));
+  std::error_code ec;
+  std::filesystem::create_directories(folder, ec);
+  char file[64];
+  std::snprintf(file, sizeof file, "%s-%016llx", std::string(to_string(cls)).c_str(),
+                static_cast<unsigned long long>(fnv1a(data, size)));
+  std::ofstream(folder / file, std::ios::binary).write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+}
+
+}  // namespace
+
+int test_one_input(QueryKind kind, const std::uint8_t* data, std::size_t size) {
+  static const exact::ExactRationalReference exact;
+  static const fcl_oracle::FclSecondOpinion second;
+  const Input input = decode_record(kind, {data, size});
+  const Evaluation e = evaluate(input, exact, &second);
+  switch (e.verdict.cls) {
+    case CaseClass::impl_bug:
+      std::fprintf(stderr, "impl_bug %s: %s\n  inputs: %s\n", std::string(name(kind)).c_str(),
+                   e.verdict.parties[0].why.c_str(), input_to_json(input).dump().c_str());
+      std::abort();
+    case CaseClass::oracle_defect:
+    case CaseClass::oracle_crash:
+    case CaseClass::undecided: keep(kind, e.verdict.cls, data, size); break;
+    default: break;
+  }
+  return 0;
+}
+
+}  // namespace cc::fuzz

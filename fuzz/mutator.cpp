@@ -1,0 +1,63 @@
+// The custom mutator (libFuzzer builds only: it falls back on LLVMFuzzerMutate).
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "fuzz/fuzz_target.h"
+#include "harness/choices.h"
+#include "harness/fuzz_record.h"
+#include "harness/touch.h"
+
+extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t max_size);
+
+namespace cc::fuzz {
+namespace {
+
+using namespace harness;
+
+// The special values a coordinate may become.
+constexpr double kSpecial[] = {0.0, -0.0, 1.0, -1.0, 0.5, 2.0, 0x1p-30, 0x1p30, 0x1p-1074, 0x1p-1022, 0x1.fffffffffffffp1023,
+                               0x1p300, 0x1p-300, std::numeric_limits<double>::infinity(),
+                               -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()};
+
+}  // namespace
+
+std::size_t mutate(QueryKind kind, std::uint8_t* data, std::size_t size, std::size_t max_size, unsigned int seed) {
+  RandomChoices c(seed);
+  const Input input = decode_record(kind, {data, size});
+  std::vector<double> values = record_values(input);
+  Input mutated = input;
+  const auto pick = [&] { return static_cast<std::size_t>(c.draw(values.size())); };
+  switch (values.empty() ? 5 : c.draw(7)) {
+    case 0: values[pick()] = values[pick()]; break;  // copy one coordinate into another
+    case 1: {                                        // step a value by 1 to 4 ULPs
+      double& x = values[pick()];
+      const double toward = c.chance(50) ? INFINITY : -INFINITY;
+      for (std::uint64_t i = 0, n = 1 + c.draw(4); i < n; ++i) x = std::nextafter(x, toward);
+      break;
+    }
+    case 2: values[pick()] = kSpecial[c.draw(std::size(kSpecial))]; break;  // a special value
+    case 3: {                                                                 // flip a sign
+      double& x = values[pick()];
+      x = -x;
+      break;
+    }
+    case 4: {  // move one shape so that it touches the other
+      ValueSource source(c, {});
+      make_touching(mutated, source);
+      values = record_values(mutated);
+      break;
+    }
+    default: return LLVMFuzzerMutate(data, size, max_size);
+  }
+  mutated = with_record_values(input, values);
+  std::vector<std::uint8_t> bytes = encode_record(mutated);
+  if (bytes.size() > max_size) return LLVMFuzzerMutate(data, size, max_size);
+  // Keep the flags and the k-DOP header of the original record; the rest is the mutated values.
+  if (size > 0) bytes[0] = data[0];
+  for (std::size_t i = 1; i < 4 && i < size && kind == QueryKind::kdop_kdop; ++i) bytes[i] = data[i];
+  std::memcpy(data, bytes.data(), bytes.size());
+  return bytes.size();
+}
+
+}  // namespace cc::fuzz

@@ -1,0 +1,199 @@
+#include "harness/fuzz_record.h"
+
+#include <cmath>
+#include <cstring>
+
+namespace cc::harness {
+namespace {
+
+constexpr int kKs[] = {6, 14, 16, 18, 24, 26};
+constexpr std::uint8_t kTminInfinite = 0x10, kTmaxInfinite = 0x20;
+
+// Reads fields in order from the doubles of a record.
+struct Reader {
+  std::span<const double> values;
+  std::size_t next = 0;
+  double number() { return next < values.size() ? values[next++] : 0.0; }
+  Vec3 vec3() {
+    const double x = number(), y = number(), z = number();
+    return {x, y, z};
+  }
+  Mat3 columns() {
+    const Vec3 a = vec3(), b = vec3(), c = vec3();
+    return Mat3::from_columns(a, b, c);
+  }
+  Triangle triangle() {
+    const Vec3 a = vec3(), b = vec3(), c = vec3();
+    return {{a, b, c}};
+  }
+  Obb obb() {
+    const Vec3 c = vec3(), h = vec3();
+    return {c, h, columns()};
+  }
+};
+
+struct Writer {
+  std::vector<double> values;
+  void number(double x) { values.push_back(x); }
+  void vec3(const Vec3& v) { number(v.x), number(v.y), number(v.z); }
+  void triangle(const Triangle& t) { vec3(t.v[0]), vec3(t.v[1]), vec3(t.v[2]); }
+  void obb(const Obb& b) { vec3(b.center), vec3(b.half), vec3(b.axes.col[0]), vec3(b.axes.col[1]), vec3(b.axes.col[2]); }
+};
+
+// The input of a given kind (and k, point counts) made from record values.
+Input build(QueryKind kind, int k, std::size_t na, std::size_t nb, std::uint8_t flags, std::span<const double> values) {
+  Reader r{values};
+  switch (kind) {
+    case QueryKind::ray_aabb: {
+      RayAabbInput in;
+      in.ray.origin = r.vec3();
+      in.ray.dir = r.vec3();
+      in.ray.tmin = r.number();
+      in.ray.tmax = r.number();
+      in.box = {r.vec3(), r.vec3()};
+      if (flags & kTminInfinite) in.ray.tmin = -INFINITY;
+      if (flags & kTmaxInfinite) in.ray.tmax = INFINITY;
+      return in;
+    }
+    case QueryKind::sphere_sphere: {
+      SphereSphereInput in;
+      in.a.center = r.vec3(), in.a.radius = r.number(), in.b.center = r.vec3(), in.b.radius = r.number();
+      return in;
+    }
+    case QueryKind::aabb_aabb: {
+      AabbAabbInput in;
+      in.a = {r.vec3(), r.vec3()};
+      in.b = {r.vec3(), r.vec3()};
+      return in;
+    }
+    case QueryKind::kdop_kdop: {
+      KdopKdopInput in;
+      in.k = k;
+      for (std::size_t i = 0; i < na; ++i) in.a.push_back(r.vec3());
+      for (std::size_t i = 0; i < nb; ++i) in.b.push_back(r.vec3());
+      return in;
+    }
+    case QueryKind::obb_obb: {
+      ObbObbInput in;
+      in.a = r.obb();
+      in.b = r.obb();
+      return in;
+    }
+    case QueryKind::tri_aabb: {
+      TriAabbInput in;
+      in.tri = r.triangle();
+      in.box = {r.vec3(), r.vec3()};
+      return in;
+    }
+    case QueryKind::tri_obb: {
+      TriObbInput in;
+      in.tri = r.triangle();
+      in.box = r.obb();
+      return in;
+    }
+    case QueryKind::tri_tri: {
+      TriTriInput in;
+      in.a = r.triangle();
+      in.b = r.triangle();
+      return in;
+    }
+  }
+  return {};
+}
+
+struct Values {
+  Writer w;
+  void operator()(const RayAabbInput& in) {
+    w.vec3(in.ray.origin), w.vec3(in.ray.dir), w.number(in.ray.tmin), w.number(in.ray.tmax), w.vec3(in.box.lo),
+        w.vec3(in.box.hi);
+  }
+  void operator()(const SphereSphereInput& in) {
+    w.vec3(in.a.center), w.number(in.a.radius), w.vec3(in.b.center), w.number(in.b.radius);
+  }
+  void operator()(const AabbAabbInput& in) { w.vec3(in.a.lo), w.vec3(in.a.hi), w.vec3(in.b.lo), w.vec3(in.b.hi); }
+  void operator()(const KdopKdopInput& in) {
+    for (const Vec3& p : in.a) w.vec3(p);
+    for (const Vec3& p : in.b) w.vec3(p);
+  }
+  void operator()(const ObbObbInput& in) { w.obb(in.a), w.obb(in.b); }
+  void operator()(const TriAabbInput& in) { w.triangle(in.tri), w.vec3(in.box.lo), w.vec3(in.box.hi); }
+  void operator()(const TriObbInput& in) { w.triangle(in.tri), w.obb(in.box); }
+  void operator()(const TriTriInput& in) { w.triangle(in.a), w.triangle(in.b); }
+};
+
+int k_index(int k) {
+  for (int i = 0; i < 6; ++i) {
+    if (kKs[i] == k) return i;
+  }
+  return 3;
+}
+
+}  // namespace
+
+std::vector<double> record_values(const Input& input) {
+  Values v;
+  std::visit(v, input);
+  return v.w.values;
+}
+
+Input with_record_values(const Input& shape, std::span<const double> values) {
+  int k = 18;
+  std::size_t na = 0, nb = 0;
+  if (const auto* kd = std::get_if<KdopKdopInput>(&shape)) k = kd->k, na = kd->a.size(), nb = kd->b.size();
+  return build(kind_of(shape), k, na, nb, 0, values);  // infinite ray ends are values here
+}
+
+std::vector<std::uint8_t> encode_record(const Input& input) {
+  const QueryKind kind = kind_of(input);
+  std::vector<std::uint8_t> bytes;
+  std::uint8_t tag = static_cast<std::uint8_t>(kind);
+  if (const auto* ray = std::get_if<RayAabbInput>(&input)) {
+    if (ray->ray.tmin == -INFINITY) tag |= kTminInfinite;
+    if (ray->ray.tmax == INFINITY) tag |= kTmaxInfinite;
+  }
+  bytes.push_back(tag);
+  if (const auto* kd = std::get_if<KdopKdopInput>(&input)) {
+    bytes.push_back(static_cast<std::uint8_t>(k_index(kd->k)));
+    bytes.push_back(static_cast<std::uint8_t>(kd->a.empty() ? 0 : (kd->a.size() - 1) % 8));
+    bytes.push_back(static_cast<std::uint8_t>(kd->b.empty() ? 0 : (kd->b.size() - 1) % 8));
+  }
+  for (double x : record_values(input)) {
+    std::uint64_t bits = 0;
+    std::memcpy(&bits, &x, sizeof bits);
+    for (int i = 0; i < 8; ++i) bytes.push_back(static_cast<std::uint8_t>(bits >> (8 * i)));
+  }
+  return bytes;
+}
+
+Input decode_record(QueryKind kind, std::span<const std::uint8_t> bytes) {
+  const auto byte = [&bytes](std::size_t i) -> std::uint8_t { return i < bytes.size() ? bytes[i] : 0; };
+  const std::uint8_t flags = byte(0) & 0xf0;
+  std::size_t offset = 1;
+  int k = 18;
+  std::size_t na = 0, nb = 0, count = 0;
+  switch (kind) {
+    case QueryKind::ray_aabb: count = 14; break;
+    case QueryKind::sphere_sphere: count = 8; break;
+    case QueryKind::aabb_aabb: count = 12; break;
+    case QueryKind::kdop_kdop:
+      k = kKs[byte(1) % 6];
+      na = 1 + byte(2) % 8;
+      nb = 1 + byte(3) % 8;
+      offset = 4;
+      count = 3 * (na + nb);
+      break;
+    case QueryKind::obb_obb: count = 30; break;
+    case QueryKind::tri_aabb: count = 15; break;
+    case QueryKind::tri_obb: count = 24; break;
+    case QueryKind::tri_tri: count = 18; break;
+  }
+  std::vector<double> values(count, 0.0);
+  for (std::size_t i = 0; i < count; ++i) {
+    std::uint64_t bits = 0;
+    for (int b = 0; b < 8; ++b) bits |= static_cast<std::uint64_t>(byte(offset + 8 * i + static_cast<std::size_t>(b))) << (8 * b);
+    std::memcpy(&values[i], &bits, sizeof bits);
+  }
+  return build(kind, k, na, nb, flags, values);
+}
+
+}  // namespace cc::harness

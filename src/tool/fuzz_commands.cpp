@@ -1,0 +1,160 @@
+// crosscheck fuzz-seeds: the seed corpora of the fuzz targets, corpora/<query>/seed/: every case
+// file of that query as a record, and generated cases.
+// crosscheck fuzz-case QUERY FILE...: fuzz inputs as case files (unshrunk; `crosscheck shrink`
+// minimises them), each answered in a child process so that a crash is recorded, not suffered.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+
+#include "harness/campaign.h"
+#include "harness/fuzz_record.h"
+#include "harness/library.h"
+#include "oracle/exact/exact_reference.h"
+#include "tool/cases.h"
+#include "tool/commands.h"
+
+namespace cc::tool {
+namespace {
+
+using namespace harness;
+
+std::string hex(const std::vector<std::uint8_t>& bytes) {
+  std::string s;
+  char b[3];
+  for (std::uint8_t x : bytes) {
+    std::snprintf(b, sizeof b, "%02x", x);
+    s += b;
+  }
+  return s;
+}
+
+std::string name_of_bytes(const std::vector<std::uint8_t>& bytes) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (std::uint8_t x : bytes) h = (h ^ x) * 0x100000001b3ULL;
+  char name[24];
+  std::snprintf(name, sizeof name, "%016llx", static_cast<unsigned long long>(h));
+  return name;
+}
+
+struct SeedArgs {
+  std::string corpora = "corpora";
+  int generated = 200;
+};
+
+int run_seeds(const SeedArgs& args) {
+  for (QueryKind kind : kAllQueryKinds) {
+    const auto dir = std::filesystem::path(args.corpora) / std::string(name(kind));
+    const auto seeds = dir / "seed";
+    std::filesystem::create_directories(seeds);
+    std::vector<Input> inputs;
+    if (std::filesystem::is_directory(dir)) {
+      for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        if (entry.path().extension() != ".json") continue;
+        const auto c = read_case_or_report(entry.path());
+        if (!c) return kExitBadInput;
+        inputs.push_back(c->input);
+      }
+    }
+    for (int i = 0; i < args.generated; ++i) inputs.push_back(campaign_case(1, kind, static_cast<std::uint64_t>(i), 10));
+    int written = 0;
+    for (const Input& in : inputs) {
+      const std::vector<std::uint8_t> bytes = encode_record(in);
+      const auto path = seeds / name_of_bytes(bytes);
+      if (std::filesystem::exists(path)) continue;
+      std::ofstream(path, std::ios::binary).write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+      ++written;
+    }
+    std::printf("%s: %d new seeds in %s\n", std::string(name(kind)).c_str(), written, seeds.string().c_str());
+  }
+  return 0;
+}
+
+struct FuzzCaseArgs {
+  std::string query;
+  std::vector<std::string> files;
+  std::string out = "corpora/new";
+};
+
+// Runs f in a child process; its exit status, or 128 + the signal that killed it.
+template <class F>
+int in_child(F f) {
+  std::fflush(nullptr);
+  const pid_t pid = fork();
+  if (pid == 0) std::_Exit(f());
+  int status = 0;
+  waitpid(pid, &status, 0);
+  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+}
+
+int run_fuzz_case(const FuzzCaseArgs& args) {
+  const auto kind = query_kind_named(args.query);
+  if (!kind) {
+    std::fprintf(stderr, "crosscheck fuzz-case: unknown query \"%s\"\n", args.query.c_str());
+    return kExitBadInput;
+  }
+  for (const std::string& file : args.files) {
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+      std::fprintf(stderr, "crosscheck fuzz-case: %s: cannot read the file\n", file.c_str());
+      return kExitBadInput;
+    }
+    const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const Input input = decode_record(*kind, bytes);
+    const Provenance provenance{"fuzz", std::nullopt, std::nullopt, hex(bytes)};
+    const auto path = std::filesystem::path(args.out) / args.query / case_file_name(input);
+    const std::string note = "untriaged: from fuzz input " + std::filesystem::path(file).filename().string();
+    // A full answer in a child; if that child dies, find out which party it was.
+    const int status = in_child([&] {
+      const Evaluation e = evaluate_with_oracles(input);
+      write_new_case_file(path, case_of(input, e, provenance, note));
+      return static_cast<int>(e.verdict.cls);
+    });
+    std::string what;
+    if (status >= 128) {
+      const int library = in_child([&] {
+        (void)ask_library(input);
+        return 0;
+      });
+      Evaluation e;
+      const std::string how = "crashed with signal " + std::to_string(status - 128);
+      if (library != 0) {
+        e.verdict.cls = CaseClass::impl_bug;
+        e.verdict.parties = {{"library", Standing::wrong, how}};
+      } else {
+        static const exact::ExactRationalReference exact;
+        e.library = ask_library(input);
+        e.exact = exact.judge(input);
+        e.opinions = {{"fcl/libccd", Opinion::Status::failed, {}, how}};
+        e.verdict.cls = CaseClass::oracle_crash;
+      }
+      write_new_case_file(path, case_of(input, e, provenance, note + "; " + how));
+      what = std::string(to_string(e.verdict.cls)) + " (" + how + ")";
+    } else {
+      what = std::string(to_string(static_cast<CaseClass>(status)));
+    }
+    std::printf("%s %s %s\n", file.c_str(), what.c_str(), path.string().c_str());
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_fuzz_commands(CLI::App& app, int& exit_code) {
+  auto seeds = std::make_shared<SeedArgs>();
+  auto* s = app.add_subcommand("fuzz-seeds", "Write the fuzz targets' seed corpora (corpora/<query>/seed/)");
+  s->add_option("--corpora", seeds->corpora, "The corpus root")->capture_default_str();
+  s->add_option("--generated", seeds->generated, "Generated cases per query")->capture_default_str();
+  s->callback([seeds, &exit_code] { exit_code = run_seeds(*seeds); });
+
+  auto cases = std::make_shared<FuzzCaseArgs>();
+  auto* c = app.add_subcommand("fuzz-case", "Turn fuzz inputs (records) into case files, classifying each");
+  c->add_option("query", cases->query, "The query kind of the fuzz target")->required();
+  c->add_option("files", cases->files, "Fuzz inputs")->required();
+  c->add_option("--out", cases->out, "Where the case files go")->capture_default_str();
+  c->callback([cases, &exit_code] { exit_code = run_fuzz_case(*cases); });
+}
+
+}  // namespace cc::tool
