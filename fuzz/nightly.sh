@@ -7,6 +7,10 @@
 # findings by class. Ctrl-C stops the fuzzers and still merges, converts and reports what was found.
 #
 #   fuzz/nightly.sh [--minutes 10] [--jobs 2] [--report build/fuzz-report] [--targets "ray_aabb obb_obb"]
+#                   [--max-shrink 5]
+#
+# Every finding is classified; the first of each kind of finding (same class, parties, features
+# and margin decade), up to --max-shrink per target, is minimised into corpora/new/.
 set -u
 
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -14,13 +18,15 @@ minutes=10
 jobs=2
 report="$root/build/fuzz-report"
 targets="ray_aabb sphere_sphere aabb_aabb kdop_kdop obb_obb tri_aabb tri_obb tri_tri"
+max_shrink=5
 while [ $# -gt 0 ]; do
   case "$1" in
     --minutes) minutes=$2; shift 2 ;;
     --jobs) jobs=$2; shift 2 ;;
     --report) report=$2; shift 2 ;;
     --targets) targets=$2; shift 2 ;;
-    *) echo "usage: $0 [--minutes M] [--jobs J] [--report DIR] [--targets \"Q ...\"]" >&2; exit 2 ;;
+    --max-shrink) max_shrink=$2; shift 2 ;;
+    *) echo "usage: $0 [--minutes M] [--jobs J] [--report DIR] [--targets \"Q ...\"] [--max-shrink N]" >&2; exit 2 ;;
   esac
 done
 
@@ -33,6 +39,8 @@ bin="$root/build/fuzz/fuzz"
 
 stopped=0
 trap 'stopped=1' INT TERM
+# An abandoned libccd call (one that would never return) leaks FCL's GJK objects by design.
+export LSAN_OPTIONS="suppressions=$root/tests/lsan.supp:print_suppressions=0"
 
 rm -rf "$report"
 mkdir -p "$report"
@@ -52,7 +60,9 @@ for t in $targets; do
   mkdir -p "$work" "$logs" "$artifacts" "$seeds"
   read -r cov_before ft_before <<< "$(coverage "$t" "$seeds")"
   seconds=0
+  ran=false
   if [ "$stopped" = 0 ]; then
+    ran=true
     echo "fuzzing $t for ${budget}s with $jobs jobs"
     begin=$(date +%s)
     ( cd "$logs" && CROSSCHECK_FUZZ_FINDINGS="$report/findings" "$bin/fuzz_$t" -max_total_time="$budget" \
@@ -60,6 +70,9 @@ for t in $targets; do
         -print_final_stats=1 -timeout=10 "$work" "$seeds" > /dev/null 2>&1 )
     seconds=$(( $(date +%s) - begin ))
   fi
+  # A target that stopped long before its budget (without Ctrl-C) did not fuzz: say so.
+  status=ok
+  if [ "$ran" = true ] && [ "$stopped" = 0 ] && [ "$seconds" -lt $(( budget / 2 )) ]; then status=stopped-early; fi
   # Executions per second: summed over the jobs' final statistics.
   execs=$(cat "$logs"/fuzz-*.log 2>/dev/null | sed -n 's/^stat::average_exec_per_sec: *\([0-9]*\)/\1/p' |
           awk '{s += $1} END {print s + 0}')
@@ -68,19 +81,28 @@ for t in $targets; do
   read -r cov_after ft_after <<< "$(coverage "$t" "$seeds")"
   # Findings: crashes and timeouts libFuzzer kept, and the inputs the target recorded.
   declare -A by_class=([impl_bug]=0 [oracle_defect]=0 [oracle_crash]=0 [undecided]=0 [other]=0)
+  declare -A seen=()
+  shrunk=0
   for f in "$artifacts"/* "$report/findings/$t"/*; do
     [ -f "$f" ] || continue
+    # "<input> <class> <case file> <kind of finding...>"
     line=$("$crosscheck" fuzz-case "$t" "$f" --out "$report/cases")
     class=$(echo "$line" | awk '{print $2}')
-    case_file=$(echo "$line" | awk '{print $NF}')
+    case_file=$(echo "$line" | awk '{print $3}')
+    key=$(echo "$line" | cut -d' ' -f4-)
     if [ -n "${by_class[$class]+x}" ]; then by_class[$class]=$(( by_class[$class] + 1 )); else by_class[other]=$(( by_class[other] + 1 )); fi
-    [ -f "$case_file" ] && "$crosscheck" shrink "$case_file" -o "$root/corpora/new/$t/$(basename "$case_file")" > /dev/null
+    if [ -f "$case_file" ] && [ -z "${seen[$key]+x}" ] && [ "$shrunk" -lt "$max_shrink" ]; then
+      seen[$key]=1
+      shrunk=$(( shrunk + 1 ))
+      "$crosscheck" shrink "$case_file" -o "$root/corpora/new/$t/$(basename "$case_file")" > /dev/null
+    fi
   done
-  echo "$t: ${execs} exec/s, features ${ft_before:-0} -> ${ft_after:-0}, impl_bug ${by_class[impl_bug]}, oracle_defect ${by_class[oracle_defect]}, oracle_crash ${by_class[oracle_crash]}"
-  markdown+="| $t | $seconds | $execs | ${ft_before:-0} | ${ft_after:-0} | ${cov_before:-0} | ${cov_after:-0} | ${by_class[impl_bug]} | ${by_class[oracle_defect]} | ${by_class[oracle_crash]} | ${by_class[undecided]} |"$'\n'
+  unset seen
+  echo "$t ($status): ${execs} exec/s, features ${ft_before:-0} -> ${ft_after:-0}, impl_bug ${by_class[impl_bug]}, oracle_defect ${by_class[oracle_defect]}, oracle_crash ${by_class[oracle_crash]}"
+  markdown+="| $t | $status | $seconds | $execs | ${ft_before:-0} | ${ft_after:-0} | ${cov_before:-0} | ${cov_after:-0} | ${by_class[impl_bug]} | ${by_class[oracle_defect]} | ${by_class[oracle_crash]} | ${by_class[undecided]} |"$'\n'
   [ -n "$json_targets" ] && json_targets+=","
-  json_targets+=$(printf '\n    "%s": {"seconds": %s, "execs_per_second": %s, "features_before": %s, "features_after": %s, "coverage_before": %s, "coverage_after": %s, "findings": {"impl_bug": %s, "oracle_defect": %s, "oracle_crash": %s, "undecided": %s, "other": %s}}' \
-    "$t" "$seconds" "$execs" "${ft_before:-0}" "${ft_after:-0}" "${cov_before:-0}" "${cov_after:-0}" \
+  json_targets+=$(printf '\n    "%s": {"status": "%s", "seconds": %s, "execs_per_second": %s, "features_before": %s, "features_after": %s, "coverage_before": %s, "coverage_after": %s, "findings": {"impl_bug": %s, "oracle_defect": %s, "oracle_crash": %s, "undecided": %s, "other": %s}}' \
+    "$t" "$status" "$seconds" "$execs" "${ft_before:-0}" "${ft_after:-0}" "${cov_before:-0}" "${cov_after:-0}" \
     "${by_class[impl_bug]}" "${by_class[oracle_defect]}" "${by_class[oracle_crash]}" "${by_class[undecided]}" "${by_class[other]}")
   unset by_class
 done
@@ -93,8 +115,8 @@ interrupted=$([ "$stopped" = 1 ] && echo true || echo false)
   echo "Features and coverage are libFuzzer's, over the stored seeds before and after merging the new corpus."
   echo "Findings are minimised into corpora/new/<query>/ for triage."
   echo
-  echo "| target | seconds | exec/s | features before | features after | coverage before | coverage after | impl_bug | oracle_defect | oracle_crash | undecided |"
-  echo "|---|---|---|---|---|---|---|---|---|---|---|"
+  echo "| target | status | seconds | exec/s | features before | features after | coverage before | coverage after | impl_bug | oracle_defect | oracle_crash | undecided |"
+  echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
   printf '%s' "$markdown"
 } > "$report/report.md"
 printf '{\n  "started": "%s", "minutes": %s, "jobs": %s, "interrupted": %s,\n  "targets": {%s\n  }\n}\n' \

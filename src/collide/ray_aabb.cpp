@@ -1,5 +1,6 @@
 #include "collide/ray_aabb.h"
 
+#include <cmath>
 #include <utility>
 
 namespace cc {
@@ -18,26 +19,61 @@ bool in_contract(const Ray& ray, const Aabb& box) {
 }  // namespace
 
 RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box) {
-  double enter = ray.tmin, exit = ray.tmax;        // as computed
-  double enter_low = ray.tmin, exit_high = ray.tmax;  // widened by the rounding bound
+  // The direction scaled by a power of two to a largest component in [1, 2), and the parameters
+  // with it: then a unit of t is about a unit of space, and a slab parameter that underflows
+  // errs by a negligible distance however long or short the direction. Exact; undone on return.
+  // (Not when every component is parallel: the parameters then only pass through.)
+  const double m = max_abs(ray.dir);
+  const int e = (m > 0x1p-1024 && std::isfinite(m)) ? std::ilogb(m) : 0;
+  const Vec3 dir{std::ldexp(ray.dir.x, -e), std::ldexp(ray.dir.y, -e), std::ldexp(ray.dir.z, -e)};
+  const double tmin = std::ldexp(ray.tmin, e), tmax = std::ldexp(ray.tmax, e);
+
+  // Parallel by contract: 1/d overflows exactly when |d| <= 2^-1024 (0 and -0 included).
+  const auto parallel = [&ray](int i) { return std::fabs(ray.dir[i]) <= 0x1p-1024; };
+  // The entry and exit parameters of slab i, in the scaled units.
+  const auto slab = [&](int i) {
+    const double lo = box.lo[i] - ray.origin[i], hi = box.hi[i] - ray.origin[i];
+    double near, far;
+    const double inv = 1.0 / dir[i];
+    if (!std::isinf(inv)) {
+      near = lo * inv, far = hi * inv;
+    } else {  // a component far smaller than the largest: its reciprocal overflows once scaled
+      const long double to_scaled = std::ldexp(1.0L, e);
+      near = static_cast<double>((static_cast<long double>(box.lo[i]) - ray.origin[i]) / ray.dir[i] * to_scaled);
+      far = static_cast<double>((static_cast<long double>(box.hi[i]) - ray.origin[i]) / ray.dir[i] * to_scaled);
+    }
+    if (ray.dir[i] < 0) std::swap(near, far);
+    return std::pair{near, far};
+  };
+
+  double enter = -INFINITY, exit = INFINITY;  // over the slabs, as computed
+  double enter_low = tmin, exit_high = tmax;  // with tmin and tmax, widened by the rounding bound
   for (int i = 0; i < 3; ++i) {
-    const double o = ray.origin[i];
-    const double inv = 1.0 / ray.dir[i];
-    if (std::isinf(inv)) {  // parallel to this slab: the origin decides, exactly
-      if (o < box.lo[i] || o > box.hi[i]) return {};
+    if (parallel(i)) {  // the origin decides, exactly
+      if (ray.origin[i] < box.lo[i] || ray.origin[i] > box.hi[i]) return {};
       continue;
     }
-    double t_near = (box.lo[i] - o) * inv;
-    double t_far = (box.hi[i] - o) * inv;
-    if (inv < 0) std::swap(t_near, t_far);
-    enter = std::max(enter, t_near);
-    exit = std::min(exit, t_far);
-    enter_low = std::max(enter_low, t_near - pad(t_near));
-    exit_high = std::min(exit_high, t_far + pad(t_far));
+    const auto [near, far] = slab(i);
+    enter = std::max(enter, near);
+    exit = std::min(exit, far);
+    enter_low = std::max(enter_low, near - pad(near));
+    exit_high = std::min(exit_high, far + pad(far));
   }
   if (!(enter_low <= exit_high)) return {};
   if (!in_contract(ray, box)) return {};  // checked on the hit path only
-  return {true, enter, exit};
+  // The parameters reported in the caller's units, recomputed from the slabs that bind (in the
+  // scaled units a parameter near 0 could have lost its bits to underflow); among slabs that
+  // tie, the largest entry and the smallest exit, so the choice does not depend on axis order.
+  double t_enter = enter > tmin ? -INFINITY : ray.tmin, t_exit = exit < tmax ? INFINITY : ray.tmax;
+  for (int i = 0; i < 3; ++i) {
+    if (parallel(i)) continue;
+    const auto [near, far] = slab(i);
+    const double inv = 1.0 / ray.dir[i];
+    const double lo = (box.lo[i] - ray.origin[i]) * inv, hi = (box.hi[i] - ray.origin[i]) * inv;
+    if (enter > tmin && near == enter) t_enter = std::max(t_enter, std::min(lo, hi));
+    if (exit < tmax && far == exit) t_exit = std::min(t_exit, std::max(lo, hi));
+  }
+  return {true, t_enter, t_exit};
 }
 
 }  // namespace cc

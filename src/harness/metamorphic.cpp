@@ -113,6 +113,8 @@ struct Flush {
     RayAabbInput r = in;
     r.ray.origin = flush(in.ray.origin);
     r.ray.dir = flush(in.ray.dir);
+    r.ray.tmin = flush(in.ray.tmin);  // the library scales t with the direction
+    r.ray.tmax = flush(in.ray.tmax);
     r.box = flush(in.box);
     return r;
   }

@@ -12,6 +12,7 @@
 #include "harness/campaign.h"
 #include "harness/fuzz_record.h"
 #include "harness/library.h"
+#include "harness/signature.h"
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
@@ -107,11 +108,19 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
     const auto path = std::filesystem::path(args.out) / args.query / case_file_name(input);
     const std::string note = "untriaged: from fuzz input " + std::filesystem::path(file).filename().string();
     // A full answer in a child; if that child dies, find out which party it was.
+    int pipe_fds[2];
+    if (pipe(pipe_fds) != 0) return kExitBadInput;
     const int status = in_child([&] {
       const Evaluation e = evaluate_with_oracles(input);
       write_new_case_file(path, case_of(input, e, provenance, note));
+      const std::string key = finding_key(input, e);
+      if (::write(pipe_fds[1], key.data(), key.size()) < 0) return 255;
       return static_cast<int>(e.verdict.cls);
     });
+    ::close(pipe_fds[1]);
+    char key[512] = {};
+    const ssize_t n = ::read(pipe_fds[0], key, sizeof key - 1);
+    ::close(pipe_fds[0]);
     std::string what;
     if (status >= 128) {
       const int library = in_child([&] {
@@ -131,11 +140,13 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
         e.verdict.cls = CaseClass::oracle_crash;
       }
       write_new_case_file(path, case_of(input, e, provenance, note + "; " + how));
-      what = std::string(to_string(e.verdict.cls)) + " (" + how + ")";
+      what = std::string(to_string(e.verdict.cls)) + " " + path.string() + " crash " + how;
     } else {
-      what = std::string(to_string(static_cast<CaseClass>(status)));
+      what = std::string(to_string(static_cast<CaseClass>(status))) + " " + path.string() + " " +
+             std::string(key, n > 0 ? static_cast<std::size_t>(n) : 0);
     }
-    std::printf("%s %s %s\n", file.c_str(), what.c_str(), path.string().c_str());
+    // The input, its class, its case file, and the kind of finding it is (for grouping).
+    std::printf("%s %s\n", file.c_str(), what.c_str());
   }
   return 0;
 }

@@ -15,6 +15,7 @@ using namespace harness;
 struct ReplayArgs {
   std::vector<std::string> dirs;
   bool quiet = false;
+  bool accept = false;
 };
 
 std::string said(const Opinion& o) {
@@ -71,6 +72,15 @@ int run(const ReplayArgs& args) {
       if (!args.quiet) std::printf("ok       %s  %s\n", file.string().c_str(), std::string(to_string(c->cls)).c_str());
       continue;
     }
+    if (args.accept && now.verdict.parties[0].standing != Standing::wrong) {
+      // Explicitly asked: record today's answers, keeping the note and the provenance.
+      Case updated = case_of(c->input, now, c->provenance, c->note);
+      std::filesystem::remove(file);
+      write_new_case_file(file, updated);
+      std::printf("ACCEPTED %s\n", file.string().c_str());
+      for (const std::string& w : what) std::printf("  - %s\n", w.c_str());
+      continue;
+    }
     ++changed;
     std::printf("CHANGED  %s\n", file.string().c_str());
     for (const std::string& w : what) std::printf("  - %s\n", w.c_str());
@@ -89,6 +99,8 @@ void add_replay_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("replay", "Re-answer stored cases and report every change of class or behaviour");
   cmd->add_option("dirs", args->dirs, "Directories (searched recursively) or case files")->required();
   cmd->add_flag("-q,--quiet", args->quiet, "Print only the cases that changed");
+  cmd->add_flag("--accept", args->accept,
+                "Rewrite changed cases with today's answers (keeping note and provenance), unless the library is wrong");
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 
