@@ -13,7 +13,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   return cc::fuzz::test_one_input(kKind, data, size);
 }
 
-#ifdef CROSSCHECK_LIBFUZZER
+#ifdef CROSSCHECK_CUSTOM_MUTATOR
 extern "C" std::size_t LLVMFuzzerCustomMutator(std::uint8_t* data, std::size_t size, std::size_t max_size,
                                                unsigned int seed) {
   return cc::fuzz::mutate(kKind, data, size, max_size, seed);

@@ -6,9 +6,12 @@
 namespace cc {
 namespace {
 
-// A slab parameter (b - o) * (1/d) carries three roundings: at most 3.000001u relative. Padding
-// by 8u (plus the subnormal slack) covers it and the rounding of the padded value itself.
-double pad(double t) { return std::fabs(t) * (8 * fp::u) + fp::subnormal_slack; }
+// A slab parameter (b - o) * (1/d) carries three roundings: at most 3.000001u relative. Widening
+// it by 8u (plus the subnormal slack) covers that and the rounding of the widened value itself.
+// In multiplicative form, so that a parameter that overflowed to +-inf stays infinite (an
+// additive pad would make inf - inf = NaN).
+double lower(double t) { return (t > 0 ? t * (1 - 8 * fp::u) : t * (1 + 8 * fp::u)) - fp::subnormal_slack; }
+double upper(double t) { return (t > 0 ? t * (1 + 8 * fp::u) : t * (1 - 8 * fp::u)) + fp::subnormal_slack; }
 
 bool in_contract(const Ray& ray, const Aabb& box) {
   return finite(ray.origin) && finite(ray.dir) && finite(box.lo) && finite(box.hi) &&
@@ -56,8 +59,8 @@ RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box) {
     const auto [near, far] = slab(i);
     enter = std::max(enter, near);
     exit = std::min(exit, far);
-    enter_low = std::max(enter_low, near - pad(near));
-    exit_high = std::min(exit_high, far + pad(far));
+    enter_low = std::max(enter_low, lower(near));
+    exit_high = std::min(exit_high, upper(far));
   }
   if (!(enter_low <= exit_high)) return {};
   if (!in_contract(ray, box)) return {};  // checked on the hit path only

@@ -81,6 +81,12 @@ RayAabbInput generate_ray_aabb(ValueSource& v, const GenerateOptions& options) {
       r.dir = {};
   }
   if (v.choices().chance(15)) r.tmax = std::fabs(v.coordinate());  // a segment
+  if (v.choices().chance(10)) {
+    // An extreme direction (the direction is not a coordinate: up to DBL_MAX), with t scaled back.
+    const int k = v.small_int(1000);
+    r.dir = {std::ldexp(r.dir.x, k), std::ldexp(r.dir.y, k), std::ldexp(r.dir.z, k)};
+    r.tmin = std::ldexp(r.tmin, -k), r.tmax = std::ldexp(r.tmax, -k);
+  }
   if (options.out_of_contract && v.choices().chance(15)) r.tmin = v.coordinate();
   return in;
 }
