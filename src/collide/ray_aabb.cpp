@@ -64,17 +64,18 @@ RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box) {
   }
   if (!(enter_low <= exit_high)) return {};
   if (!in_contract(ray, box)) return {};  // checked on the hit path only
-  // The parameters reported in the caller's units, recomputed from the slabs that bind (in the
-  // scaled units a parameter near 0 could have lost its bits to underflow); among slabs that
-  // tie, the largest entry and the smallest exit, so the choice does not depend on axis order.
-  double t_enter = enter > tmin ? -INFINITY : ray.tmin, t_exit = exit < tmax ? INFINITY : ray.tmax;
+  // The parameters reported in the caller's units: tmin and tmax as given, against the slabs
+  // that bind recomputed in those units (in the scaled units a parameter, or tmin and tmax
+  // themselves, may have lost bits to underflow). Among slabs that tie, the largest entry and
+  // the smallest exit, so the choice does not depend on the order of the axes.
+  double t_enter = ray.tmin, t_exit = ray.tmax;
   for (int i = 0; i < 3; ++i) {
     if (parallel(i)) continue;
     const auto [near, far] = slab(i);
     const double inv = 1.0 / ray.dir[i];
     const double lo = (box.lo[i] - ray.origin[i]) * inv, hi = (box.hi[i] - ray.origin[i]) * inv;
-    if (enter > tmin && near == enter) t_enter = std::max(t_enter, std::min(lo, hi));
-    if (exit < tmax && far == exit) t_exit = std::min(t_exit, std::max(lo, hi));
+    if (near == enter) t_enter = std::max(t_enter, std::min(lo, hi));
+    if (far == exit) t_exit = std::min(t_exit, std::max(lo, hi));
   }
   return {true, t_enter, t_exit};
 }
