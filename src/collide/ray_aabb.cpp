@@ -1,5 +1,6 @@
 #include "collide/ray_aabb.h"
 
+#include <cfloat>
 #include <cmath>
 #include <utility>
 
@@ -30,6 +31,9 @@ RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box) {
   const int e = (m > 0x1p-1024 && std::isfinite(m)) ? std::ilogb(m) : 0;
   const Vec3 dir{std::ldexp(ray.dir.x, -e), std::ldexp(ray.dir.y, -e), std::ldexp(ray.dir.z, -e)};
   const double tmin = std::ldexp(ray.tmin, e), tmax = std::ldexp(ray.tmax, e);
+  // tmin and tmax compared as given: scaled, both may underflow to the same value. (Elsewhere an
+  // underflowed tmin or tmax errs by less than the padding of the slabs it meets.)
+  if (!(ray.tmin <= ray.tmax)) return {};
 
   // Parallel by contract: 1/d overflows exactly when |d| <= 2^-1024 (0 and -0 included).
   const auto parallel = [&ray](int i) { return std::fabs(ray.dir[i]) <= 0x1p-1024; };
@@ -37,10 +41,12 @@ RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box) {
   const auto slab = [&](int i) {
     const double lo = box.lo[i] - ray.origin[i], hi = box.hi[i] - ray.origin[i];
     double near, far;
-    const double inv = 1.0 / dir[i];
-    if (!std::isinf(inv)) {
+    if (std::fabs(dir[i]) >= DBL_MIN) {
+      const double inv = 1.0 / dir[i];
       near = lo * inv, far = hi * inv;
-    } else {  // a component far smaller than the largest: its reciprocal overflows once scaled
+    } else {
+      // A component so much smaller than the largest that, scaled, it is subnormal (rounded,
+      // or with a reciprocal that overflows): computed in the caller's units in long double.
       const long double to_scaled = std::ldexp(1.0L, e);
       near = static_cast<double>((static_cast<long double>(box.lo[i]) - ray.origin[i]) / ray.dir[i] * to_scaled);
       far = static_cast<double>((static_cast<long double>(box.hi[i]) - ray.origin[i]) / ray.dir[i] * to_scaled);
