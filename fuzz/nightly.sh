@@ -94,7 +94,11 @@ for t in $targets; do
     if [ -f "$case_file" ] && [ -z "${seen[$key]+x}" ] && [ "$shrunk" -lt "$max_shrink" ]; then
       seen[$key]=1
       shrunk=$(( shrunk + 1 ))
-      "$crosscheck" shrink "$case_file" -o "$root/corpora/new/$t/$(basename "$case_file")" > /dev/null
+      written=$("$crosscheck" shrink "$case_file" -o "$root/corpora/new/$t/" | sed -n 's/^  written to //p')
+      # Already stored elsewhere under corpora/ (a known case): not a new one.
+      if [ -n "$written" ] && find "$root/corpora" -path "$root/corpora/new" -prune -o -name "$(basename "$written")" -print | grep -q .; then
+        rm -f "$written"
+      fi
     fi
   done
   unset seen

@@ -25,9 +25,10 @@ int run(const ShrinkArgs& args) {
               harness::complex_values(c->input), harness::complex_values(r.input), r.accepted, r.attempts);
   harness::Provenance provenance{"shrink", c->provenance.seed, c->provenance.case_index, args.file};
   const harness::Case shrunk = case_of(r.input, r.evaluation, provenance, c->note);
-  const std::filesystem::path out = args.out.empty() ? std::filesystem::path(args.file).parent_path() /
-                                                           harness::case_file_name(r.input)
-                                                     : std::filesystem::path(args.out);
+  // The output: beside the input or in the directory given (named by the shrunk case's hash, so
+  // that two findings that shrink to the same case are stored once), or the file given.
+  std::filesystem::path out = args.out.empty() ? std::filesystem::path(args.file).parent_path() : std::filesystem::path(args.out);
+  if (args.out.empty() || std::filesystem::is_directory(out) || args.out.back() == '/') out /= harness::case_file_name(r.input);
   try {
     if (!harness::write_new_case_file(out, shrunk)) {
       std::printf("  %s exists already: not overwritten\n", out.string().c_str());
@@ -47,7 +48,8 @@ void add_shrink_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ShrinkArgs>();
   auto* cmd = app.add_subcommand("shrink", "Minimise a case file, keeping its kind, class and disagreement");
   cmd->add_option("file", args->file, "The case file")->required();
-  cmd->add_option("-o,--out", args->out, "Where to write the shrunk case (default: beside it, named by its hash)");
+  cmd->add_option("-o,--out", args->out,
+                  "A file, or a directory (ending in /) for a file named by the shrunk case's hash (default: beside it)");
   cmd->add_option("--attempts", args->attempts, "Evaluations to try at most")->capture_default_str();
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
