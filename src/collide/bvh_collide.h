@@ -1,0 +1,85 @@
+// Two hierarchies against each other under rigid motion: the first colliding triangle pair
+// (collision detection) or all of them (collision determination).
+#pragma once
+
+#include <cstdint>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "collide/bvh.h"
+#include "collide/rigid_transform.h"
+
+namespace cc {
+
+enum class CollisionMode { first_hit, all_pairs };
+
+/// How an Aabb or k-DOP of b is brought into a's frame when b moves relative to a (an OBB is
+/// moved with the relative transform itself and needs no update). Both results are padded to
+/// cover the rounding of the transform, so they contain b's moved triangles as the leaf test
+/// sees them.
+enum class BvUpdate {
+  approximate,  // refit around the moved corners of the original volume (Klosowski et al.)
+  exact,        // refit around the moved vertices of the convex hull of the node's triangles
+};
+
+/// Which hierarchy to descend when both nodes are internal.
+enum class Descent {
+  first_model,  // always a's, as in the pseudocode of the lecture notes (FindFirstHitCD)
+  larger,       // the one whose volume is larger (ties: a's)
+};
+
+std::string_view to_string(CollisionMode m);
+std::string_view to_string(BvUpdate u);
+std::string_view to_string(Descent d);
+
+struct CollideOptions {
+  CollisionMode mode = CollisionMode::all_pairs;
+  BvUpdate update = BvUpdate::approximate;
+  Descent descent = Descent::first_model;
+  friend bool operator==(const CollideOptions&, const CollideOptions&) = default;
+};
+
+/// What a query cost, for the cost function T = n_v c_v + n_p c_p + n_u c_u.
+struct CollisionCounters {
+  std::uint64_t bv_tests = 0;         // n_v: volume-volume overlap tests
+  std::uint64_t primitive_tests = 0;  // n_p: triangle-triangle tests
+  std::uint64_t bv_updates = 0;       // n_u: volumes of b brought into a's frame
+  friend bool operator==(const CollisionCounters&, const CollisionCounters&) = default;
+};
+
+struct CollisionResult {
+  /// Colliding pairs (face of a's mesh, face of b's mesh), sorted. first_hit: at most one, the
+  /// first found in the traversal order.
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> pairs;
+  CollisionCounters counters;
+};
+
+/// The triangle pairs of a (placed by pose_a) and b (placed by pose_b) that share a point, by
+/// test_triangle_triangle on a's triangles and b's triangles moved into a's frame by
+/// relative(pose_a, pose_b) (each vertex by apply()).
+///  - The hierarchies only prune: every volume test is conservative for the triangles as the
+///    leaf test sees them, so a pair that shares a point is never lost. The pairs are those of
+///    collide_brute_force, whatever the volume type, build and options, except possibly pairs
+///    apart by less than the leaf test's tolerance, which it may report while a volume test
+///    prunes them.
+///  - Surfaces only: a mesh inside another without touching it gives no pair.
+///  - Poses: finite rotations (see RigidTransform); meshes valid (mesh_problem) and of
+///    magnitude at most 2^300.
+template <class BV>
+CollisionResult collide(const Bvh<BV>& a, const RigidTransform& pose_a, const Bvh<BV>& b, const RigidTransform& pose_b,
+                        const CollideOptions& options);
+
+/// The volume of b's node in a's frame as collide() tests it, for b moved by t (relative to a):
+/// an OBB moved by t; an Aabb or k-DOP re-fitted as `update` says. Padded by 2^-43 of b's
+/// magnitude plus |t's translation|, so that it contains, in exact arithmetic, the node's
+/// triangles moved as the leaf test sees them (each vertex by apply(t, v)).
+template <class BV>
+BV moved_volume(const Bvh<BV>& b, std::size_t node, const RigidTransform& t, BvUpdate update);
+
+/// All pairs without a hierarchy: every triangle of a against every triangle of b, moved the
+/// same way as collide() moves them. Its pairs are collide()'s, for any hierarchy.
+std::vector<std::pair<std::uint32_t, std::uint32_t>> collide_brute_force(const Mesh& a, const RigidTransform& pose_a,
+                                                                         const Mesh& b, const RigidTransform& pose_b);
+
+}  // namespace cc

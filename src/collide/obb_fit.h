@@ -1,0 +1,33 @@
+// Fitting an oriented bounding box to points, the OBBTree way.
+#pragma once
+
+#include <span>
+
+#include "collide/convex_hull.h"
+#include "collide/obb.h"
+
+namespace cc {
+
+/// The box of Gottschalk, Lin and Manocha (OBBTree, 1996): its axes are the eigenvectors of the
+/// covariance of the convex hull's surface (each hull triangle weighted by its area, Eigen's
+/// self-adjoint solver), its extents those of the points along the axes.
+///  - Conservative: every point lies in the box in exact arithmetic. The half extents are
+///    widened by 2^-44 of the points' magnitude, which covers the rounding of the projections
+///    and the axes' deviation from orthonormal.
+///  - Axes: right-handed and orthonormal to within 2^-50 (well within kObbOrthonormalTolerance).
+///  - Flat points (a triangle, a plate): the polygon's covariance, so one axis is the normal.
+///    Collinear or coincident points: the covariance of the points themselves; a single point
+///    gives the identity axes and (padded) zero extents.
+///  - Points must be finite and not empty.
+Obb fit_obb(std::span<const Vec3> points);
+
+/// The two halves of fit_obb, for callers that have the hull already: the axes from the
+/// surface covariance of `hull` (a convex hull of `points`), ...
+Mat3 obb_axes(std::span<const Vec3> points, const ConvexHull& hull);
+/// ... and the smallest box with those axes that contains the points (padded as above).
+Obb fit_obb(const Mat3& axes, std::span<const Vec3> points);
+
+/// The 8 corners of the box: center +- half_0 axis_0 +- half_1 axis_1 +- half_2 axis_2, rounded.
+std::array<Vec3, 8> corners(const Obb& box);
+
+}  // namespace cc

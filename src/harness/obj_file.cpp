@@ -1,0 +1,98 @@
+#include "harness/obj_file.h"
+
+#include <tiny_obj_loader.h>
+
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+namespace cc::harness {
+namespace {
+
+[[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
+  throw MeshFileError(path.string() + ": " + what);
+}
+[[noreturn]] void fail(const std::filesystem::path& path, std::size_t line, const std::string& what) {
+  throw MeshFileError(path.string() + ":" + std::to_string(line) + ": " + what);
+}
+
+// tinyobjloader's messages end in newlines and name lines as "(line 6.)"; one line of text.
+std::string one_line(std::string message) {
+  while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
+  for (char& c : message) c = c == '\n' ? ' ' : c;
+  return message;
+}
+
+// The coordinates of every `v` line, read exactly, in file order.
+std::vector<Vec3> exact_vertices(const std::filesystem::path& path, const std::string& text) {
+  std::vector<Vec3> out;
+  std::istringstream lines(text);
+  std::string line;
+  for (std::size_t number = 1; std::getline(lines, line); ++number) {
+    std::istringstream tokens(line);
+    std::string keyword;
+    if (!(tokens >> keyword) || keyword != "v") continue;
+    Vec3 p;
+    for (int k = 0; k < 3; ++k) {
+      std::string token;
+      if (!(tokens >> token)) fail(path, number, "a vertex needs three coordinates");
+      const char* begin = token.data() + (token[0] == '+' ? 1 : 0);
+      const char* end = token.data() + token.size();
+      double x = 0;
+      const auto [ptr, ec] = std::from_chars(begin, end, x);
+      if (ec == std::errc::result_out_of_range) fail(path, number, "coordinate \"" + token + "\" is out of range");
+      if (ec != std::errc() || ptr != end) fail(path, number, "\"" + token + "\" is not a number");
+      if (!std::isfinite(x)) fail(path, number, "coordinate \"" + token + "\" is not finite");
+      p[k] = x;
+    }
+    out.push_back(p);
+  }
+  return out;
+}
+
+}  // namespace
+
+Mesh read_obj_file(const std::filesystem::path& path) {
+  std::ifstream file(path, std::ios::binary);
+  if (!file) fail(path, "cannot open the file");
+  std::ostringstream buffer;
+  buffer << file.rdbuf();
+  const std::string text = buffer.str();
+
+  tinyobj::ObjReaderConfig config;
+  config.triangulate = true;
+  config.vertex_color = false;
+  tinyobj::ObjReader reader;
+  if (!reader.ParseFromString(text, "", config)) fail(path, one_line(reader.Error()));
+  if (const std::string warning = one_line(reader.Warning()); !warning.empty() &&
+      (warning.find("out of bounds") != std::string::npos || warning.find("invalid") != std::string::npos)) {
+    fail(path, warning);
+  }
+
+  Mesh mesh;
+  mesh.vertices = exact_vertices(path, text);
+  if (mesh.vertices.size() * 3 != reader.GetAttrib().vertices.size()) {
+    fail(path, "tinyobjloader read " + std::to_string(reader.GetAttrib().vertices.size() / 3) + " vertices, the file has " +
+                   std::to_string(mesh.vertices.size()) + " `v` lines");
+  }
+  for (const tinyobj::shape_t& shape : reader.GetShapes()) {
+    const auto& indices = shape.mesh.indices;
+    for (std::size_t i = 0; i + 2 < indices.size(); i += 3) {
+      std::array<std::uint32_t, 3> face{};
+      for (int k = 0; k < 3; ++k) {
+        const int index = indices[i + k].vertex_index;
+        if (index < 0 || static_cast<std::size_t>(index) >= mesh.vertices.size()) {
+          fail(path, "face " + std::to_string(mesh.faces.size() + 1) + " of shape \"" + shape.name +
+                         "\" names vertex " + std::to_string(index + 1) + " of " + std::to_string(mesh.vertices.size()));
+        }
+        face[k] = static_cast<std::uint32_t>(index);
+      }
+      mesh.faces.push_back(face);
+    }
+  }
+  if (mesh.faces.empty()) fail(path, "no triangles (an empty file, or no `f` lines)");
+  return mesh;
+}
+
+}  // namespace cc::harness

@@ -1,0 +1,157 @@
+#include "collide/bvh_collide.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "harness/procedural_mesh.h"
+
+namespace cc {
+namespace {
+
+using harness::make_mesh;
+using Shape = harness::ProceduralMesh::Shape;
+using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
+
+Mat3 rotation(double a, double b, double c) {
+  const auto about = [](int axis, double angle) {
+    const double co = std::cos(angle), si = std::sin(angle);
+    Mat3 m;
+    const int i = (axis + 1) % 3, j = (axis + 2) % 3;
+    m(i, i) = co, m(i, j) = -si, m(j, i) = si, m(j, j) = co;
+    return m;
+  };
+  const Mat3 x = about(0, a), y = about(1, b), z = about(2, c);
+  Mat3 yx, r;
+  for (int k = 0; k < 3; ++k) yx.col[k] = y * x.col[k];
+  for (int k = 0; k < 3; ++k) r.col[k] = z * yx.col[k];
+  return r;
+}
+
+Mesh square(double z) {  // the unit square [0, 1]^2 at height z, two triangles
+  Mesh m;
+  m.vertices = {{0, 0, z}, {1, 0, z}, {1, 1, z}, {0, 1, z}};
+  m.faces = {{0, 1, 2}, {0, 2, 3}};
+  return m;
+}
+
+template <class BV>
+class BvhCollideTest : public ::testing::Test {};
+using VolumeTypes = ::testing::Types<Aabb, Obb, Kdop<6>, Kdop<14>, Kdop<16>, Kdop<18>, Kdop<24>, Kdop<26>>;
+TYPED_TEST_SUITE(BvhCollideTest, VolumeTypes);
+
+const std::vector<RigidTransform> kPoses = {
+    {Mat3::identity(), {0, 0, 0}},
+    {rotation(0.3, -1.2, 2.0), {0.4, 0.1, -0.2}},
+    {rotation(3.0, 0.5, -0.7), {1.1, -0.6, 0.3}},
+    {rotation(-2.2, 2.9, 0.1), {1.9, 0.2, 0.0}},
+    {rotation(1.0, 1.0, 1.0), {5, 5, 5}},  // apart
+};
+
+TYPED_TEST(BvhCollideTest, EveryBuildAndOptionFindsTheBruteForcePairs) {
+  const Mesh torus = make_mesh({Shape::torus, 0, 6, 1.0});
+  const Mesh soup = make_mesh({Shape::soup, 11, 80, 1.0, 0, 15});
+  const RigidTransform place_torus{rotation(0.2, 0.1, 0.0), {0.1, 0, 0}};
+  for (const BuildOptions& build : {BuildOptions{}, BuildOptions{BuildStrategy::top_down, SplitAxis::min_sum, SplitPoint::mean, 4},
+                                    BuildOptions{BuildStrategy::bottom_up}, BuildOptions{BuildStrategy::incremental}}) {
+    const Bvh<TypeParam> a = build_bvh<TypeParam>(torus, build), b = build_bvh<TypeParam>(soup, build);
+    for (const RigidTransform& pose : kPoses) {
+      const Pairs expected = collide_brute_force(torus, place_torus, soup, pose);
+      for (BvUpdate update : {BvUpdate::approximate, BvUpdate::exact}) {
+        for (Descent descent : {Descent::first_model, Descent::larger}) {
+          const CollisionResult r = collide(a, place_torus, b, pose, {CollisionMode::all_pairs, update, descent});
+          EXPECT_EQ(r.pairs, expected);
+          EXPECT_LE(r.counters.primitive_tests, torus.size() * soup.size());
+          EXPECT_GE(r.counters.bv_tests, 1u);
+          if constexpr (std::is_same_v<TypeParam, Obb>) {
+            EXPECT_EQ(r.counters.bv_updates, 0u);
+          }
+          const CollisionResult first = collide(a, place_torus, b, pose, {CollisionMode::first_hit, update, descent});
+          ASSERT_EQ(first.pairs.size(), expected.empty() ? 0u : 1u);
+          if (!expected.empty()) {
+            EXPECT_TRUE(std::binary_search(expected.begin(), expected.end(), first.pairs[0]));
+          }
+          EXPECT_LE(first.counters.primitive_tests, r.counters.primitive_tests);
+        }
+      }
+    }
+  }
+}
+
+TYPED_TEST(BvhCollideTest, SwappingTheModelsTransposesThePairs) {
+  const Mesh sphere = make_mesh({Shape::sphere, 0, 5, 1.0});
+  const Mesh plate = make_mesh({Shape::plate, 0, 4, 1.2, 0.01});
+  const Bvh<TypeParam> s = build_bvh<TypeParam>(sphere, {}), p = build_bvh<TypeParam>(plate, {});
+  const RigidTransform a{rotation(0.1, 0.2, 0.3), {0, 0, 0.2}}, b{rotation(-0.5, 0.4, 0.0), {0.3, 0, 0}};
+  Pairs forward = collide(s, a, p, b, {}).pairs, backward = collide(p, b, s, a, {}).pairs;
+  ASSERT_FALSE(forward.empty());
+  for (auto& [i, j] : backward) std::swap(i, j);
+  std::sort(backward.begin(), backward.end());
+  EXPECT_EQ(forward, backward);
+}
+
+TYPED_TEST(BvhCollideTest, TouchingSquaresCollideAndApartOnesDoNot) {
+  const Mesh lower = square(0);
+  const Bvh<TypeParam> a = build_bvh<TypeParam>(lower, {});
+  const Bvh<TypeParam> b = build_bvh<TypeParam>(square(0), {});
+  // b lifted to touch a edge to edge (standing up), then lifted a little further.
+  const RigidTransform standing{rotation(M_PI / 2, 0, 0), {0, 0, 0}};
+  EXPECT_FALSE(collide(a, {}, b, standing, {}).pairs.empty());
+  const RigidTransform above{Mat3::identity(), {0, 0, 1e-6}};
+  EXPECT_TRUE(collide(a, {}, b, above, {}).pairs.empty());
+  EXPECT_EQ(collide(a, {}, b, {}, {}).pairs.size(), 4u);  // coplanar and overlapping: every pair
+}
+
+TYPED_TEST(BvhCollideTest, AMeshInsideAnotherDoesNotCollide) {
+  const Mesh big = make_mesh({Shape::sphere, 0, 6, 10.0}), small = make_mesh({Shape::sphere, 0, 4, 1.0});
+  const Bvh<TypeParam> a = build_bvh<TypeParam>(big, {}), b = build_bvh<TypeParam>(small, {});
+  EXPECT_TRUE(collide(a, {}, b, {}, {}).pairs.empty());
+}
+
+TYPED_TEST(BvhCollideTest, MovedVolumesHoldTheMovedTriangles) {
+  const Mesh soup = make_mesh({Shape::soup, 5, 40, 100.0, 0, 10});
+  const Bvh<TypeParam> b = build_bvh<TypeParam>(soup, {BuildStrategy::top_down, SplitAxis::splatter, SplitPoint::mean, 2});
+  const RigidTransform t{rotation(0.7, -0.3, 2.2), {1000, -20, 3}};
+  for (BvUpdate update : {BvUpdate::approximate, BvUpdate::exact}) {
+    for (std::size_t n = 0; n < b.nodes.size(); ++n) {
+      const TypeParam v = moved_volume(b, n, t, update);
+      // A degenerate moved triangle inside it overlaps it (checked with the library's own test).
+      for (std::uint32_t s = b.nodes[n].first; s < b.nodes[n].first + b.nodes[n].count; ++s) {
+        for (const Vec3& p : b.triangles[s].v) {
+          const Vec3 q = apply(t, p);
+          const std::vector<Vec3> point{q};
+          if constexpr (std::is_same_v<TypeParam, Obb>) {
+            EXPECT_TRUE(test_obb_obb(v, Obb{q, {0, 0, 0}, Mat3::identity()}));
+          } else {
+            EXPECT_TRUE(BoundingVolume<TypeParam>::overlap(v, BoundingVolume<TypeParam>::fit(point)));
+          }
+        }
+      }
+    }
+  }
+}
+
+TEST(BvhCollideUpdate, TheExactRefitIsNoLooserThanTheApproximation) {
+  const Mesh torus = make_mesh({Shape::torus, 0, 8, 3.0});
+  const Bvh<Kdop<18>> b = build_bvh<Kdop<18>>(torus, {BuildStrategy::top_down, SplitAxis::splatter, SplitPoint::mean, 4});
+  const RigidTransform t{rotation(0.9, 0.4, -1.3), {2, 0, 0}};
+  double exact_width = 0, approximate_width = 0;
+  for (std::size_t n = 0; n < b.nodes.size(); ++n) {
+    const Kdop<18> e = moved_volume(b, n, t, BvUpdate::exact), a = moved_volume(b, n, t, BvUpdate::approximate);
+    for (int i = 0; i < 9; ++i) {
+      EXPECT_LE(e.hi[i] - e.lo[i], a.hi[i] - a.lo[i] + 1e-12);
+      exact_width += e.hi[i] - e.lo[i], approximate_width += a.hi[i] - a.lo[i];
+    }
+  }
+  EXPECT_LT(exact_width, approximate_width);
+}
+
+TEST(BvhCollideNames, Options) {
+  EXPECT_EQ(to_string(CollisionMode::first_hit), "first_hit");
+  EXPECT_EQ(to_string(BvUpdate::exact), "exact");
+  EXPECT_EQ(to_string(Descent::larger), "larger");
+}
+
+}  // namespace
+}  // namespace cc

@@ -1,0 +1,57 @@
+#include "collide/convex_hull.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace cc {
+namespace {
+
+double area(std::span<const Vec3> p, const ConvexHull& h) {
+  double a = 0;
+  for (const auto& t : h.triangles) {
+    const Vec3 n = cross(p[t[1]] - p[t[0]], p[t[2]] - p[t[0]]);
+    a += 0.5 * std::sqrt(dot(n, n));
+  }
+  return a;
+}
+
+bool has(const ConvexHull& h, std::uint32_t v) { return std::find(h.vertices.begin(), h.vertices.end(), v) != h.vertices.end(); }
+
+TEST(ConvexHull, CubeWithAnInnerPoint) {
+  std::vector<Vec3> p;
+  for (int i = 0; i < 8; ++i) p.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+  p.push_back({0.5, 0.5, 0.5});
+  const ConvexHull h = convex_hull(p);
+  EXPECT_EQ(h.triangles.size(), 12u);
+  EXPECT_NEAR(area(p, h), 6, 1e-12);
+  for (std::uint32_t v = 0; v < 8; ++v) EXPECT_TRUE(has(h, v));
+  EXPECT_FALSE(has(h, 8));
+}
+
+TEST(ConvexHull, FlatPointsCoverThePolygonOnBothSides) {
+  // A unit square in the plane z = 2 with a point inside and one on an edge.
+  const std::vector<Vec3> p = {{0, 0, 2}, {1, 0, 2}, {1, 1, 2}, {0, 1, 2}, {0.25, 0.5, 2}, {0.5, 0, 2}};
+  const ConvexHull h = convex_hull(p);
+  EXPECT_NEAR(area(p, h), 2, 1e-12);
+  EXPECT_EQ(h.vertices.size(), p.size());  // every point, a superset of the extremes
+}
+
+TEST(ConvexHull, SingleTriangle) {
+  const std::vector<Vec3> p = {{0, 0, 0}, {2, 0, 0}, {0, 1, 0}};
+  EXPECT_NEAR(area(p, convex_hull(p)), 2, 1e-12);
+}
+
+TEST(ConvexHull, CollinearAndCoincidentPointsHaveNoArea) {
+  const std::vector<Vec3> line = {{0, 0, 0}, {1, 1, 1}, {3, 3, 3}, {2, 2, 2}};
+  const ConvexHull h = convex_hull(line);
+  EXPECT_TRUE(h.triangles.empty());
+  EXPECT_TRUE(has(h, 0) && has(h, 2));
+  const std::vector<Vec3> point = {{1, 2, 3}, {1, 2, 3}, {1, 2, 3}, {1, 2, 3}, {1, 2, 3}};
+  EXPECT_TRUE(convex_hull(point).triangles.empty());
+  EXPECT_EQ(convex_hull(point).vertices.size(), 1u);
+  EXPECT_TRUE(convex_hull(std::vector<Vec3>{}).vertices.empty());
+}
+
+}  // namespace
+}  // namespace cc
