@@ -27,8 +27,8 @@ std::uint32_t morton(const Vec3& p, const Vec3& lo, const Vec3& hi) {
   std::uint32_t code = 0;
   for (int k = 0; k < 3; ++k) {
     const double extent = hi[k] - lo[k];
-    const double t = extent > 0 ? (p[k] - lo[k]) / extent : 0.0;
-    const auto cell = static_cast<std::uint32_t>(std::clamp(t * 1023.0, 0.0, 1023.0));
+    const double t = extent > 0 ? (p[k] - lo[k]) / extent : 0.0;  // NaN for an infinite extent
+    const auto cell = t >= 0 ? static_cast<std::uint32_t>(std::min(t * 1023.0, 1023.0)) : 0u;
     code |= spread(cell) << k;
   }
   return code;
@@ -70,7 +70,8 @@ LinkedTree bottom_up_tree(const Mesh& mesh) {
         if (paired[j]) continue;
         ++seen;
         const BV merged = Traits::merge(volumes[a], volumes[keyed[j].second]);
-        if (Traits::size(merged) < best_size) best_size = Traits::size(merged), best = j, best_volume = merged;
+        // The first candidate is taken even when sizes overflow to infinity and compare equal.
+        if (best == 0 || Traits::size(merged) < best_size) best_size = Traits::size(merged), best = j, best_volume = merged;
       }
       paired[i] = true;
       if (best == 0) {  // the last one left: it moves up a level alone
