@@ -81,6 +81,8 @@ namespace {
 template <class BV>
 constexpr bool kRefittable = !std::is_same_v<BV, Obb>;
 
+constexpr std::size_t kKeepWhole = 64;
+
 std::vector<Vec3> corners_of(const Aabb& b) {
   std::vector<Vec3> out;
   for (int i = 0; i < 8; ++i) out.push_back({(i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z});
@@ -122,13 +124,21 @@ Bvh<BV> fit(const Mesh& mesh, detail::Topology t) {
     n.left = t.nodes[i].left, n.right = t.nodes[i].right, n.first = t.nodes[i].first, n.count = t.nodes[i].count;
     std::vector<Vec3> candidates = n.leaf() ? vertices_of(n) : hull[n.left];
     if (!n.leaf()) candidates.insert(candidates.end(), hull[n.right].begin(), hull[n.right].end());
-    const ConvexHull h = convex_hull(candidates);
-    for (std::uint32_t v : h.vertices) hull[i].push_back(candidates[v]);
     if constexpr (std::is_same_v<BV, Obb>) {
+      const ConvexHull h = convex_hull(candidates);
+      for (std::uint32_t v : h.vertices) hull[i].push_back(candidates[v]);
       n.bv = fit_obb(obb_axes(candidates, h), vertices_of(n));
       for (const Vec3& c : corners(n.bv)) bvh.magnitude = std::max(bvh.magnitude, norm1(c));
     } else {
-      n.bv = n.leaf() ? Traits::fit(candidates) : Traits::merge(bvh.nodes[n.left].bv, bvh.nodes[n.right].bv);
+      // The exact update needs a superset of the hull's vertices: small sets are kept whole,
+      // larger ones pruned to their hull (Qhull costs more to start than a few points do).
+      if (candidates.size() <= kKeepWhole) {
+        hull[i] = std::move(candidates);
+      } else {
+        const ConvexHull h = convex_hull(candidates);
+        for (std::uint32_t v : h.vertices) hull[i].push_back(candidates[v]);
+      }
+      n.bv = n.leaf() ? Traits::fit(hull[i]) : Traits::merge(bvh.nodes[n.left].bv, bvh.nodes[n.right].bv);
     }
   }
   if constexpr (kRefittable<BV>) {

@@ -74,7 +74,8 @@ struct Bvh {
   /// The largest norm1 of any vertex, corner or hull point the tree stores (for error bounds).
   double magnitude = 0;
   /// Aabb and k-DOP trees only (empty for Obb): per node, the corners of its volume (for the
-  /// approximate update) and the vertices of the convex hull of its triangles (exact update).
+  /// approximate update) and points among its triangles' vertices that include every vertex
+  /// of their convex hull (for the exact update; all of them for small nodes).
   NodePoints corners, hull_points;
 };
 
