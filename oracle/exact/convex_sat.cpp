@@ -22,8 +22,12 @@ ExactShape::Interval ExactShape::project(const QVec3& axis) const {
 }
 
 ExactShape triangle_shape(const Vec3& p0, const Vec3& p1, const Vec3& p2, const std::string& name) {
+  return rational_triangle_shape(rational(p0), rational(p1), rational(p2), name);
+}
+
+ExactShape rational_triangle_shape(const QVec3& p0, const QVec3& p1, const QVec3& p2, const std::string& name) {
   ExactShape s;
-  s.vertices = {rational(p0), rational(p1), rational(p2)};
+  s.vertices = {p0, p1, p2};
   s.center = Rational(1, 3) * (s.vertices[0] + s.vertices[1] + s.vertices[2]);
   for (int i = 0; i < 3; ++i) {
     const QVec3 e = s.vertices[(i + 1) % 3] - s.vertices[i];

@@ -35,6 +35,7 @@ struct ExactShape {
 
 /// A triangle with vertices p0, p1, p2; its directions are its nonzero edges p1-p0, p2-p1, p0-p2.
 ExactShape triangle_shape(const Vec3& p0, const Vec3& p1, const Vec3& p2, const std::string& name);
+ExactShape rational_triangle_shape(const QVec3& p0, const QVec3& p1, const QVec3& p2, const std::string& name);
 
 /// The parallelepiped centre + sum_i u_i half[i] col_i, |u_i| <= 1; a direction per column with
 /// half[i] > 0. An axis-aligned box is the case of the identity.

@@ -8,6 +8,7 @@
 #include "oracle/exact/convex_sat.h"
 #include "oracle/exact/domain.h"
 #include "oracle/exact/exact_kdop_kdop.h"
+#include "oracle/exact/exact_meshes.h"
 #include "oracle/exact/exact_ray_aabb.h"
 #include "oracle/exact/exact_reference.h"
 #include "oracle/exact/judges.h"
@@ -205,6 +206,31 @@ struct Explain {
       }
     }
     e.deciding = "the smallest overlap over the slabs (exact k-DOPs)";
+    return e;
+  }
+  Explanation operator()(const harness::MeshMeshInput& in) const { return meshes(in.meshes); }
+  Explanation operator()(const harness::MeshMeshFirstInput& in) const { return meshes(in.meshes); }
+  // The pair of triangles nearest the boundary, explained as a tri_tri query.
+  static Explanation meshes(const harness::MeshPair& m) {
+    const harness::ExactVerdict v = judge_meshes(m);
+    const harness::PairMargin* nearest = nullptr;
+    for (const harness::PairMargin& p : v.pair_margins) {
+      if (nearest == nullptr || std::fabs(p.margin) < std::fabs(nearest->margin)) nearest = &p;
+    }
+    if (nearest == nullptr) {
+      Explanation e;
+      e.title = "no pair near contact";
+      e.deciding = "every pair's bounding boxes are apart by more than 2^-20 of the scale";
+      e.deciding_value = v.unlisted_margin;
+      return e;
+    }
+    const auto [a, b] = placed_triangles(m, nearest->pair);
+    Explanation e = explain_polytopes(a, b);
+    const std::string pair = "(" + std::to_string(nearest->pair.first) + ", " + std::to_string(nearest->pair.second) + ")";
+    e.title = "pair " + pair + ", the nearest to contact: " + e.title;
+    e.facts.insert(e.facts.begin(), {{"colliding pairs", std::to_string(v.answer.pairs.size())},
+                                     {"pairs near contact", std::to_string(v.pair_margins.size())},
+                                     {"explained pair", pair}});
     return e;
   }
   template <class In>

@@ -16,5 +16,7 @@ ExactVerdict judge(const harness::ObbObbInput& in);
 ExactVerdict judge(const harness::TriAabbInput& in);
 ExactVerdict judge(const harness::TriObbInput& in);
 ExactVerdict judge(const harness::TriTriInput& in);
+ExactVerdict judge(const harness::MeshMeshInput& in);
+ExactVerdict judge(const harness::MeshMeshFirstInput& in);
 
 }  // namespace cc::exact

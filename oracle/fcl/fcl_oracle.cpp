@@ -47,6 +47,15 @@ struct Ask {
   std::vector<Opinion> operator()(const harness::TriTriInput& in) const {
     return {guarded("fcl.Intersect::intersect_Triangle", fcl_intersect_triangle, in)};
   }
+  std::vector<Opinion> operator()(const harness::MeshMeshInput& in) const { return meshes(in.meshes, false); }
+  std::vector<Opinion> operator()(const harness::MeshMeshFirstInput& in) const { return meshes(in.meshes, true); }
+  static std::vector<Opinion> meshes(const harness::MeshPair& m, bool first_only) {
+    std::vector<Opinion> out;
+    for (const std::string& party : fcl_mesh_parties()) {
+      out.push_back(guarded(party, [&](const harness::MeshPair& x) { return fcl_collide_meshes(party, x, first_only); }, m));
+    }
+    return out;
+  }
 };
 
 }  // namespace
@@ -69,6 +78,8 @@ std::vector<std::string> FclSecondOpinion::parties(QueryKind kind) const {
     case QueryKind::tri_aabb:
     case QueryKind::tri_obb: return {"fcl.shapeTriangleIntersect"};
     case QueryKind::tri_tri: return {"fcl.Intersect::intersect_Triangle"};
+    case QueryKind::mesh_mesh:
+    case QueryKind::mesh_mesh_first: return fcl_mesh_parties();
   }
   return {};
 }

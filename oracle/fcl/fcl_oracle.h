@@ -15,6 +15,8 @@ namespace cc::fcl_oracle {
 ///   tri_aabb       fcl.shapeTriangleIntersect (GJKSolver_libccd, box at the AABB's centre)
 ///   tri_obb        fcl.shapeTriangleIntersect
 ///   tri_tri        fcl.Intersect::intersect_Triangle
+///   mesh_mesh      fcl.BVHModel<OBBd>, <OBBRSSd>, <AABBd>, <KDOPd<18>> (collide with unlimited
+///                  contacts; mesh_mesh_first: one contact)
 /// A C++ exception thrown by FCL or libccd is caught and reported as a failed opinion.
 class FclSecondOpinion final : public harness::SecondOpinion {
  public:

@@ -24,6 +24,10 @@ Opinion fcl_shape_triangle(const harness::TriAabbInput& in);
 Opinion fcl_shape_triangle(const harness::TriObbInput& in);
 Opinion fcl_intersect_triangle(const harness::TriTriInput& in);
 
+// FCL's BVHModel collision on meshes: one party per volume type, answering with pairs.
+std::vector<std::string> fcl_mesh_parties();
+Opinion fcl_collide_meshes(const std::string& party, const harness::MeshPair& m, bool first_only);
+
 /// True when FCL's collision matrix (libccd solver) has the shape pairs used above.
 bool fcl_supports_used_pairs();
 

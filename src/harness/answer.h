@@ -1,16 +1,23 @@
 // What a party says about one query.
 #pragma once
 
+#include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace cc::harness {
 
+/// A pair of triangles of two meshes: (face of a, face of b).
+using FacePair = std::pair<std::uint32_t, std::uint32_t>;
+
 /// The answer to a query: whether the shapes meet, and for some queries parameters of the
-/// contact. ray_aabb: {t_enter, t_exit} when hit.
+/// contact. ray_aabb: {t_enter, t_exit} when hit. Mesh queries: the colliding pairs, sorted
+/// (mesh_mesh_first: the one pair found).
 struct Answer {
   bool hit = false;
   std::vector<double> params;
+  std::vector<FacePair> pairs;
   friend bool operator==(const Answer&, const Answer&) = default;
 };
 

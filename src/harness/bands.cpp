@@ -36,6 +36,12 @@ Band library_band(QueryKind kind) {
       return {0x1p-44, BandSides::conservative, 0,
               "every axis is certified against 5u |axis|_1 of the coordinates, measured in the conditioning "
               "of the axis (cross products of rounded edges)"};
+    case QueryKind::mesh_mesh:
+    case QueryKind::mesh_mesh_first:
+      return {0x1p-40, BandSides::two_sided, 0,
+              "b's triangles move into a's frame in floating point (2^-49 of the scale per coordinate), which "
+              "can part touching triangles, then tri_tri's 2^-44; 2^-40 leaves room for the conditioning of "
+              "the deciding axis"};
   }
   throw std::out_of_range("no such query kind");
 }
@@ -66,6 +72,15 @@ constexpr PartyBand kPartyBands[] = {
      {0x1p-18, BandSides::two_sided, 0, "libccd MPR with FCL's gjk_default_tolerance 1e-6, absolute"}},
     {"fcl.Intersect::intersect_Triangle",
      {0x1p-40, BandSides::two_sided, 0, "17-axis SAT in floating point with no tolerance: rounding only"}},
+    {"fcl.BVHModel<OBBd>",
+     {0x1p-38, BandSides::two_sided, 0,
+      "leaves by intersect_Triangle (2^-40) on triangles moved by FCL's relative transform; the OBB tests "
+      "only prune (|R_ij| + 1e-6)"}},
+    {"fcl.BVHModel<OBBRSSd>", {0x1p-38, BandSides::two_sided, 0, "as BVHModel<OBBd>"}},
+    {"fcl.BVHModel<AABBd>",
+     {0x1p-38, BandSides::two_sided, 0,
+      "both meshes moved into the world frame in floating point and refitted, then intersect_Triangle (2^-40)"}},
+    {"fcl.BVHModel<KDOPd<18>>", {0x1p-38, BandSides::two_sided, 0, "as BVHModel<AABBd>"}},
 };
 
 }  // namespace

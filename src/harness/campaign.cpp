@@ -95,7 +95,7 @@ bool is_finding(CaseClass c) {
     slot.kind = static_cast<int>(kind);
     slot.case_index = index;
     slot.started_ns = start;
-    const Input input = campaign_case(options.seed, kind, index, options.out_of_contract_percent);
+    const Input input = campaign_case(options.seed, kind, index, options.out_of_contract_percent, options.mesh_folder);
 
     Evaluation e;
     slot.phase = in_library;
@@ -126,9 +126,11 @@ struct Worker {
 
 }  // namespace
 
-Input campaign_case(std::uint64_t seed, QueryKind kind, std::uint64_t case_index, int out_of_contract_percent) {
+Input campaign_case(std::uint64_t seed, QueryKind kind, std::uint64_t case_index, int out_of_contract_percent,
+                    const std::filesystem::path& mesh_folder) {
   RandomChoices choices(mix_seed(mix_seed(seed, static_cast<std::uint64_t>(kind)), case_index));
   GenerateOptions options;
+  options.mesh_folder = mesh_folder;
   options.out_of_contract = choices.chance(out_of_contract_percent);
   return generate(kind, choices, options);
 }
@@ -180,7 +182,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
     Finding f;
     f.kind = kind;
     f.case_index = index;
-    f.input = campaign_case(options.seed, kind, index, options.out_of_contract_percent);
+    f.input = campaign_case(options.seed, kind, index, options.out_of_contract_percent, options.mesh_folder);
     f.crash = crash;
     if (crash.empty()) {
       f.evaluation = evaluate(f.input, *exact, second.get());  // it returned in the worker

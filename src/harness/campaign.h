@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
@@ -28,6 +29,7 @@ struct CampaignOptions {
   int workers = 2;
   double case_timeout_seconds = 20;  // a case running longer is a hang
   int out_of_contract_percent = 10;  // share of cases generated outside the library's domain
+  std::filesystem::path mesh_folder = "corpora/meshes";  // FCL's test meshes, for the mesh queries
   std::function<void(const std::string&)> progress;  // called about once a second
 };
 
@@ -56,7 +58,8 @@ struct CampaignResult {
 };
 
 /// The case with this index in a campaign of this seed, exactly as the campaign generates it.
-Input campaign_case(std::uint64_t seed, QueryKind kind, std::uint64_t case_index, int out_of_contract_percent);
+Input campaign_case(std::uint64_t seed, QueryKind kind, std::uint64_t case_index, int out_of_contract_percent,
+                    const std::filesystem::path& mesh_folder = "corpora/meshes");
 
 CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracles);
 

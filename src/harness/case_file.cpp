@@ -59,15 +59,41 @@ std::uint64_t unsigned_from(const Json& j, const std::string& pointer) {
   if (!j.is_number_unsigned()) throw FormatError(pointer, "expected a non-negative integer");
   return j.get<std::uint64_t>();
 }
-Answer answer_from(const Json& j, const std::string& pointer) {
-  Answer a;
+std::vector<FacePair> pairs_from(const Json& j, const std::string& pointer) {
+  if (!j.is_array()) throw FormatError(pointer, "expected an array of [face of a, face of b] pairs");
+  std::vector<FacePair> out;
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string p = pointer + "/" + std::to_string(i);
+    if (!j[i].is_array() || j[i].size() != 2 || !j[i][0].is_number_unsigned() || !j[i][1].is_number_unsigned()) {
+      throw FormatError(p, "expected [face of a, face of b]");
+    }
+    out.emplace_back(j[i][0].get<std::uint32_t>(), j[i][1].get<std::uint32_t>());
+  }
+  return out;
+}
+// hit, and the parameters or pairs when there are any.
+void read_answer(const Json& j, const std::string& pointer, Answer& a) {
   a.hit = boolean(member(j, pointer, "hit"), pointer + "/hit");
   if (j.contains("params")) a.params = numbers_from(j["params"], pointer + "/params");
+  if (j.contains("pairs")) a.pairs = pairs_from(j["pairs"], pointer + "/pairs");
+}
+Answer answer_from(const Json& j, const std::string& pointer) {
+  Answer a;
+  read_answer(j, pointer, a);
   return a;
 }
-Json answer_json(const Answer& a) {
-  Json j = {{"hit", a.hit}};
+void write_answer(const Answer& a, Json& j) {
+  j["hit"] = a.hit;
   if (!a.params.empty()) j["params"] = numbers(a.params);
+  if (!a.pairs.empty()) {
+    Json pairs = Json::array();
+    for (const auto& [i, k] : a.pairs) pairs.push_back(Json::array({i, k}));
+    j["pairs"] = pairs;
+  }
+}
+Json answer_json(const Answer& a) {
+  Json j = Json::object();
+  write_answer(a, j);
   return j;
 }
 
@@ -105,7 +131,7 @@ Json case_to_json(const Case& c) {
   Json opinions = Json::array();
   for (const Opinion& o : c.opinions) {
     Json j = {{"party", o.party}, {"status", status_name(o.status)}};
-    if (o.status == Opinion::Status::answered) j["hit"] = o.answer.hit;
+    if (o.status == Opinion::Status::answered) write_answer(o.answer, j);
     if (!o.detail.empty()) j["detail"] = o.detail;
     opinions.push_back(j);
   }
@@ -128,7 +154,7 @@ Json case_to_json(const Case& c) {
           {"provenance", provenance}};
 }
 
-Case case_from_json(const Json& json) {
+Case case_from_json(const Json& json, const std::filesystem::path& case_dir) {
   if (!json.is_object()) throw FormatError("", "expected a JSON object");
   const auto version = member(json, "", "version");
   if (!version.is_number_integer()) throw FormatError("/version", "expected an integer");
@@ -142,7 +168,7 @@ Case case_from_json(const Json& json) {
   if (!kind) throw FormatError("/query", "unknown query kind \"" + query + "\"");
 
   Case c;
-  c.input = input_from_json(*kind, member(json, "", "inputs"), "/inputs");
+  c.input = input_from_json(*kind, member(json, "", "inputs"), "/inputs", case_dir);
   c.note = json.contains("note") ? text(json["note"], "/note") : "";
   const std::string cls = text(member(json, "", "class"), "/class");
   const auto parsed = case_class_named(cls);
@@ -175,7 +201,7 @@ Case case_from_json(const Json& json) {
     const std::string status = text(member(opinions[i], p, "status"), p + "/status");
     if (status == "answered") {
       o.status = Opinion::Status::answered;
-      o.answer.hit = boolean(member(opinions[i], p, "hit"), p + "/hit");
+      read_answer(opinions[i], p, o.answer);
     } else if (status == "n/a") {
       o.status = Opinion::Status::not_applicable;
     } else if (status == "failed") {
@@ -214,7 +240,7 @@ Case read_case_file(const std::filesystem::path& path) {
     throw CaseFileError(file, line_and_column(content, e.byte == 0 ? 0 : e.byte - 1), message);
   }
   try {
-    return case_from_json(json);
+    return case_from_json(json, path.parent_path());
   } catch (const FormatError& e) {
     throw CaseFileError(file, e.pointer().empty() ? "/" : e.pointer(), e.what());
   }

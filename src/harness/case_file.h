@@ -49,8 +49,9 @@ class CaseFileError : public std::runtime_error {
 };
 
 Json case_to_json(const Case& c);
-/// Throws FormatError (with a JSON pointer) for a document that is not a valid case.
-Case case_from_json(const Json& json);
+/// Throws FormatError (with a JSON pointer) for a document that is not a valid case. Mesh files
+/// are looked for from case_dir (see find_mesh_file).
+Case case_from_json(const Json& json, const std::filesystem::path& case_dir = {});
 
 /// Reads a case file; throws CaseFileError for an unreadable file, a syntax error, an unknown
 /// query kind, a missing field, a number that does not parse, or a newer format version.

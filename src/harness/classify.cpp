@@ -1,11 +1,19 @@
 #include "harness/classify.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <sstream>
 
 #include "harness/bands.h"
 
 namespace cc::harness {
+
+double ExactVerdict::margin_of(const FacePair& pair) const {
+  const auto it = std::lower_bound(pair_margins.begin(), pair_margins.end(), pair,
+                                   [](const PairMargin& m, const FacePair& p) { return m.pair < p; });
+  return it != pair_margins.end() && it->pair == pair ? it->margin : unlisted_margin;
+}
 
 std::string_view to_string(CaseClass c) {
   switch (c) {
@@ -58,7 +66,68 @@ bool params_agree(const Band& band, const Answer& said, const Answer& exact) {
   return true;
 }
 
-PartyStanding judge_party(std::string party, const Band& band, const Answer& said, const ExactVerdict& exact) {
+std::string pair_text(const FacePair& p) {
+  std::ostringstream s;
+  s << '(' << p.first << ", " << p.second << ')';
+  return s.str();
+}
+
+// Mesh queries: every pair where the party and the exact answer differ is judged on its own
+// margin. all_pairs: the pairs in one set and not the other. first_hit: the pair found must
+// collide; a miss must leave only pairs within the band.
+PartyStanding judge_pairs(std::string party, const Band& band, const Answer& said, const ExactVerdict& exact,
+                          bool first_hit) {
+  struct Difference {
+    FacePair pair;
+    bool says_hit;
+  };
+  std::vector<Difference> differences;
+  const auto& truth = exact.answer.pairs;
+  const auto collides = [&](const FacePair& p) { return std::binary_search(truth.begin(), truth.end(), p); };
+  if (!first_hit) {
+    std::vector<FacePair> only_said, only_exact;
+    std::set_difference(said.pairs.begin(), said.pairs.end(), truth.begin(), truth.end(), std::back_inserter(only_said));
+    std::set_difference(truth.begin(), truth.end(), said.pairs.begin(), said.pairs.end(), std::back_inserter(only_exact));
+    for (const FacePair& p : only_said) differences.push_back({p, true});
+    for (const FacePair& p : only_exact) differences.push_back({p, false});
+  } else if (said.hit) {
+    if (said.pairs.empty()) return {std::move(party), Standing::wrong, "says hit without naming a pair"};
+    if (!collides(said.pairs[0])) differences.push_back({said.pairs[0], true});
+  } else {
+    for (const FacePair& p : truth) differences.push_back({p, false});
+  }
+  PartyStanding standing{std::move(party), Standing::right, ""};
+  int wrong = 0, in_band = 0;
+  std::string first_wrong, first_in_band;
+  for (const Difference& d : differences) {
+    const double m = exact.margin_of(d.pair);
+    std::ostringstream s;
+    s << "says " << pair_text(d.pair) << (d.says_hit ? " collides" : " does not collide") << ", exact "
+      << (d.says_hit ? "apart" : "colliding") << " at margin " << m;
+    if (within_band(band, d.says_hit, m)) {
+      if (in_band++ == 0) first_in_band = s.str();
+    } else if (wrong++ == 0) {
+      first_wrong = s.str();
+    }
+  }
+  const auto more = [](int n) {
+    std::ostringstream s;
+    if (n > 1) s << " (and " << n - 1 << " more pairs)";
+    return s.str();
+  };
+  if (wrong > 0) {
+    standing.standing = Standing::wrong;
+    standing.why = first_wrong + more(wrong);
+  } else if (in_band > 0) {
+    standing.standing = Standing::within_band;
+    standing.why = first_in_band + more(in_band);
+  }
+  return standing;
+}
+
+PartyStanding judge_party(std::string party, const Band& band, const Answer& said, const ExactVerdict& exact,
+                          QueryKind kind) {
+  if (is_mesh_query(kind)) return judge_pairs(std::move(party), band, said, exact, kind == QueryKind::mesh_mesh_first);
   PartyStanding p{std::move(party), Standing::right, ""};
   if (said.hit != exact.answer.hit) {
     p.standing = within_band(band, said.hit, exact.margin) ? Standing::within_band : Standing::wrong;
@@ -96,7 +165,7 @@ Verdict classify(QueryKind kind, const Answer& library, const ExactVerdict& exac
     return v;
   }
 
-  v.parties.push_back(judge_party("library", library_band(kind), library, exact));
+  v.parties.push_back(judge_party("library", library_band(kind), library, exact, kind));
   bool any_wrong = false, any_failed = false, any_band = v.parties[0].standing == Standing::within_band;
   for (const Opinion& o : opinions) {
     if (o.status == Opinion::Status::not_applicable) {
@@ -110,7 +179,7 @@ Verdict classify(QueryKind kind, const Answer& library, const ExactVerdict& exac
     }
     Band band = party_band(o.party);
     band.param_width = 0;  // second opinions give no parameters
-    v.parties.push_back(judge_party(o.party, band, o.answer, exact));
+    v.parties.push_back(judge_party(o.party, band, o.answer, exact, kind));
     any_wrong |= v.parties.back().standing == Standing::wrong;
     any_band |= v.parties.back().standing == Standing::within_band;
   }

@@ -88,6 +88,27 @@ struct Of {
     f.degenerate = degenerate(in.a) || degenerate(in.b);
     return f;
   }
+  Features operator()(const MeshMeshInput& in) const { return of(in.meshes); }
+  Features operator()(const MeshMeshFirstInput& in) const { return of(in.meshes); }
+
+  // Parallel: the meshes' frames are aligned up to a permutation and flips of the axes (the
+  // relative rotation is a signed permutation), so axis-aligned faces of one are parallel to
+  // those of the other. Degenerate: a face of either mesh is a segment or a point.
+  static Features of(const MeshPair& m) {
+    Features f;
+    Mat3 relative_rotation;
+    for (int c = 0; c < 3; ++c) relative_rotation.col[c] = transpose_times(m.pose_a.rotation, m.pose_b.rotation.col[c]);
+    f.parallel = true;
+    for (const Vec3& col : relative_rotation.col) {
+      int units = 0, zeros = 0;
+      for (int k = 0; k < 3; ++k) units += std::fabs(col[k]) == 1, zeros += col[k] == 0;
+      f.parallel &= units == 1 && zeros == 2;
+    }
+    for (const MeshRef* r : {&m.a, &m.b}) {
+      for (std::size_t i = 0; i < r->mesh->size() && !f.degenerate; ++i) f.degenerate = degenerate(r->mesh->triangle(i));
+    }
+    return f;
+  }
 };
 
 }  // namespace

@@ -1,7 +1,10 @@
 #include "harness/fuzz_record.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+
+#include "harness/rotation.h"
 
 namespace cc::harness {
 namespace {
@@ -40,8 +43,64 @@ struct Writer {
   void obb(const Obb& b) { vec3(b.center), vec3(b.half), vec3(b.axes.col[0]), vec3(b.axes.col[1]), vec3(b.axes.col[2]); }
 };
 
+// Mesh queries: the header bytes after the tag.
+struct MeshHeader {
+  std::size_t triangles_a = 1, triangles_b = 1;  // 1 + byte % 4
+  std::size_t rotation = 0;                      // pose_b's rotation: table_rotation(byte % 32)
+  std::uint8_t library = 0;                      // bv, strategy, update, descent bits
+};
+constexpr std::size_t kMeshHeaderBytes = 4;
+constexpr std::size_t kMaxSoup = 4;
+
+LibraryBvh library_of(std::uint8_t bits) {
+  LibraryBvh l;
+  l.bv = kAllBvTypes[bits & 7];
+  l.build.strategy = static_cast<BuildStrategy>(((bits >> 3) & 3) % 3);
+  l.update = (bits & 0x20) ? BvUpdate::exact : BvUpdate::approximate;
+  l.descent = (bits & 0x40) ? Descent::larger : Descent::first_model;
+  return l;
+}
+
+std::uint8_t library_bits(const LibraryBvh& l) {
+  std::uint8_t bits = 0;
+  for (std::uint8_t i = 0; i < 8; ++i) bits = kAllBvTypes[i] == l.bv ? i : bits;
+  bits |= static_cast<std::uint8_t>(static_cast<int>(l.build.strategy) << 3);
+  if (l.update == BvUpdate::exact) bits |= 0x20;
+  if (l.descent == Descent::larger) bits |= 0x40;
+  return bits;
+}
+
+MeshPair mesh_pair(const MeshHeader& h, Reader& r) {
+  MeshPair m;
+  m.pose_b.rotation = table_rotation(h.rotation);
+  m.pose_b.translation = r.vec3();
+  const auto soup = [&r](std::size_t n) {
+    Mesh mesh;
+    for (std::uint32_t i = 0; i < n; ++i) {
+      const Triangle t = r.triangle();
+      mesh.vertices.insert(mesh.vertices.end(), t.v.begin(), t.v.end());
+      mesh.faces.push_back({3 * i, 3 * i + 1, 3 * i + 2});
+    }
+    return triangles_mesh(std::move(mesh));
+  };
+  m.a = soup(h.triangles_a);
+  m.b = soup(h.triangles_b);
+  m.library = library_of(h.library);
+  return m;
+}
+
+MeshHeader mesh_header_of(const MeshPair& m) {
+  MeshHeader h;
+  h.triangles_a = std::clamp<std::size_t>(m.a.mesh->size(), 1, kMaxSoup);
+  h.triangles_b = std::clamp<std::size_t>(m.b.mesh->size(), 1, kMaxSoup);
+  h.rotation = table_rotation_index(m.pose_b.rotation).value_or(0);
+  h.library = library_bits(m.library);
+  return h;
+}
+
 // The input of a given kind (and k, point counts) made from record values.
-Input build(QueryKind kind, int k, std::size_t na, std::size_t nb, std::uint8_t flags, std::span<const double> values) {
+Input build(QueryKind kind, int k, std::size_t na, std::size_t nb, std::uint8_t flags, std::span<const double> values,
+            const MeshHeader& mesh = {}) {
   Reader r{values};
   switch (kind) {
     case QueryKind::ray_aabb: {
@@ -97,6 +156,8 @@ Input build(QueryKind kind, int k, std::size_t na, std::size_t nb, std::uint8_t 
       in.b = r.triangle();
       return in;
     }
+    case QueryKind::mesh_mesh: return MeshMeshInput{mesh_pair(mesh, r)};
+    case QueryKind::mesh_mesh_first: return MeshMeshFirstInput{mesh_pair(mesh, r)};
   }
   return {};
 }
@@ -119,6 +180,15 @@ struct Values {
   void operator()(const TriAabbInput& in) { w.triangle(in.tri), w.vec3(in.box.lo), w.vec3(in.box.hi); }
   void operator()(const TriObbInput& in) { w.triangle(in.tri), w.obb(in.box); }
   void operator()(const TriTriInput& in) { w.triangle(in.a), w.triangle(in.b); }
+  void operator()(const MeshMeshInput& in) { meshes(in.meshes); }
+  void operator()(const MeshMeshFirstInput& in) { meshes(in.meshes); }
+  void meshes(const MeshPair& m) {
+    w.vec3(m.pose_b.translation);
+    for (const MeshRef* r : {&m.a, &m.b}) {
+      const std::size_t n = std::clamp<std::size_t>(r->mesh->size(), 1, kMaxSoup);
+      for (std::size_t i = 0; i < n; ++i) w.triangle(i < r->mesh->size() ? r->mesh->triangle(i) : Triangle{});
+    }
+  }
 };
 
 int k_index(int k) {
@@ -140,7 +210,8 @@ Input with_record_values(const Input& shape, std::span<const double> values) {
   int k = 18;
   std::size_t na = 0, nb = 0;
   if (const auto* kd = std::get_if<KdopKdopInput>(&shape)) k = kd->k, na = kd->a.size(), nb = kd->b.size();
-  return build(kind_of(shape), k, na, nb, 0, values);  // infinite ray ends are values here
+  const MeshPair* m = meshes_of(shape);
+  return build(kind_of(shape), k, na, nb, 0, values, m ? mesh_header_of(*m) : MeshHeader{});  // ray ends are values
 }
 
 std::vector<std::uint8_t> encode_record(const Input& input) {
@@ -157,6 +228,11 @@ std::vector<std::uint8_t> encode_record(const Input& input) {
     bytes.push_back(static_cast<std::uint8_t>(kd->a.empty() ? 0 : (kd->a.size() - 1) % 8));
     bytes.push_back(static_cast<std::uint8_t>(kd->b.empty() ? 0 : (kd->b.size() - 1) % 8));
   }
+  if (const MeshPair* m = meshes_of(input)) {
+    const MeshHeader h = mesh_header_of(*m);
+    bytes.insert(bytes.end(), {static_cast<std::uint8_t>(h.triangles_a - 1), static_cast<std::uint8_t>(h.triangles_b - 1),
+                               static_cast<std::uint8_t>(h.rotation), h.library});
+  }
   for (double x : record_values(input)) {
     std::uint64_t bits = 0;
     std::memcpy(&bits, &x, sizeof bits);
@@ -171,6 +247,7 @@ Input decode_record(QueryKind kind, std::span<const std::uint8_t> bytes) {
   std::size_t offset = 1;
   int k = 18;
   std::size_t na = 0, nb = 0, count = 0;
+  MeshHeader mesh;
   switch (kind) {
     case QueryKind::ray_aabb: count = 14; break;
     case QueryKind::sphere_sphere: count = 8; break;
@@ -186,6 +263,15 @@ Input decode_record(QueryKind kind, std::span<const std::uint8_t> bytes) {
     case QueryKind::tri_aabb: count = 15; break;
     case QueryKind::tri_obb: count = 24; break;
     case QueryKind::tri_tri: count = 18; break;
+    case QueryKind::mesh_mesh:
+    case QueryKind::mesh_mesh_first:
+      mesh.triangles_a = 1 + byte(1) % kMaxSoup;
+      mesh.triangles_b = 1 + byte(2) % kMaxSoup;
+      mesh.rotation = byte(3) % 32;
+      mesh.library = byte(4);
+      offset = 1 + kMeshHeaderBytes;
+      count = 3 + 9 * (mesh.triangles_a + mesh.triangles_b);
+      break;
   }
   std::vector<double> values(count, 0.0);
   for (std::size_t i = 0; i < count; ++i) {
@@ -193,7 +279,7 @@ Input decode_record(QueryKind kind, std::span<const std::uint8_t> bytes) {
     for (int b = 0; b < 8; ++b) bits |= static_cast<std::uint64_t>(byte(offset + 8 * i + static_cast<std::size_t>(b))) << (8 * b);
     std::memcpy(&values[i], &bits, sizeof bits);
   }
-  return build(kind, k, na, nb, flags, values);
+  return build(kind, k, na, nb, flags, values, mesh);
 }
 
 }  // namespace cc::harness

@@ -4,13 +4,19 @@
 //   byte 0      tag: bits 0-3 the query kind's number (informative), bits 4-7 flags
 //   (kdop_kdop) byte 1: k (index into 6 14 16 18 24 26, modulo 6), byte 2: points in a (1 + b % 8),
 //               byte 3: points in b (1 + b % 8)
+//   (mesh_*)    byte 1: triangles of a (1 + b % 4), byte 2: triangles of b (1 + b % 4), byte 3: the
+//               rotation of b's pose (table_rotation(b % 32); a's pose is the identity), byte 4:
+//               the library's hierarchy (bits 0-2 bv type, 3-4 build strategy % 3, 5 exact
+//               update, 6 larger-first descent)
 //   then        little-endian IEEE doubles, in the order of the kind's fields (below)
 //
 // Fields: ray_aabb origin, dir, tmin, tmax, lo, hi (flag bit 4: tmin = -inf, bit 5: tmax = +inf);
 // sphere_sphere a.center, a.radius, b.center, b.radius; aabb_aabb a.lo, a.hi, b.lo, b.hi;
 // kdop_kdop the points of a, then of b; obb_obb a.center, a.half, a.axes (by columns), the same
 // for b; tri_aabb the 3 vertices, lo, hi; tri_obb the 3 vertices, center, half, axes; tri_tri
-// the 3 vertices of a, then of b. A shorter input reads as if padded with zero bytes.
+// the 3 vertices of a, then of b; mesh_* b's translation, then the triangles of a, then of b
+// (small soups; a rotation not in the table is recorded as the identity). A shorter input reads
+// as if padded with zero bytes.
 #pragma once
 
 #include <cstdint>

@@ -18,6 +18,8 @@ Input generate(QueryKind kind, Choices& choices, const GenerateOptions& options)
     case QueryKind::tri_aabb: return detail::generate_tri_aabb(values, options);
     case QueryKind::tri_obb: return detail::generate_tri_obb(values, options);
     case QueryKind::tri_tri: return detail::generate_tri_tri(values, options);
+    case QueryKind::mesh_mesh: return MeshMeshInput{detail::generate_meshes(values, options)};
+    case QueryKind::mesh_mesh_first: return MeshMeshFirstInput{detail::generate_meshes(values, options)};
   }
   return {};
 }

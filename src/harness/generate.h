@@ -3,6 +3,8 @@
 // configurations, and the extreme values of ValueSource.
 #pragma once
 
+#include <filesystem>
+
 #include "harness/choices.h"
 #include "harness/input.h"
 
@@ -12,6 +14,9 @@ struct GenerateOptions {
   /// Also NaN, infinities and shapes outside the library's domains (negative radii, inverted
   /// boxes, non-orthonormal axes).
   bool out_of_contract = false;
+  /// Where FCL's test meshes (env.obj, rob.obj) are, for the mesh queries; without them those
+  /// draw procedural meshes only.
+  std::filesystem::path mesh_folder = "corpora/meshes";
 };
 
 Input generate(QueryKind kind, Choices& choices, const GenerateOptions& options = {});

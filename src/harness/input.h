@@ -9,6 +9,7 @@
 #include "collide/ray_aabb.h"
 #include "collide/sphere.h"
 #include "collide/triangle.h"
+#include "harness/mesh_query.h"
 #include "harness/query_kind.h"
 
 namespace cc::harness {
@@ -51,8 +52,26 @@ struct TriTriInput {
   friend bool operator==(const TriTriInput&, const TriTriInput&) = default;
 };
 
+/// All colliding triangle pairs of two placed meshes.
+struct MeshMeshInput {
+  MeshPair meshes;
+  friend bool operator==(const MeshMeshInput&, const MeshMeshInput&) = default;
+};
+/// Whether two placed meshes collide, and one colliding pair if they do.
+struct MeshMeshFirstInput {
+  MeshPair meshes;
+  friend bool operator==(const MeshMeshFirstInput&, const MeshMeshFirstInput&) = default;
+};
+
 using Input = std::variant<RayAabbInput, SphereSphereInput, AabbAabbInput, KdopKdopInput, ObbObbInput, TriAabbInput,
-                           TriObbInput, TriTriInput>;
+                           TriObbInput, TriTriInput, MeshMeshInput, MeshMeshFirstInput>;
+
+/// The two meshes of a mesh query; nothing for other kinds.
+inline const MeshPair* meshes_of(const Input& input) {
+  if (const auto* in = std::get_if<MeshMeshInput>(&input)) return &in->meshes;
+  if (const auto* in = std::get_if<MeshMeshFirstInput>(&input)) return &in->meshes;
+  return nullptr;
+}
 
 inline QueryKind kind_of(const Input& input) { return static_cast<QueryKind>(input.index()); }
 

@@ -1,7 +1,9 @@
 #include "harness/input_json.h"
 
 #include "collide/kdop.h"
+#include "harness/mesh_files.h"
 #include "harness/number_text.h"
+#include "harness/obj_file.h"
 
 namespace cc::harness {
 
@@ -62,6 +64,105 @@ class Reader {
     const Reader r = object(name);
     return {r.vec3("center"), r.number("radius")};
   }
+  std::string text(const std::string& name) const {
+    const Json& j = member(name);
+    if (!j.is_string()) throw FormatError(path(name), "expected a string");
+    return j.get<std::string>();
+  }
+  std::int64_t integer(const std::string& name) const {
+    const Json& j = member(name);
+    if (!j.is_number_integer()) throw FormatError(path(name), "expected an integer");
+    return j.get<std::int64_t>();
+  }
+  bool has(const std::string& name) const { return json_.contains(name); }
+  // A name from a fixed set (an enum's to_string).
+  template <class E, std::size_t N>
+  E choice(const std::string& name, const E (&options)[N]) const {
+    const std::string t = text(name);
+    std::string known;
+    for (E e : options) {
+      if (to_string(e) == t) return e;
+      known += (known.empty() ? "" : ", ") + std::string(to_string(e));
+    }
+    throw FormatError(path(name), "\"" + t + "\" is not one of " + known);
+  }
+  RigidTransform pose(const std::string& name) const {
+    const Reader r = object(name);
+    const std::vector<Vec3> rows = r.points("rotation");
+    if (rows.size() != 3) throw FormatError(r.path("rotation"), "expected 3 rows");
+    RigidTransform t;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) t.rotation(i, j) = rows[i][j];
+    }
+    t.translation = r.vec3("translation");
+    return t;
+  }
+  MeshRef mesh(const std::string& name, const std::filesystem::path& case_dir) const {
+    const Reader r = object(name);
+    if (r.has("file")) {
+      MeshRef m;
+      m.source = MeshRef::Source::file;
+      m.file = r.text("file");
+      const auto found = find_mesh_file(m.file, case_dir);
+      if (!found) throw FormatError(r.path("file"), "mesh file \"" + m.file + "\" not found next to the case or in a folder above it");
+      try {
+        m.mesh = load_mesh_file(*found);
+      } catch (const MeshFileError& e) {
+        throw FormatError(r.path("file"), e.what());
+      }
+      return m;
+    }
+    if (r.has("procedural")) {
+      static constexpr ProceduralMesh::Shape kShapes[] = {ProceduralMesh::Shape::sphere, ProceduralMesh::Shape::torus,
+                                                          ProceduralMesh::Shape::terrain, ProceduralMesh::Shape::plate,
+                                                          ProceduralMesh::Shape::soup};
+      ProceduralMesh recipe;
+      recipe.shape = r.choice("procedural", kShapes);
+      recipe.seed = static_cast<std::uint64_t>(r.integer("seed"));
+      recipe.resolution = static_cast<int>(r.integer("resolution"));
+      recipe.size = r.number("size");
+      recipe.thickness = r.has("thickness") ? r.number("thickness") : 0.0;
+      recipe.degenerate_percent = r.has("degenerate_percent") ? static_cast<int>(r.integer("degenerate_percent")) : 0;
+      return procedural_mesh(recipe);
+    }
+    if (r.has("triangles")) {
+      const Json& list = r.member("triangles");
+      if (!list.is_array()) throw FormatError(r.path("triangles"), "expected an array of triangles");
+      Mesh mesh;
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::string p = r.path("triangles") + "/" + std::to_string(i);
+        if (!list[i].is_array() || list[i].size() != 3) throw FormatError(p, "expected 3 vertices");
+        const auto n = static_cast<std::uint32_t>(mesh.vertices.size());
+        for (int k = 0; k < 3; ++k) mesh.vertices.push_back(vec3_at(list[i][k], p + "/" + std::to_string(k)));
+        mesh.faces.push_back({n, n + 1, n + 2});
+      }
+      return triangles_mesh(std::move(mesh));
+    }
+    throw FormatError(pointer_ + "/" + name, "expected \"file\", \"procedural\" or \"triangles\"");
+  }
+  LibraryBvh library(const std::string& name) const {
+    LibraryBvh l;
+    if (!has(name)) return l;
+    const Reader r = object(name);
+    static constexpr BuildStrategy kStrategies[] = {BuildStrategy::top_down, BuildStrategy::bottom_up,
+                                                    BuildStrategy::incremental};
+    static constexpr SplitAxis kAxes[] = {SplitAxis::longest_side, SplitAxis::splatter, SplitAxis::min_sum,
+                                          SplitAxis::min_max};
+    static constexpr SplitPoint kPoints[] = {SplitPoint::midpoint, SplitPoint::mean, SplitPoint::median};
+    static constexpr BvUpdate kUpdates[] = {BvUpdate::approximate, BvUpdate::exact};
+    static constexpr Descent kDescents[] = {Descent::first_model, Descent::larger};
+    if (r.has("bv")) l.bv = r.choice("bv", kAllBvTypes);
+    if (r.has("build")) l.build.strategy = r.choice("build", kStrategies);
+    if (r.has("split_axis")) l.build.axis = r.choice("split_axis", kAxes);
+    if (r.has("split_point")) l.build.point = r.choice("split_point", kPoints);
+    if (r.has("leaf_size")) l.build.leaf_size = static_cast<int>(r.integer("leaf_size"));
+    if (r.has("update")) l.update = r.choice("update", kUpdates);
+    if (r.has("descent")) l.descent = r.choice("descent", kDescents);
+    return l;
+  }
+  MeshPair meshes(const std::filesystem::path& case_dir) const {
+    return {mesh("a", case_dir), mesh("b", case_dir), pose("pose_a"), pose("pose_b"), library("library")};
+  }
 
  private:
   const Json& json_;
@@ -82,6 +183,39 @@ Json obb(const Obb& b) {
           {"axes", Json::array({vec3(b.axes.col[0]), vec3(b.axes.col[1]), vec3(b.axes.col[2])})}};
 }
 Json sphere(const Sphere& s) { return {{"center", vec3(s.center)}, {"radius", number_to_json(s.radius)}}; }
+Json pose(const RigidTransform& t) {
+  Json rows = Json::array();
+  for (int i = 0; i < 3; ++i) rows.push_back(vec3(t.rotation.row(i)));
+  return {{"rotation", rows}, {"translation", vec3(t.translation)}};
+}
+Json mesh(const MeshRef& m) {
+  switch (m.source) {
+    case MeshRef::Source::file: return {{"file", m.file}};
+    case MeshRef::Source::procedural:
+      return {{"procedural", to_string(m.recipe.shape)},
+              {"seed", m.recipe.seed},
+              {"resolution", m.recipe.resolution},
+              {"size", number_to_json(m.recipe.size)},
+              {"thickness", number_to_json(m.recipe.thickness)},
+              {"degenerate_percent", m.recipe.degenerate_percent}};
+    case MeshRef::Source::triangles: break;
+  }
+  Json list = Json::array();
+  for (std::size_t f = 0; f < m.mesh->size(); ++f) list.push_back(triangle(m.mesh->triangle(f)));
+  return {{"triangles", list}};
+}
+Json library(const LibraryBvh& l) {
+  return {{"bv", to_string(l.bv)},
+          {"build", to_string(l.build.strategy)},
+          {"split_axis", to_string(l.build.axis)},
+          {"split_point", to_string(l.build.point)},
+          {"leaf_size", l.build.leaf_size},
+          {"update", to_string(l.update)},
+          {"descent", to_string(l.descent)}};
+}
+Json meshes(const MeshPair& m) {
+  return {{"a", mesh(m.a)}, {"pose_a", pose(m.pose_a)}, {"b", mesh(m.b)}, {"pose_b", pose(m.pose_b)}, {"library", library(m.library)}};
+}
 
 struct ToJson {
   Json operator()(const RayAabbInput& in) const {
@@ -95,13 +229,16 @@ struct ToJson {
   Json operator()(const TriAabbInput& in) const { return {{"triangle", triangle(in.tri)}, {"box", aabb(in.box)}}; }
   Json operator()(const TriObbInput& in) const { return {{"triangle", triangle(in.tri)}, {"box", obb(in.box)}}; }
   Json operator()(const TriTriInput& in) const { return {{"a", triangle(in.a)}, {"b", triangle(in.b)}}; }
+  Json operator()(const MeshMeshInput& in) const { return meshes(in.meshes); }
+  Json operator()(const MeshMeshFirstInput& in) const { return meshes(in.meshes); }
 };
 
 }  // namespace
 
 Json input_to_json(const Input& input) { return std::visit(ToJson{}, input); }
 
-Input input_from_json(QueryKind kind, const Json& json, const std::string& pointer) {
+Input input_from_json(QueryKind kind, const Json& json, const std::string& pointer,
+                      const std::filesystem::path& case_dir) {
   const Reader r(json, pointer);
   switch (kind) {
     case QueryKind::ray_aabb: {
@@ -123,6 +260,8 @@ Input input_from_json(QueryKind kind, const Json& json, const std::string& point
     case QueryKind::tri_aabb: return TriAabbInput{r.triangle("triangle"), r.aabb("box")};
     case QueryKind::tri_obb: return TriObbInput{r.triangle("triangle"), r.obb("box")};
     case QueryKind::tri_tri: return TriTriInput{r.triangle("a"), r.triangle("b")};
+    case QueryKind::mesh_mesh: return MeshMeshInput{r.meshes(case_dir)};
+    case QueryKind::mesh_mesh_first: return MeshMeshFirstInput{r.meshes(case_dir)};
   }
   throw FormatError(pointer, "unknown query kind");
 }

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 
@@ -28,9 +29,11 @@ class FormatError : public std::runtime_error {
 Json input_to_json(const Input& input);
 
 /// The inputs of a query of the given kind read from `json` (found at `pointer` in its document,
-/// for error messages). Throws FormatError naming the place of a missing field, a value of the
-/// wrong type or a number that does not parse.
-Input input_from_json(QueryKind kind, const Json& json, const std::string& pointer);
+/// for error messages). Mesh files are looked for from `case_dir` (see find_mesh_file). Throws
+/// FormatError naming the place of a missing field, a value of the wrong type, a number that
+/// does not parse, or a mesh file that is missing or broken (with the file's own line).
+Input input_from_json(QueryKind kind, const Json& json, const std::string& pointer,
+                      const std::filesystem::path& case_dir = {});
 
 /// A double as JSON (a string) and back; the reader also accepts plain JSON numbers.
 Json number_to_json(double x);

@@ -95,6 +95,22 @@ struct Map {
     if (relation == Relation::swap_shapes) return TriTriInput{in.b, in.a};
     return TriTriInput{triangle(in.a), triangle(in.b)};
   }
+  // Meshes: the world's axes permuted, which permutes the rows of both poses; the relative
+  // transform, and with it every computation of the library, is unchanged bit for bit. (A flip
+  // would make the poses improper rotations; swapping the meshes transposes the pairs but moves
+  // a into b's frame instead, with other roundings; scaling would copy the meshes.)
+  std::optional<Input> operator()(const MeshMeshInput& in) { return meshes(in.meshes, MeshMeshInput{}); }
+  std::optional<Input> operator()(const MeshMeshFirstInput& in) { return meshes(in.meshes, MeshMeshFirstInput{}); }
+  template <class Query>
+  std::optional<Input> meshes(const MeshPair& m, Query out) {
+    if (relation != Relation::permute_axes) return std::nullopt;
+    out.meshes = m;
+    for (RigidTransform* pose : {&out.meshes.pose_a, &out.meshes.pose_b}) {
+      for (int j = 0; j < 3; ++j) pose->rotation.col[j] = point(pose->rotation.col[j]);
+      pose->translation = point(pose->translation);
+    }
+    return out;
+  }
 };
 
 double flush(double x) {
@@ -130,6 +146,8 @@ struct Flush {
   Input operator()(const TriAabbInput& in) const { return TriAabbInput{flush(in.tri), flush(in.box)}; }
   Input operator()(const TriObbInput& in) const { return TriObbInput{flush(in.tri), flush(in.box)}; }
   Input operator()(const TriTriInput& in) const { return TriTriInput{flush(in.a), flush(in.b)}; }
+  Input operator()(const MeshMeshInput& in) const { return in; }  // never scaled
+  Input operator()(const MeshMeshFirstInput& in) const { return in; }
 };
 
 }  // namespace

@@ -18,6 +18,13 @@ enum class Contract {
   unspecified,  // outside it, and the library only promises not to crash
 };
 
+/// A pair of triangles of two meshes and its exact margin (as ExactVerdict::margin).
+struct PairMargin {
+  FacePair pair;
+  double margin = 0;
+  friend bool operator==(const PairMargin&, const PairMargin&) = default;
+};
+
 /// The exact reference's verdict on one query.
 struct ExactVerdict {
   Contract contract = Contract::in;
@@ -28,6 +35,14 @@ struct ExactVerdict {
   /// there is no such measure (out of contract).
   double margin = 0;
   std::string note;  // why out of contract or undecided
+  /// Mesh queries: the margin of every pair of triangles that collides or nearly does, sorted
+  /// by pair; `margin` is the one nearest 0. A pair not listed is apart by more than
+  /// -unlisted_margin of the scale (their bounding boxes are), and counts as at that margin.
+  std::vector<PairMargin> pair_margins;
+  double unlisted_margin = 0;
+
+  /// The margin of a pair of a mesh query.
+  double margin_of(const FacePair& pair) const;
 };
 
 class ExactReference {

@@ -12,6 +12,8 @@ std::string_view name(QueryKind kind) {
     case QueryKind::tri_aabb: return "tri_aabb";
     case QueryKind::tri_obb: return "tri_obb";
     case QueryKind::tri_tri: return "tri_tri";
+    case QueryKind::mesh_mesh: return "mesh_mesh";
+    case QueryKind::mesh_mesh_first: return "mesh_mesh_first";
   }
   return "?";
 }

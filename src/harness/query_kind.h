@@ -8,11 +8,25 @@
 
 namespace cc::harness {
 
-enum class QueryKind { ray_aabb, sphere_sphere, aabb_aabb, kdop_kdop, obb_obb, tri_aabb, tri_obb, tri_tri };
+enum class QueryKind {
+  ray_aabb,
+  sphere_sphere,
+  aabb_aabb,
+  kdop_kdop,
+  obb_obb,
+  tri_aabb,
+  tri_obb,
+  tri_tri,
+  mesh_mesh,        // all colliding triangle pairs of two meshes
+  mesh_mesh_first,  // the first colliding pair found, if any
+};
 
-inline constexpr std::array kAllQueryKinds = {QueryKind::ray_aabb, QueryKind::sphere_sphere, QueryKind::aabb_aabb,
-                                              QueryKind::kdop_kdop, QueryKind::obb_obb,      QueryKind::tri_aabb,
-                                              QueryKind::tri_obb,   QueryKind::tri_tri};
+inline constexpr std::array kAllQueryKinds = {
+    QueryKind::ray_aabb, QueryKind::sphere_sphere, QueryKind::aabb_aabb, QueryKind::kdop_kdop, QueryKind::obb_obb,
+    QueryKind::tri_aabb, QueryKind::tri_obb,       QueryKind::tri_tri,   QueryKind::mesh_mesh, QueryKind::mesh_mesh_first};
+
+/// True for the queries on two meshes (an answer is a set of triangle pairs).
+constexpr bool is_mesh_query(QueryKind kind) { return kind == QueryKind::mesh_mesh || kind == QueryKind::mesh_mesh_first; }
 
 /// The query's name, e.g. "ray_aabb".
 std::string_view name(QueryKind kind);

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <utility>
+#include <vector>
 
 namespace cc::harness {
 namespace {
@@ -16,6 +17,10 @@ Mat3 about_axis(int axis, double c, double s) {
   m(j, j) = c;
   return m;
 }
+
+double unit_interval(Choices& c) { return static_cast<double>(c.draw(std::uint64_t{1} << 53)) * 0x1p-53; }
+
+}  // namespace
 
 Mat3 from_quaternion(double w, double x, double y, double z) {
   const double n = std::sqrt(w * w + x * x + y * y + z * z);
@@ -33,9 +38,40 @@ Mat3 from_quaternion(double w, double x, double y, double z) {
   return m;
 }
 
-double unit_interval(Choices& c) { return static_cast<double>(c.draw(std::uint64_t{1} << 53)) * 0x1p-53; }
+namespace {
+
+std::vector<Mat3> rotation_table() {
+  std::vector<Mat3> table;
+  const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+  for (const auto& p : perms) {
+    for (int signs = 0; signs < 8; ++signs) {
+      Mat3 m;
+      for (int j = 0; j < 3; ++j) {
+        m.col[j] = Vec3{};
+        m.col[j][p[j]] = (signs >> j) & 1 ? -1.0 : 1.0;
+      }
+      if (dot(cross(m.col[0], m.col[1]), m.col[2]) > 0) table.push_back(m);
+    }
+  }
+  const double q[8][4] = {{0.9, 0.1, -0.3, 0.2},   {0.2, 0.7, 0.1, -0.6},  {-0.5, 0.5, 0.5, 0.5}, {0.3, -0.2, 0.9, 0.1},
+                          {0.6, 0.6, -0.2, -0.4},  {0.1, 0.05, 0.02, 0.99}, {0.7, -0.1, 0.1, 0.7}, {0.4, 0.8, 0.4, 0.2}};
+  for (const auto& r : q) table.push_back(from_quaternion(r[0], r[1], r[2], r[3]));
+  return table;
+}
 
 }  // namespace
+
+const Mat3& table_rotation(std::size_t index) {
+  static const std::vector<Mat3> table = rotation_table();
+  return table[index % table.size()];
+}
+
+std::optional<std::size_t> table_rotation_index(const Mat3& m) {
+  for (std::size_t i = 0; i < 32; ++i) {
+    if (table_rotation(i) == m) return i;
+  }
+  return std::nullopt;
+}
 
 Mat3 multiply(const Mat3& a, const Mat3& b) {
   Mat3 m;

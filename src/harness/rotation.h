@@ -2,6 +2,9 @@
 // rotations) to general ones built in floating point, and matrices outside the OBB contract.
 #pragma once
 
+#include <cstddef>
+#include <optional>
+
 #include "collide/vec3.h"
 #include "harness/values.h"
 
@@ -18,6 +21,15 @@ Mat3 draw_rotation_near(ValueSource& values, const Mat3& base);
 
 /// A matrix outside the OBB contract: scaled or sheared beyond the orthonormality tolerance.
 Mat3 draw_non_orthonormal(ValueSource& values);
+
+/// The rotation of the unit quaternion (w, x, y, z) / |(w, x, y, z)| (not all zero).
+Mat3 from_quaternion(double w, double x, double y, double z);
+
+/// A fixed table of 32 rotations: the 24 rotations of the cube (signed permutations with
+/// determinant 1, exact) and 8 generic ones; for records that name a rotation by a byte.
+const Mat3& table_rotation(std::size_t index);
+/// The index of a rotation in the table, if it is one of them.
+std::optional<std::size_t> table_rotation_index(const Mat3& m);
 
 /// The product a * b.
 Mat3 multiply(const Mat3& a, const Mat3& b);

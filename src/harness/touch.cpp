@@ -50,6 +50,16 @@ void shift_to_touch(KdopKdopInput& in, ValueSource& v, bool nudged) {
   for (Vec3& p : in.b) p[axis] += shift * dir[axis];
 }
 
+// b moved so that one of its vertices lands on one of a's (exactly when both poses are exact,
+// as signed permutations with simple translations are; otherwise within the transforms' rounding).
+void touch_at_vertices(MeshPair& m, Choices& c) {
+  const Mesh &a = *m.a.mesh, &b = *m.b.mesh;
+  if (a.vertices.empty() || b.vertices.empty()) return;
+  const Vec3 on_a = apply(m.pose_a, a.vertices[c.draw(a.vertices.size())]);
+  const Vec3 on_b = apply(m.pose_b, b.vertices[c.draw(b.vertices.size())]);
+  m.pose_b.translation = m.pose_b.translation + (on_a - on_b);
+}
+
 void make_touching(Input& input, ValueSource& v) {
   Choices& c = v.choices();
   std::visit(
@@ -82,6 +92,8 @@ void make_touching(Input& input, ValueSource& v) {
         } else if constexpr (std::is_same_v<T, TriObbInput>) {
           const Vec3 local = detail::draw_boundary_point(v, Aabb{-in.box.half, in.box.half});
           put_vertex_at(in.tri, static_cast<int>(c.draw(3)), in.box.center + in.box.axes * local);
+        } else if constexpr (std::is_same_v<T, MeshMeshInput> || std::is_same_v<T, MeshMeshFirstInput>) {
+          touch_at_vertices(in.meshes, c);
         } else {
           const int i = static_cast<int>(c.draw(3));
           const Vec3 target = c.chance(50) ? in.a.v[static_cast<std::size_t>(i)]

@@ -9,6 +9,7 @@
 namespace cc::harness {
 
 /// Moves the second shape (the ray, the triangle against a box) so that it touches the first.
+/// Meshes: b is translated so that one of its vertices meets one of a's.
 void make_touching(Input& input, ValueSource& values);
 
 /// B's centre against a face of A: at A's half extent plus B's reach along A's face normal,

@@ -14,6 +14,7 @@
 #include <csignal>
 
 #include "harness/campaign.h"
+#include "harness/mesh_files.h"
 #include "harness/input_json.h"
 #include "harness/shrink.h"
 #include "harness/signature.h"
@@ -214,6 +215,7 @@ int run(const CampaignArgs& args) {
   options.seconds = args.seconds;
   options.seed = args.seed;
   options.workers = std::max(1, args.workers);
+  options.mesh_folder = mesh_folder(args.corpora);
   options.case_timeout_seconds = args.timeout;
   options.out_of_contract_percent = args.out_of_contract;
   const bool tty = isatty(STDERR_FILENO) != 0;

@@ -87,9 +87,20 @@ Scene scene_of(const Input& input) {
         } else if constexpr (std::is_same_v<T, TriObbInput>) {
           s.triangle(in.tri, 0);
           s.obb(in.box, 1);
-        } else {
+        } else if constexpr (std::is_same_v<T, TriTriInput>) {
           s.triangle(in.a, 0);
           s.triangle(in.b, 1);
+        } else {  // meshes, placed in the world (the first 200 triangles of each)
+          const MeshPair& m = in.meshes;
+          for (int side = 0; side < 2; ++side) {
+            const Mesh& mesh = side == 0 ? *m.a.mesh : *m.b.mesh;
+            const RigidTransform& pose = side == 0 ? m.pose_a : m.pose_b;
+            for (std::size_t f = 0; f < std::min<std::size_t>(mesh.size(), 200); ++f) {
+              Triangle t = mesh.triangle(f);
+              for (Vec3& p : t.v) p = apply(pose, p);
+              s.triangle(t, side);
+            }
+          }
         }
       },
       input);

@@ -15,10 +15,12 @@ TEST(Bands, EverySecondOpinionPartyHasABand) {
   EXPECT_THROW(party_band("nobody"), std::out_of_range);
 }
 
-TEST(Bands, TheLibraryIsExactOrConservative) {
+// Primitive tests round outward; a mesh query moves one mesh into the other's frame in
+// floating point first, which can part touching triangles, so its band is two-sided.
+TEST(Bands, TheLibraryIsExactOrConservativeOnPrimitives) {
   for (QueryKind kind : kAllQueryKinds) {
     const Band b = library_band(kind);
-    EXPECT_NE(b.sides, BandSides::two_sided) << name(kind);
+    EXPECT_EQ(b.sides == BandSides::two_sided, is_mesh_query(kind)) << name(kind);
     EXPECT_LE(b.width, 0x1p-40) << name(kind);
     EXPECT_FALSE(b.why.empty());
   }

@@ -34,6 +34,10 @@ TEST(Transform, ScalingUpAndDownIsTheIdentityOrDoesNotApply) {
       RandomChoices c(seed);
       const Input in = flush_extremes(generate(kind, c));
       const auto up = transform(in, Relation::scale, 5);
+      if (is_mesh_query(kind)) {  // never scaled: see metamorphic.h
+        EXPECT_FALSE(up.has_value());
+        continue;
+      }
       ASSERT_TRUE(up.has_value()) << name(kind) << " " << text(in);
       EXPECT_EQ(text(*transform(*up, Relation::scale, -5)), text(in));
     }

@@ -2,8 +2,9 @@
 // shapes, permuting the axes, flipping the sign of an axis and scaling by a power of two give
 // the library's answer bit for bit (ray parameters included). Where a relation does not apply
 // (no second shape; a k-DOP direction set not closed under it: 16 under both, 24 under flips)
-// it is skipped. Scaling is checked on inputs whose values lie in [2^-250, 2^250] (others
-// flushed to 0), where no intermediate result of the library underflows or overflows.
+// it is skipped; mesh queries take only the permutation of the world's axes. Scaling is checked
+// on inputs whose values lie in [2^-250, 2^250] (others flushed to 0), where no intermediate
+// result of the library underflows or overflows.
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
@@ -31,7 +32,8 @@ TEST_P(Metamorphic, TheAnswerIsUnchanged) {
   const std::string property = std::string(name(kind)) + ": " + std::string(to_string(relation));
   Met met;
   int applied = 0;
-  const bool passed = check_property(property, kind, 0, 1000, met, [&](const Input& generated) {
+  const int cases = is_mesh_query(kind) ? 200 : 1000;  // a mesh case takes about 30 ms
+  const bool passed = check_property(property, kind, 0, cases, met, [&](const Input& generated) {
     const Input input = relation == Relation::scale ? flush_extremes(generated) : generated;
     met.count(features_of(input, exact.judge(input)));
     int parameter = 0;
@@ -51,7 +53,7 @@ TEST_P(Metamorphic, TheAnswerIsUnchanged) {
     }
   });
   EXPECT_TRUE(passed) << property;
-  EXPECT_GT(applied, 100) << property << ": the relation hardly ever applied";
+  EXPECT_GT(applied, cases / 10) << property << ": the relation hardly ever applied";
   expect_met_the_boundary(property, kind, met);
 }
 
@@ -61,6 +63,7 @@ std::vector<Case> all_cases() {
     for (Relation r : {Relation::swap_shapes, Relation::permute_axes, Relation::flip_axis, Relation::scale}) {
       const bool has_two_shapes = kind != QueryKind::ray_aabb && kind != QueryKind::tri_aabb && kind != QueryKind::tri_obb;
       if (r == Relation::swap_shapes && !has_two_shapes) continue;
+      if (is_mesh_query(kind) && r != Relation::permute_axes) continue;  // see metamorphic.h
       cases.push_back({kind, r});
     }
   }

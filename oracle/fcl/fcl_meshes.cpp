@@ -1,0 +1,88 @@
+// FCL's mesh-mesh collision: BVHModel<OBBd>, <OBBRSSd>, <AABBd> and <KDOPd<18>>, asked for all
+// contacts (mesh_mesh) or for the first (mesh_mesh_first).
+#include <fcl/geometry/bvh/BVH_model.h>
+#include <fcl/math/bv/AABB.h>
+#include <fcl/math/bv/OBB.h>
+#include <fcl/math/bv/OBBRSS.h>
+#include <fcl/math/bv/kDOP.h>
+#include <fcl/narrowphase/collision.h>
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <memory>
+
+#include "oracle/fcl/convert.h"
+#include "oracle/fcl/parties.h"
+
+namespace cc::fcl_oracle {
+namespace {
+
+template <class BV>
+using Model = fcl::BVHModel<BV>;
+
+// A model per mesh and volume type, built once and kept while the mesh lives.
+template <class BV>
+std::shared_ptr<const Model<BV>> model_of(const std::shared_ptr<const Mesh>& mesh) {
+  struct Entry {
+    std::weak_ptr<const Mesh> mesh;
+    std::shared_ptr<const Model<BV>> model;
+  };
+  static std::map<const Mesh*, Entry> cache;
+  if (auto it = cache.find(mesh.get()); it != cache.end()) {
+    if (it->second.mesh.lock() == mesh) return it->second.model;
+    cache.erase(it);
+  }
+  if (cache.size() > 64) std::erase_if(cache, [](const auto& e) { return e.second.mesh.expired(); });
+  std::vector<fcl::Vector3d> vertices;
+  for (const Vec3& v : mesh->vertices) vertices.push_back(to_fcl(v));
+  std::vector<fcl::Triangle> triangles;
+  for (const auto& f : mesh->faces) triangles.emplace_back(f[0], f[1], f[2]);
+  auto model = std::make_shared<Model<BV>>();
+  model->beginModel();
+  model->addSubModel(vertices, triangles);
+  model->endModel();
+  cache[mesh.get()] = {mesh, model};
+  return model;
+}
+
+fcl::Transform3d to_fcl(const RigidTransform& t) {
+  fcl::Transform3d tf = fcl::Transform3d::Identity();
+  tf.linear() = cc::fcl_oracle::to_fcl(t.rotation);
+  tf.translation() = cc::fcl_oracle::to_fcl(t.translation);
+  return tf;
+}
+
+template <class BV>
+Opinion collide_models(const std::string& party, const harness::MeshPair& m, bool first_only) {
+  if (m.a.mesh->size() == 0 || m.b.mesh->size() == 0) return not_applicable(party, "a mesh without triangles");
+  const auto a = model_of<BV>(m.a.mesh), b = model_of<BV>(m.b.mesh);
+  fcl::CollisionRequestd request(first_only ? 1 : std::numeric_limits<std::size_t>::max(), false);
+  fcl::CollisionResultd result;
+  fcl::collide(a.get(), to_fcl(m.pose_a), b.get(), to_fcl(m.pose_b), request, result);
+  std::vector<fcl::Contactd> contacts;
+  result.getContacts(contacts);
+  Opinion o = answered(party, !contacts.empty());
+  for (const fcl::Contactd& c : contacts) {
+    o.answer.pairs.emplace_back(static_cast<std::uint32_t>(c.b1), static_cast<std::uint32_t>(c.b2));
+  }
+  std::sort(o.answer.pairs.begin(), o.answer.pairs.end());
+  o.answer.pairs.erase(std::unique(o.answer.pairs.begin(), o.answer.pairs.end()), o.answer.pairs.end());
+  return o;
+}
+
+}  // namespace
+
+std::vector<std::string> fcl_mesh_parties() {
+  return {"fcl.BVHModel<OBBd>", "fcl.BVHModel<OBBRSSd>", "fcl.BVHModel<AABBd>", "fcl.BVHModel<KDOPd<18>>"};
+}
+
+Opinion fcl_collide_meshes(const std::string& party, const harness::MeshPair& m, bool first_only) {
+  const auto parties = fcl_mesh_parties();
+  if (party == parties[0]) return collide_models<fcl::OBBd>(party, m, first_only);
+  if (party == parties[1]) return collide_models<fcl::OBBRSSd>(party, m, first_only);
+  if (party == parties[2]) return collide_models<fcl::AABBd>(party, m, first_only);
+  return collide_models<fcl::KDOPd<18>>(party, m, first_only);
+}
+
+}  // namespace cc::fcl_oracle

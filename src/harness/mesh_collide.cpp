@@ -1,0 +1,45 @@
+#include "harness/mesh_collide.h"
+
+#include <map>
+#include <tuple>
+
+namespace cc::harness {
+namespace {
+
+struct Entry {
+  std::weak_ptr<const Mesh> mesh;
+  std::shared_ptr<const void> bvh;
+};
+using Key = std::tuple<const Mesh*, std::string, BuildStrategy, SplitAxis, SplitPoint, int>;
+
+std::map<Key, Entry>& cache() {
+  static std::map<Key, Entry> entries;
+  return entries;
+}
+
+}  // namespace
+
+template <class BV>
+std::shared_ptr<const Bvh<BV>> cached_bvh(const std::shared_ptr<const Mesh>& mesh, const BuildOptions& options) {
+  auto& entries = cache();
+  const Key key{mesh.get(), BoundingVolume<BV>::name(), options.strategy, options.axis, options.point, options.leaf_size};
+  if (auto it = entries.find(key); it != entries.end()) {
+    if (it->second.mesh.lock() == mesh) return std::static_pointer_cast<const Bvh<BV>>(it->second.bvh);
+    entries.erase(it);  // a mesh that died, and another one now at its address
+  }
+  if (entries.size() > 256) std::erase_if(entries, [](const auto& e) { return e.second.mesh.expired(); });
+  auto bvh = std::make_shared<const Bvh<BV>>(build_bvh<BV>(*mesh, options));
+  entries[key] = {mesh, bvh};
+  return bvh;
+}
+
+CollisionResult library_collide(const MeshPair& m, CollisionMode mode) {
+  const CollideOptions options{mode, m.library.update, m.library.descent};
+  return with_bv_type(m.library.bv, [&]<class BV>() {
+    const auto a = cached_bvh<BV>(m.a.mesh, m.library.build);
+    const auto b = cached_bvh<BV>(m.b.mesh, m.library.build);
+    return collide(*a, m.pose_a, *b, m.pose_b, options);
+  });
+}
+
+}  // namespace cc::harness

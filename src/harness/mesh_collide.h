@@ -1,0 +1,20 @@
+// The library's side of a mesh query: hierarchies built once per mesh and walked per case.
+#pragma once
+
+#include <memory>
+
+#include "collide/bvh_collide.h"
+#include "harness/mesh_query.h"
+
+namespace cc::harness {
+
+/// The hierarchy of a mesh for the given volume type and build options, built on first use and
+/// kept while the mesh lives (campaign cases reuse FCL's test meshes thousands of times).
+template <class BV>
+std::shared_ptr<const Bvh<BV>> cached_bvh(const std::shared_ptr<const Mesh>& mesh, const BuildOptions& options);
+
+/// The library's answer to a mesh query, with its counters: both meshes' hierarchies of the
+/// case's type and build, walked with its update and descent options.
+CollisionResult library_collide(const MeshPair& meshes, CollisionMode mode);
+
+}  // namespace cc::harness
