@@ -1,12 +1,14 @@
 #include "harness/shrink.h"
 
 #include <algorithm>
+#include <bit>
 #include <chrono>
 #include <cmath>
 #include <vector>
 
 #include "harness/input_json.h"
 #include "harness/number_text.h"
+#include "harness/shrink_faces.h"
 #include "harness/signature.h"
 
 namespace cc::harness {
@@ -27,12 +29,13 @@ int mantissa_bits(double x) {
   return std::max(bits, 1);
 }
 
-// The frames (rotation matrices) in a document: members named "axes", as JSON pointers.
+// The frames in a document: members named "axes" (a box's, any orthonormal frame) or
+// "rotation" (a pose's, a proper rotation), as JSON pointers.
 void frames(const Json& j, const std::string& pointer, std::vector<std::string>& out) {
   if (!j.is_object()) return;
   for (auto it = j.begin(); it != j.end(); ++it) {
-    if (it.key() == "axes") {
-      out.push_back(pointer + "/axes");
+    if (it.key() == "axes" || it.key() == "rotation") {
+      out.push_back(pointer + "/" + it.key());
     } else {
       frames(it.value(), pointer + "/" + it.key(), out);
     }
@@ -40,12 +43,16 @@ void frames(const Json& j, const std::string& pointer, std::vector<std::string>&
 }
 
 // The identity first, then the other 47 signed permutation matrices: the simplest frames, exactly
-// orthonormal. (As columns, in case-file layout.)
-std::vector<Json> simple_frames() {
+// orthonormal; only the 24 proper rotations among them if asked. (As columns or rows alike: the
+// set is closed under transposition.)
+std::vector<Json> simple_frames(bool proper_only) {
   std::vector<Json> out;
   const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-  for (const auto& p : perms) {
+  const bool odd[6] = {false, true, true, false, false, true};
+  for (int k = 0; k < 6; ++k) {
+    const auto& p = perms[k];
     for (int signs = 0; signs < 8; ++signs) {
+      if (proper_only && odd[k] != (std::popcount(static_cast<unsigned>(signs)) % 2 == 1)) continue;
       Json m = Json::array();
       for (int j = 0; j < 3; ++j) {
         Vec3 column;
@@ -126,7 +133,7 @@ int complex_values(const Input& input) {
 }
 
 ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator& evaluate, int max_attempts,
-                    double max_seconds) {
+                    double max_seconds, const std::filesystem::path& case_dir) {
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(max_seconds);
   const QueryKind kind = kind_of(input);
   const std::string target = signature_of(kind, start);
@@ -139,7 +146,7 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
     ++r.attempts;
     Input candidate;
     try {
-      candidate = input_from_json(kind, doc, "");
+      candidate = input_from_json(kind, doc, "", case_dir);
     } catch (const FormatError&) {
       return false;
     }
@@ -152,6 +159,8 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
     return true;
   };
 
+  if (const MeshPair* meshes = meshes_of(input)) shrink_faces(kind, current, *meshes, start, attempt);
+
   for (bool progress = true; progress && r.attempts < max_attempts && std::chrono::steady_clock::now() < deadline;) {
     progress = false;
     // Frames toward the identity and the signed permutations, as a whole.
@@ -159,7 +168,8 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
     frames(current, "", frame_pointers);
     for (const std::string& p : frame_pointers) {
       const Json::json_pointer ptr(p);
-      for (const Json& m : simple_frames()) {
+      const bool rotation = p.ends_with("/rotation");
+      for (const Json& m : simple_frames(rotation)) {
         if (current.at(ptr) == m) break;  // already the simplest one that works
         Json doc = current;
         doc[ptr] = m;

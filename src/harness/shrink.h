@@ -3,6 +3,7 @@
 // points, as long as the case keeps its signature (kind, class, and who disagrees how).
 #pragma once
 
+#include <filesystem>
 #include <functional>
 
 #include "harness/evaluate.h"
@@ -19,10 +20,12 @@ struct ShrinkResult {
 };
 
 /// Shrinks `input` (whose evaluation is `start`) with at most `max_attempts` evaluations and
-/// within about `max_seconds`. Besides values, a box's frame moves toward the identity and the
-/// signed permutations as a whole (one entry alone would leave it non-orthonormal).
+/// within about `max_seconds`. Besides values, a box's frame (and a mesh's pose) moves toward
+/// the identity and the signed permutations as a whole (one entry alone would leave it
+/// non-orthonormal), and a mesh query loses faces first (shrink_faces.h). Mesh files named by
+/// the input are looked for from `case_dir` (see find_mesh_file).
 ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator& evaluate, int max_attempts = 4000,
-                    double max_seconds = 60);
+                    double max_seconds = 60, const std::filesystem::path& case_dir = {});
 
 /// How simple a double is, for ordering: 0, then integers by size, then halves by size, then
 /// values by the number of mantissa bits they need; non-finite values last.

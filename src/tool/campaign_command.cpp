@@ -131,7 +131,7 @@ int store_one(const Finding& f, const CampaignArgs& args, const std::vector<std:
   Input input = f.input;
   Evaluation e = f.evaluation;
   if (f.crash.empty()) {
-    const ShrinkResult r = shrink(f.input, f.evaluation, evaluate_with_oracles, 3000, 20);
+    const ShrinkResult r = shrink(f.input, f.evaluation, evaluate_with_oracles, 3000, 20, args.corpora);
     input = r.input;
     e = r.evaluation;
   }

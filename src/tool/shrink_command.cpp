@@ -19,7 +19,8 @@ int run(const ShrinkArgs& args) {
   const auto c = read_case_or_report(args.file);
   if (!c) return kExitBadInput;
   const harness::Evaluation start = evaluate_with_oracles(c->input);
-  const harness::ShrinkResult r = harness::shrink(c->input, start, evaluate_with_oracles, args.attempts);
+  const harness::ShrinkResult r = harness::shrink(c->input, start, evaluate_with_oracles, args.attempts, 60,
+                                                     std::filesystem::path(args.file).parent_path());
   std::printf("%s: %s\n  %d values not small integers or halves before, %d after; %d of %d attempts kept\n",
               args.file.c_str(), harness::signature_of(harness::kind_of(c->input), start).c_str(),
               harness::complex_values(c->input), harness::complex_values(r.input), r.accepted, r.attempts);

@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include "harness/library.h"
+#include "harness/mesh_query.h"
+#include "harness/shrink_faces.h"
 #include "oracle/exact/exact_reference.h"
 
 namespace cc::harness {
@@ -32,7 +34,7 @@ Evaluation planted(const Input& in) {
   e.library = ask_library(in);
   e.exact = exact.judge(in);
   const auto& s = std::get<SphereSphereInput>(in);
-  e.opinions = {{"fcl.collide(Sphere,Sphere)", Opinion::Status::answered, {s.a.radius + s.b.radius > 1, {}}, ""}};
+  e.opinions = {{"fcl.collide(Sphere,Sphere)", Opinion::Status::answered, {s.a.radius + s.b.radius > 1, {}, {}}, ""}};
   e.verdict = classify(QueryKind::sphere_sphere, e.library, e.exact, e.opinions);
   return e;
 }
@@ -52,6 +54,63 @@ TEST(Shrink, KeepsTheDisagreementAndSimplifiesTheValues) {
 TEST(Shrink, RespectsTheAttemptBudget) {
   const Input start = SphereSphereInput{{{0.1234567, -7.5e3, 3.3}, 0.9876}, {{11.11, 0.2, 9.87e5}, 0.33}};
   EXPECT_LE(shrink(start, planted(start), planted, 5).attempts, 5);
+}
+
+// A planted mesh disagreement: a "second opinion" that lists the exact pairs except those whose
+// triangle of mesh a has a vertex above z = 0.25.
+Evaluation planted_meshes(const Input& in) {
+  static const exact::ExactRationalReference exact;
+  Evaluation e;
+  e.library = ask_library(in);
+  e.exact = exact.judge(in);
+  const MeshPair& m = *meshes_of(in);
+  Answer said;
+  for (const FacePair& p : e.exact.answer.pairs) {
+    bool high = false;
+    for (const Vec3& v : m.a.mesh->triangle(p.first).v) high = high || apply(m.pose_a, v).z > 0.25;
+    if (!high) said.pairs.push_back(p);
+  }
+  said.hit = !said.pairs.empty();
+  e.opinions = {{"fcl.BVHModel<OBBd>", Opinion::Status::answered, said, ""}};
+  e.verdict = classify(kind_of(in), e.library, e.exact, e.opinions);
+  return e;
+}
+
+Input sphere_through_torus() {
+  MeshPair m;
+  m.a = procedural_mesh({ProceduralMesh::Shape::sphere, 3, 8, 1.0});
+  m.b = procedural_mesh({ProceduralMesh::Shape::torus, 5, 8, 1.0});
+  m.pose_b.translation = {0.7, 0.1, 0.3};
+  return MeshMeshInput{m};
+}
+
+TEST(ShrinkFaces, DisputedFacesAreThoseOfPairsAPartyListsDifferently) {
+  const Input in = sphere_through_torus();
+  const Evaluation e = planted_meshes(in);
+  ASSERT_EQ(e.verdict.cls, CaseClass::oracle_defect);
+  const MeshPair& m = *meshes_of(in);
+  const std::vector<std::uint32_t> a = disputed_faces(QueryKind::mesh_mesh, e, false);
+  ASSERT_FALSE(a.empty());
+  EXPECT_LT(a.size(), m.a.mesh->size());
+  for (std::uint32_t f : a) {
+    double top = -INFINITY;
+    for (const Vec3& v : m.a.mesh->triangle(f).v) top = std::max(top, v.z);
+    EXPECT_GT(top, 0.25) << "face " << f << " is not one the planted party drops";
+  }
+}
+
+TEST(Shrink, AMeshCaseLosesFacesAndKeepsItsDisagreement) {
+  const Input start = sphere_through_torus();
+  const Evaluation e = planted_meshes(start);
+  ASSERT_EQ(e.verdict.cls, CaseClass::oracle_defect);
+  const ShrinkResult r = shrink(start, e, planted_meshes, 1500, 60);
+  EXPECT_EQ(r.evaluation.verdict.cls, CaseClass::oracle_defect);
+  const MeshPair& m = *meshes_of(r.input);
+  EXPECT_EQ(m.a.source, MeshRef::Source::triangles);
+  // Two pairs are the least: one the party drops, one it lists (the signature has it say hit).
+  EXPECT_LE(m.a.mesh->size(), 2u);
+  EXPECT_LE(m.b.mesh->size(), 2u);
+  EXPECT_LT(complex_values(r.input), complex_values(start));
 }
 
 }  // namespace
