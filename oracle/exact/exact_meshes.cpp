@@ -119,6 +119,13 @@ harness::ExactVerdict judge_meshes(const MeshPair& m) {
       overlapping(world_boxes(*m.a.mesh, m.pose_a, reach), world_boxes(*m.b.mesh, m.pose_b, reach));
 
   harness::ExactVerdict v;
+  if (candidates.size() > kMaxNearPairs) {
+    v.decided = false;
+    v.margin = NAN;
+    v.note = std::to_string(candidates.size()) + " pairs of triangles lie within 2^-32 of the scale " +
+             std::to_string(scale) + ": too many to test exactly";
+    return v;
+  }
   v.unlisted_margin = -kNearMargin;
   PlacedVertices a(*m.a.mesh, m.pose_a), b(*m.b.mesh, m.pose_b);
   for (const FacePair& p : candidates) {

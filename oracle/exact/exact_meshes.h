@@ -18,12 +18,17 @@ namespace cc::exact {
 /// it keeps the candidates few when a small mesh is placed far from the origin.
 inline constexpr double kNearMargin = 0x1p-32;
 
+/// More candidate pairs than this (the scale, set by a far placement, dwarfs the meshes, so
+/// every pair is near contact relative to it) and the verdict is undecided instead of slow.
+inline constexpr std::size_t kMaxNearPairs = 200000;
+
 /// Why the meshes or poses lie outside the library's domain (a NaN or infinite value, a pose
 /// whose rotation is not orthonormal to within 2^-48 or is a mirror, a magnitude beyond
 /// 2^300), or nothing.
 std::optional<std::string> meshes_outside_domain(const harness::MeshPair& m);
 
-/// The verdict on all pairs: the exact pair set and the margins of every pair near contact.
+/// The verdict on all pairs: the exact pair set and the margins of every pair near contact;
+/// undecided beyond kMaxNearPairs candidates.
 harness::ExactVerdict judge_meshes(const harness::MeshPair& m);
 
 /// The two triangles of a pair, each placed exactly by its pose.

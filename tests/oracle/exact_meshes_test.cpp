@@ -1,0 +1,107 @@
+// The exact reference on mesh queries: pair sets and margins on cases worked out by hand, the
+// domain, and an undecided verdict instead of a slow one when the scale dwarfs the meshes.
+#include "oracle/exact/exact_meshes.h"
+
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "collide/bvh_collide.h"
+#include "harness/mesh_files.h"
+#include "harness/mesh_query.h"
+
+namespace cc::exact {
+namespace {
+
+using harness::Contract;
+using harness::FacePair;
+using harness::MeshPair;
+
+// Mesh a: two triangles in the plane z = 0; mesh b: one triangle standing on the plane.
+MeshPair floor_and_post(double lift) {
+  Mesh floor{{{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {10, 10, 0}, {12, 10, 0}, {10, 12, 0}}, {{0, 1, 2}, {3, 4, 5}}};
+  Mesh post{{{0.5, 0.5, lift}, {0.5, 0.5, 1 + lift}, {0.6, 0.5, 1 + lift}}, {{0, 1, 2}}};
+  MeshPair m;
+  m.a = harness::triangles_mesh(std::move(floor));
+  m.b = harness::triangles_mesh(std::move(post));
+  return m;
+}
+
+TEST(JudgeMeshes, AVertexOnAFaceTouches) {
+  const harness::ExactVerdict v = judge_meshes(floor_and_post(0));
+  EXPECT_EQ(v.contract, Contract::in);
+  EXPECT_TRUE(v.decided);
+  EXPECT_EQ(v.answer.pairs, (std::vector<FacePair>{{0, 0}}));
+  EXPECT_EQ(v.margin, 0);
+  EXPECT_EQ(v.margin_of({0, 0}), 0);
+}
+
+TEST(JudgeMeshes, ANearPairIsListedWithItsGapAndAFarOneIsNot) {
+  const harness::ExactVerdict v = judge_meshes(floor_and_post(0x1p-40));
+  EXPECT_FALSE(v.answer.hit);
+  EXPECT_TRUE(v.answer.pairs.empty());
+  ASSERT_EQ(v.pair_margins.size(), 1u);
+  EXPECT_EQ(v.pair_margins[0].pair, (FacePair{0, 0}));
+  EXPECT_LT(v.margin, 0);
+  EXPECT_GT(v.margin, -0x1p-38);                // apart by 2^-40 of a scale of 12 or so
+  EXPECT_EQ(v.margin_of({1, 0}), -kNearMargin);  // the far triangle: not tested
+}
+
+TEST(JudgeMeshes, ThePosesPlaceTheMeshesExactly) {
+  MeshPair m = floor_and_post(5);  // the post floats 5 above the floor
+  m.pose_b.translation = {0, 0, -5};
+  EXPECT_EQ(judge_meshes(m).answer.pairs, (std::vector<FacePair>{{0, 0}}));
+  // A quarter turn about x takes the floor to the plane y = 0 (x, z >= 0, x + z <= 2): the post
+  // moved to y = 0 lies in it (coplanar overlap), moved to y = 0.25 is parallel and apart.
+  m.pose_a.rotation = Mat3::from_columns({1, 0, 0}, {0, 0, 1}, {0, -1, 0});
+  m.pose_b.translation = {0, -0.5, -5};
+  EXPECT_EQ(judge_meshes(m).answer.pairs, (std::vector<FacePair>{{0, 0}}));
+  m.pose_b.translation = {0, -0.25, -5};
+  EXPECT_FALSE(judge_meshes(m).answer.hit);
+}
+
+TEST(JudgeMeshes, AgreesWithBruteForceFarFromContact) {
+  MeshPair m;
+  m.a = harness::procedural_mesh({harness::ProceduralMesh::Shape::sphere, 1, 8, 1.0});
+  m.b = harness::procedural_mesh({harness::ProceduralMesh::Shape::torus, 2, 8, 1.0});
+  m.pose_b.translation = {0.75, 0.125, 0.25};
+  const harness::ExactVerdict v = judge_meshes(m);
+  const auto brute = collide_brute_force(*m.a.mesh, m.pose_a, *m.b.mesh, m.pose_b);
+  std::vector<FacePair> expected;
+  for (const auto& [fa, fb] : brute) expected.emplace_back(fa, fb);
+  ASSERT_FALSE(expected.empty());
+  // Pairs nearer than 2^-30 could differ in floating point: there are none here.
+  for (const auto& pm : v.pair_margins) ASSERT_GT(std::fabs(pm.margin), 0x1p-30);
+  EXPECT_EQ(v.answer.pairs, expected);
+}
+
+TEST(JudgeMeshes, PosesOutsideTheDomain) {
+  MeshPair m = floor_and_post(0);
+  m.pose_b.translation.x = NAN;
+  EXPECT_NE(judge_meshes(m).contract, Contract::in);
+  m = floor_and_post(0);
+  m.pose_a.rotation = Mat3::from_columns({-1, 0, 0}, {0, 1, 0}, {0, 0, 1});  // a mirror
+  EXPECT_NE(judge_meshes(m).contract, Contract::in);
+  m = floor_and_post(0);
+  m.pose_a.rotation = Mat3::from_columns({1, 0, 0}, {0, 1.001, 0}, {0, 0, 1});  // not orthonormal
+  EXPECT_NE(judge_meshes(m).contract, Contract::in);
+  EXPECT_TRUE(meshes_outside_domain(floor_and_post(0)) == std::nullopt);
+}
+
+TEST(JudgeMeshes, TooManyNearPairsAreUndecidedQuickly) {
+  const auto folder = std::filesystem::path(CROSSCHECK_SOURCE_DIR) / "corpora" / "meshes";
+  MeshPair m;
+  m.a.source = m.b.source = harness::MeshRef::Source::file;
+  m.a.mesh = harness::load_mesh_file(folder / "env.obj");
+  m.b.mesh = harness::load_mesh_file(folder / "rob.obj");
+  m.pose_a.translation = m.pose_b.translation = {0, -1.2e83, 0};  // both far out: scale 1e83
+  const auto start = std::chrono::steady_clock::now();
+  const harness::ExactVerdict v = judge_meshes(m);
+  EXPECT_FALSE(v.decided);
+  EXPECT_NE(v.note.find("too many"), std::string::npos) << v.note;
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5);
+}
+
+}  // namespace
+}  // namespace cc::exact
