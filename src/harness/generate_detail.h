@@ -16,8 +16,6 @@ TriObbInput generate_tri_obb(ValueSource& values, const GenerateOptions& options
 TriTriInput generate_tri_tri(ValueSource& values, const GenerateOptions& options);
 MeshPair generate_meshes(ValueSource& values, const GenerateOptions& options);
 
-/// b moved so that one of its vertices meets one of a's (see make_touching).
-void touch_at_vertices_of(MeshPair& m, Choices& choices);
 
 /// A box [lo, lo + extent], extents often 0; out of contract sometimes inverted.
 Aabb draw_aabb(ValueSource& values, const GenerateOptions& options);

@@ -7,30 +7,13 @@
 #include <tuple>
 
 #include "harness/generate_detail.h"
-#include "harness/mesh_collide.h"
 #include "harness/mesh_files.h"
+#include "harness/mesh_poses.h"
 #include "harness/rotation.h"
 #include "harness/touch.h"
 
 namespace cc::harness::detail {
 namespace {
-
-constexpr double kPi = 3.141592653589793;
-
-double unit(Choices& c) { return static_cast<double>(c.draw(std::uint64_t{1} << 53)) * 0x1p-53; }
-double between(Choices& c, double lo, double hi) { return lo + (hi - lo) * unit(c); }
-
-// R = Rz(c) Ry(b) Rx(a) for Euler angles drawn in [-pi, pi], as FCL's test utility does.
-Mat3 euler_rotation(Choices& c) {
-  const double a = between(c, -kPi, kPi), b = between(c, -kPi, kPi), g = between(c, -kPi, kPi);
-  const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b), cg = std::cos(g),
-               sg = std::sin(g);
-  Mat3 m;
-  m(0, 0) = cb * cg, m(0, 1) = sa * sb * cg - ca * sg, m(0, 2) = ca * sb * cg + sa * sg;
-  m(1, 0) = cb * sg, m(1, 1) = sa * sb * sg + ca * cg, m(1, 2) = ca * sb * sg - sa * cg;
-  m(2, 0) = -sb, m(2, 1) = sa * cb, m(2, 2) = ca * cb;
-  return m;
-}
 
 // Any hierarchy; for FCL's meshes (`few`), one of a few per volume type, so that the campaign's
 // workers build each once and reuse it over thousands of poses.
@@ -65,40 +48,6 @@ ProceduralMesh draw_recipe(Choices& c, double size) {
   return r;
 }
 
-// The furthest any vertex of the mesh is from its pose's origin, in norm1 (a bound on its
-// extent in any direction).
-double reach(const Mesh& m) {
-  double r = 0;
-  for (const Vec3& v : m.vertices) r = std::max(r, norm1(v));
-  return r;
-}
-
-// Moves b along `direction` (a unit vector) until the meshes almost touch: from a placement
-// where they collide (b's vertex on a's vertex) out to where b's reach clears a's, bisecting on
-// whether the library finds a colliding pair, down to the last representable step. The result
-// lies on either side of first contact by a few ULPs of the translation.
-void bisect_to_contact(MeshPair& m, Choices& c) {
-  touch_at_vertices_of(m, c);
-  const Vec3 start = m.pose_b.translation;
-  const double far = 2 * (reach(*m.a.mesh) + reach(*m.b.mesh)) + 1;
-  Vec3 direction{between(c, -1, 1), between(c, -1, 1), between(c, -1, 1)};
-  if (norm1(direction) == 0) direction = {1, 0, 0};
-  direction = (1 / std::sqrt(dot(direction, direction))) * direction;
-  const auto collides_at = [&](double s) {
-    MeshPair trial = m;
-    trial.pose_b.translation = start + s * direction;
-    return !library_collide(trial, CollisionMode::first_hit).pairs.empty();
-  };
-  double in = 0, out = far;
-  if (!collides_at(in) || collides_at(out)) return;  // nothing to bisect (no pair at the start)
-  for (int step = 0; step < 64; ++step) {
-    const double mid = 0.5 * (in + out);
-    if (mid == in || mid == out) break;
-    (collides_at(mid) ? in : out) = mid;
-  }
-  m.pose_b.translation = start + (c.chance(50) ? in : out) * direction;
-}
-
 void out_of_contract(MeshPair& m, ValueSource& v) {
   Choices& c = v.choices();
   switch (c.draw(3)) {
@@ -114,13 +63,6 @@ void out_of_contract(MeshPair& m, ValueSource& v) {
 }
 
 }  // namespace
-
-void touch_at_vertices_of(MeshPair& m, Choices& c) {
-  Input input = MeshMeshInput{m};
-  ValueSource unused(c, ValueRange{});
-  make_touching(input, unused);
-  m = std::get<MeshMeshInput>(input).meshes;
-}
 
 MeshPair generate_meshes(ValueSource& v, const GenerateOptions& options) {
   Choices& c = v.choices();
@@ -140,8 +82,7 @@ MeshPair generate_meshes(ValueSource& v, const GenerateOptions& options) {
   switch (c.draw(3)) {
     case 0:  // at random, the way FCL's test places rob.obj in env.obj
       if (fcl_meshes) {
-        m.pose_b.rotation = euler_rotation(c);
-        m.pose_b.translation = {between(c, -3000, 3000), between(c, -3000, 3000), between(c, 0, 3000)};
+        m.pose_b = fcl_style_pose(c);
       } else {
         m.pose_a.rotation = draw_rotation(v);
         m.pose_b.rotation = draw_rotation(v);
@@ -152,11 +93,11 @@ MeshPair generate_meshes(ValueSource& v, const GenerateOptions& options) {
       m.pose_a.rotation = table_rotation(c.draw(24));
       m.pose_b.rotation = table_rotation(c.draw(24));
       m.pose_a.translation = v.point();
-      touch_at_vertices_of(m, c);
+      touch_at_vertices(m, c);
       break;
     default:  // brought to near contact along a random direction
       m.pose_a.rotation = fcl_meshes ? Mat3::identity() : draw_rotation(v);
-      m.pose_b.rotation = fcl_meshes ? euler_rotation(c) : draw_rotation(v);
+      m.pose_b.rotation = fcl_meshes ? fcl_style_pose(c).rotation : draw_rotation(v);
       bisect_to_contact(m, c);
   }
   if (options.out_of_contract && c.chance(10)) out_of_contract(m, v);

@@ -50,8 +50,6 @@ void shift_to_touch(KdopKdopInput& in, ValueSource& v, bool nudged) {
   for (Vec3& p : in.b) p[axis] += shift * dir[axis];
 }
 
-// b moved so that one of its vertices lands on one of a's (exactly when both poses are exact,
-// as signed permutations with simple translations are; otherwise within the transforms' rounding).
 void touch_at_vertices(MeshPair& m, Choices& c) {
   const Mesh &a = *m.a.mesh, &b = *m.b.mesh;
   if (a.vertices.empty() || b.vertices.empty()) return;

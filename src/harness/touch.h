@@ -12,6 +12,11 @@ namespace cc::harness {
 /// Meshes: b is translated so that one of its vertices meets one of a's.
 void make_touching(Input& input, ValueSource& values);
 
+/// Mesh b translated so that one of its vertices lands on one of a's (exactly when both poses
+/// are exact, as signed permutations with simple translations are; otherwise within the
+/// transforms' rounding).
+void touch_at_vertices(MeshPair& m, Choices& choices);
+
 /// B's centre against a face of A: at A's half extent plus B's reach along A's face normal,
 /// plus an offset within the face. With `nudged`, a few ULPs off.
 void place_against_face(ObbObbInput& in, ValueSource& values, bool nudged);

@@ -51,6 +51,7 @@ std::string answer_text(const Answer& a) {
     for (std::size_t i = 0; i < a.params.size(); ++i) s += (i ? ", " : "") + format_double(a.params[i]);
     s += "]";
   }
+  if (!a.pairs.empty()) s += ", " + std::to_string(a.pairs.size()) + (a.pairs.size() == 1 ? " pair" : " pairs");
   return s;
 }
 
@@ -95,7 +96,7 @@ std::string triage_text(const std::string& title, const Case& recorded, const Ev
     const PartyStanding& p = now.verdict.parties[i + 1];
     out << "  " << o.party << "  ";
     if (o.status == Opinion::Status::answered) {
-      out << (o.answer.hit ? "hit" : "miss") << "   [" << to_string(p.standing) << "]";
+      out << answer_text(o.answer) << "   [" << to_string(p.standing) << "]";
     } else {
       out << (o.status == Opinion::Status::failed ? "failed: " : "n/a: ") << o.detail;
     }

@@ -3,12 +3,33 @@
 #include <cstdio>
 #include <fstream>
 
+#include "harness/query_cost.h"
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
 
 namespace cc::tool {
 namespace {
+
+// A mesh query's counters and the cost function T = n_v c_v + n_p c_p + n_u c_u, with unit
+// costs measured now on the case's own volumes and triangles.
+void print_cost(const harness::Input& input) {
+  const harness::MeshPair* m = harness::meshes_of(input);
+  if (m == nullptr) return;
+  const CollisionMode mode = harness::kind_of(input) == harness::QueryKind::mesh_mesh_first ? CollisionMode::first_hit
+                                                                                         : CollisionMode::all_pairs;
+  const harness::QueryCost c = harness::measure_query_cost(*m, mode);
+  const auto n = [](std::uint64_t x) { return static_cast<double>(x); };
+  std::printf("  counters   n_v = %llu volume tests, n_p = %llu triangle tests, n_u = %llu volume updates\n",
+              static_cast<unsigned long long>(c.counters.bv_tests), static_cast<unsigned long long>(c.counters.primitive_tests),
+              static_cast<unsigned long long>(c.counters.bv_updates));
+  std::printf("  unit cost  c_v = %.1f ns, c_p = %.1f ns, c_u = %.1f ns (%s, %s update; medians of 5 batches)\n",
+              c.unit.bv_test, c.unit.primitive_test, c.unit.bv_update, std::string(to_string(m->library.bv)).c_str(),
+              std::string(to_string(m->library.update)).c_str());
+  std::printf("  cost       T = %.1f + %.1f + %.1f = %.1f us; measured %.1f us (median of 5)\n",
+              n(c.counters.bv_tests) * c.unit.bv_test / 1e3, n(c.counters.primitive_tests) * c.unit.primitive_test / 1e3,
+              n(c.counters.bv_updates) * c.unit.bv_update / 1e3, c.predicted_ns / 1e3, c.measured_ns / 1e3);
+}
 
 struct TriageArgs {
   std::vector<std::string> files;
@@ -30,7 +51,9 @@ int run(const TriageArgs& args) {
     }
     const harness::Evaluation now = evaluate_with_oracles(c->input);
     const harness::Explanation why = exact.explain(c->input);
-    std::printf("%s\n", triage_text(file, *c, now, why).c_str());
+    std::printf("%s", triage_text(file, *c, now, why).c_str());
+    print_cost(c->input);
+    std::printf("\n");
     if (!args.svg.empty()) {
       std::ofstream out(args.svg);
       out << svg_of(c->input, why);

@@ -1,0 +1,246 @@
+// crosscheck bvh-report: FCL's env.obj against rob.obj over random and near-contact poses, for
+// every volume type, build strategy and update. Per hierarchy: build time, pairs, the counters
+// n_v, n_p, n_u per query, query time, how much larger the approximate update's volumes are
+// than the exact update's, and how its pair sets stand against the exact reference. FCL's
+// BVHModel parties answer the same poses.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+
+#include "harness/classify.h"
+#include "harness/input_json.h"
+#include "harness/mesh_collide.h"
+#include "harness/mesh_files.h"
+#include "harness/mesh_poses.h"
+#include "harness/choices.h"
+#include "oracle/exact/exact_meshes.h"
+#include "oracle/fcl/parties.h"
+#include "tool/commands.h"
+
+namespace cc::tool {
+namespace {
+
+using harness::Json;
+using harness::MeshPair;
+using Clock = std::chrono::steady_clock;
+
+struct ReportArgs {
+  int random = 100, near = 100;
+  int leaf_size = 1;
+  std::uint64_t seed = 1;
+  std::string corpora = "corpora";
+  std::string json;
+};
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+double ms_since(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
+
+// One pose and what the exact reference says of it.
+struct Pose {
+  MeshPair m;
+  bool near = false;
+  harness::ExactVerdict exact;
+};
+
+// Totals over the poses for one party (a library hierarchy or an FCL model).
+struct Tally {
+  std::string name;
+  bool counted = true;  // the library's hierarchies count; FCL's models do not
+  double build_ms = 0;
+  std::uint64_t pairs = 0, n_v = 0, n_p = 0, n_u = 0;
+  int right = 0, within_band = 0, wrong = 0, failed = 0;
+  std::vector<double> query_us, tightness;
+  void stand(harness::Standing s) {
+    right += s == harness::Standing::right;
+    within_band += s == harness::Standing::within_band;
+    wrong += s == harness::Standing::wrong;
+    failed += s == harness::Standing::failed;
+  }
+};
+
+// How much larger b's moved volumes are with the approximate update than with the exact one:
+// the median ratio of their volumes over up to 64 of b's nodes.
+template <class BV>
+double approximate_over_exact(const Bvh<BV>& b, const RigidTransform& t) {
+  std::vector<double> ratios;
+  const std::size_t step = std::max<std::size_t>(1, b.nodes.size() / 64);
+  for (std::size_t n = 0; n < b.nodes.size(); n += step) {
+    const double approx = BoundingVolume<BV>::size(moved_volume(b, n, t, BvUpdate::approximate)).volume;
+    const double exact = BoundingVolume<BV>::size(moved_volume(b, n, t, BvUpdate::exact)).volume;
+    if (exact > 0) ratios.push_back(approx / exact);
+  }
+  return median(ratios);
+}
+
+Tally run_library(const harness::LibraryBvh& library, std::vector<Pose>& poses) {
+  Tally t;
+  t.name = std::string(to_string(library.bv)) + " " + std::string(to_string(library.build.strategy)) + " " +
+           std::string(to_string(library.update));
+  harness::with_bv_type(library.bv, [&]<class BV>() {
+    const auto start = Clock::now();
+    const Bvh<BV> a = build_bvh<BV>(*poses[0].m.a.mesh, library.build);
+    const Bvh<BV> b = build_bvh<BV>(*poses[0].m.b.mesh, library.build);
+    t.build_ms = ms_since(start);
+    for (Pose& p : poses) {
+      p.m.library = library;
+      const auto q = Clock::now();
+      const CollideOptions options{CollisionMode::all_pairs, library.update, library.descent};
+      const CollisionResult r = collide(a, p.m.pose_a, b, p.m.pose_b, options);
+      t.query_us.push_back(1e3 * ms_since(q));
+      t.pairs += r.pairs.size();
+      t.n_v += r.counters.bv_tests, t.n_p += r.counters.primitive_tests, t.n_u += r.counters.bv_updates;
+      harness::Answer answer{!r.pairs.empty(), {}, {}};
+      for (const auto& [fa, fb] : r.pairs) answer.pairs.emplace_back(fa, fb);
+      t.stand(harness::classify(harness::QueryKind::mesh_mesh, answer, p.exact, {}).parties[0].standing);
+      if (library.update == BvUpdate::approximate && library.bv != harness::BvType::obb) {
+        t.tightness.push_back(approximate_over_exact(b, relative(p.m.pose_a, p.m.pose_b)));
+      }
+    }
+  });
+  return t;
+}
+
+Tally run_fcl(const std::string& party, const std::vector<Pose>& poses) {
+  Tally t;
+  t.name = party;
+  t.counted = false;
+  for (const Pose& p : poses) {
+    const auto q = Clock::now();
+    const harness::Opinion o = fcl_oracle::fcl_collide_meshes(party, p.m, false);
+    t.query_us.push_back(1e3 * ms_since(q));
+    t.pairs += o.answer.pairs.size();
+    const harness::Verdict v = harness::classify(harness::QueryKind::mesh_mesh, o.answer, p.exact, {o});
+    t.stand(v.parties[1].standing);
+  }
+  return t;
+}
+
+std::vector<harness::LibraryBvh> every_hierarchy(int leaf_size) {
+  std::vector<harness::LibraryBvh> out;
+  for (harness::BvType bv : harness::kAllBvTypes) {
+    for (BuildStrategy s : {BuildStrategy::top_down, BuildStrategy::bottom_up, BuildStrategy::incremental}) {
+      for (BvUpdate u : {BvUpdate::approximate, BvUpdate::exact}) {
+        if (bv == harness::BvType::obb && u == BvUpdate::exact) continue;  // an OBB moves exactly
+        harness::LibraryBvh l;
+        l.bv = bv;
+        l.build.strategy = s;
+        l.build.leaf_size = leaf_size;  // top-down only: the other builds put one triangle in a leaf
+        l.update = u;
+        out.push_back(l);
+      }
+    }
+  }
+  return out;
+}
+
+void print_row(const Tally& t, std::size_t queries) {
+  const double q = static_cast<double>(queries);
+  const auto cell = [&](double x, const char* format) {
+    char text[32] = "-";
+    if (t.counted) std::snprintf(text, sizeof text, format, x);
+    return std::string(text);
+  };
+  char tight[32] = "-";
+  if (!t.tightness.empty()) std::snprintf(tight, sizeof tight, "%.2f", median(t.tightness));
+  std::printf("%-34s %9s %7llu %10s %10s %10s %12.1f %9s %6d %6d %6d %6d\n", t.name.c_str(),
+              cell(t.build_ms, "%.1f").c_str(), static_cast<unsigned long long>(t.pairs),
+              cell(static_cast<double>(t.n_v) / q, "%.0f").c_str(), cell(static_cast<double>(t.n_p) / q, "%.0f").c_str(),
+              cell(static_cast<double>(t.n_u) / q, "%.0f").c_str(), median(t.query_us), tight, t.right, t.within_band,
+              t.wrong, t.failed);
+}
+
+Json row_json(const Tally& t) {
+  return {{"name", t.name},       {"build_ms", t.build_ms},       {"pairs", t.pairs},
+          {"n_v", t.n_v},         {"n_p", t.n_p},                 {"n_u", t.n_u},
+          {"median_query_us", median(t.query_us)},
+          {"approximate_over_exact_volume", t.tightness.empty() ? Json() : Json(median(t.tightness))},
+          {"right", t.right},     {"within_band", t.within_band}, {"wrong", t.wrong},
+          {"failed", t.failed}};
+}
+
+int run(const ReportArgs& args) {
+  const auto folder = harness::mesh_folder(args.corpora);
+  const auto env = harness::find_mesh_file("env.obj", folder), rob = harness::find_mesh_file("rob.obj", folder);
+  if (!env || !rob) {
+    std::fprintf(stderr, "crosscheck bvh-report: env.obj and rob.obj not found in %s\n", folder.string().c_str());
+    return kExitBadInput;
+  }
+  MeshPair base;
+  base.a.source = base.b.source = harness::MeshRef::Source::file;
+  base.a.file = "meshes/env.obj", base.b.file = "meshes/rob.obj";
+  base.a.mesh = harness::load_mesh_file(*env), base.b.mesh = harness::load_mesh_file(*rob);
+
+  harness::RandomChoices c(args.seed);
+  std::vector<Pose> poses;
+  for (int i = 0; i < args.random + args.near; ++i) {
+    Pose p{base, i >= args.random, {}};
+    if (p.near) {
+      p.m.pose_b.rotation = harness::fcl_style_pose(c).rotation;
+      harness::bisect_to_contact(p.m, c);  // with the default hierarchy: OBB, top-down
+    } else {
+      p.m.pose_b = harness::fcl_style_pose(c);
+    }
+    p.exact = exact::judge_meshes(p.m);
+    poses.push_back(std::move(p));
+  }
+  std::size_t exact_pairs = 0, colliding = 0;
+  for (const Pose& p : poses) exact_pairs += p.exact.answer.pairs.size(), colliding += p.exact.answer.hit;
+  std::printf("env.obj (%zu triangles) against rob.obj (%zu triangles): %d random poses (as FCL's test draws them), "
+              "%d near contact; seed %llu\n",
+              base.a.mesh->size(), base.b.mesh->size(), args.random, args.near, static_cast<unsigned long long>(args.seed));
+  std::printf("exact reference: %zu colliding pairs over %zu poses with a pair; top-down builds: longest side, midpoint, "
+              "%d triangle(s) per leaf\n\n",
+              exact_pairs, colliding, args.leaf_size);
+  std::printf("%-34s %9s %7s %10s %10s %10s %12s %9s %6s %6s %6s %6s\n", "hierarchy (volume build update)", "build ms",
+              "pairs", "n_v/query", "n_p/query", "n_u/query", "median us", "apx/exact", "right", "band", "wrong",
+              "failed");
+  Json rows = Json::array();
+  for (const harness::LibraryBvh& l : every_hierarchy(args.leaf_size)) {
+    const Tally t = run_library(l, poses);
+    print_row(t, poses.size());
+    rows.push_back(row_json(t));
+  }
+  std::printf("\n");
+  for (const std::string& party : fcl_oracle::fcl_mesh_parties()) {
+    const Tally t = run_fcl(party, poses);
+    print_row(t, poses.size());
+    rows.push_back(row_json(t));
+  }
+  std::printf("\nn_v, n_p, n_u: volume tests, triangle tests and volume updates per query (all pairs, descent into a's\n"
+              "hierarchy). apx/exact: median ratio of the approximate update's moved volume to the exact update's.\n"
+              "right/band/wrong: poses whose pair set equals the exact one / differs only within the band / beyond it.\n");
+  if (!args.json.empty()) {
+    std::ofstream out(args.json);
+    out << Json{{"seed", args.seed}, {"random", args.random}, {"near", args.near}, {"exact_pairs", exact_pairs},
+                {"rows", rows}}.dump(2)
+        << "\n";
+    if (!out) {
+      std::fprintf(stderr, "crosscheck bvh-report: cannot write %s\n", args.json.c_str());
+      return kExitBadInput;
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_bvh_report_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<ReportArgs>();
+  auto* cmd = app.add_subcommand("bvh-report", "env.obj against rob.obj for every hierarchy: counters, times, FCL, exact");
+  cmd->add_option("--random", args->random, "Poses drawn as FCL's test draws them")->capture_default_str();
+  cmd->add_option("--near", args->near, "Poses brought to near contact")->capture_default_str();
+  cmd->add_option("--leaf-size", args->leaf_size, "Triangles per leaf of a top-down build")->capture_default_str();
+  cmd->add_option("--seed", args->seed, "Seed of the poses")->capture_default_str();
+  cmd->add_option("--corpora", args->corpora, "The corpus root (its meshes/ folder has the meshes)")->capture_default_str();
+  cmd->add_option("--json", args->json, "Also write the table as JSON");
+  cmd->callback([args, &exit_code] { exit_code = run(*args); });
+}
+
+}  // namespace cc::tool
