@@ -10,9 +10,11 @@ std::optional<std::filesystem::path> find_mesh_file(const std::string& as_writte
   const std::filesystem::path given(as_written);
   if (given.is_absolute()) return std::filesystem::exists(given) ? std::optional(given) : std::nullopt;
   std::error_code ec;
-  std::filesystem::path dir = case_dir.empty() ? std::filesystem::path(".") : std::filesystem::absolute(case_dir, ec);
+  // The real folders above the case (".." and symbolic links resolved), not the path as written.
+  std::filesystem::path dir = std::filesystem::weakly_canonical(case_dir.empty() ? std::filesystem::path(".") : case_dir, ec);
+  if (ec) dir = std::filesystem::absolute(case_dir, ec);
   for (int depth = 0; depth < 64 && !dir.empty(); ++depth) {
-    if (std::filesystem::exists(dir / given)) return dir / given;
+    if (std::filesystem::exists(dir / given)) return (dir / given).lexically_normal();
     if (dir == dir.parent_path()) break;
     dir = dir.parent_path();
   }

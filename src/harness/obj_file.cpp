@@ -37,7 +37,8 @@ std::vector<Vec3> exact_vertices(const std::filesystem::path& path, const std::s
     for (int k = 0; k < 3; ++k) {
       std::string token;
       if (!(tokens >> token)) fail(path, number, "a vertex needs three coordinates");
-      const char* begin = token.data() + (token[0] == '+' ? 1 : 0);
+      const bool plus = token.size() > 1 && token[0] == '+' && token[1] != '+' && token[1] != '-';
+      const char* begin = token.data() + (plus ? 1 : 0);
       const char* end = token.data() + token.size();
       double x = 0;
       const auto [ptr, ec] = std::from_chars(begin, end, x);
@@ -51,6 +52,38 @@ std::vector<Vec3> exact_vertices(const std::filesystem::path& path, const std::s
   return out;
 }
 
+// Every `f` line names at least three vertices, each within the file's `v` lines (1-based; a
+// negative index counts back from the last vertex read so far). tinyobjloader checks indices only
+// after the whole file, naming its last line; this names the face's own.
+void check_faces(const std::filesystem::path& path, const std::string& text, std::size_t vertex_count) {
+  std::istringstream lines(text);
+  std::string line;
+  std::size_t seen = 0;
+  for (std::size_t number = 1; std::getline(lines, line); ++number) {
+    std::istringstream tokens(line);
+    std::string keyword;
+    if (!(tokens >> keyword)) continue;
+    if (keyword == "v") ++seen;
+    if (keyword != "f") continue;
+    int corners = 0;
+    for (std::string token; tokens >> token; ++corners) {
+      const std::string index_text = token.substr(0, token.find('/'));
+      long index = 0;
+      const auto [ptr, ec] = std::from_chars(index_text.data(), index_text.data() + index_text.size(), index);
+      if (ec != std::errc() || ptr != index_text.data() + index_text.size()) {
+        fail(path, number, "\"" + token + "\" is not a vertex index");
+      }
+      const bool valid = index > 0 ? static_cast<std::size_t>(index) <= vertex_count
+                                   : index < 0 && static_cast<std::size_t>(-index) <= seen;
+      if (!valid) {
+        fail(path, number, "the face names vertex " + index_text + ", but the file has " + std::to_string(vertex_count) +
+                               " vertices" + (index < 0 ? " (" + std::to_string(seen) + " before this line)" : ""));
+      }
+    }
+    if (corners < 3) fail(path, number, "a face needs three vertices, this one has " + std::to_string(corners));
+  }
+}
+
 }  // namespace
 
 Mesh read_obj_file(const std::filesystem::path& path) {
@@ -59,6 +92,9 @@ Mesh read_obj_file(const std::filesystem::path& path) {
   std::ostringstream buffer;
   buffer << file.rdbuf();
   const std::string text = buffer.str();
+
+  const std::vector<Vec3> vertices = exact_vertices(path, text);
+  check_faces(path, text, vertices.size());
 
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;
@@ -71,7 +107,7 @@ Mesh read_obj_file(const std::filesystem::path& path) {
   }
 
   Mesh mesh;
-  mesh.vertices = exact_vertices(path, text);
+  mesh.vertices = vertices;
   if (mesh.vertices.size() * 3 != reader.GetAttrib().vertices.size()) {
     fail(path, "tinyobjloader read " + std::to_string(reader.GetAttrib().vertices.size() / 3) + " vertices, the file has " +
                    std::to_string(mesh.vertices.size()) + " `v` lines");

@@ -17,7 +17,7 @@ struct ProceduralMesh {
     torus,    // a ring torus
     terrain,  // a height field over a square grid
     plate,    // a thin box: a rectangle of the given thickness (0: a flat, two-sided rectangle)
-    soup,     // random triangles, large and small, in a cube
+    soup,     // random triangles, large and small: centres in the cube of half side size, corners within 2 size
   };
   Shape shape = Shape::sphere;
   std::uint64_t seed = 0;

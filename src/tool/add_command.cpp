@@ -24,7 +24,9 @@ int run(const AddArgs& args) {
   }
   harness::Input input;
   try {
-    input = harness::input_from_json(*kind, harness::Json::parse(args.inputs), "");
+    // Mesh files are found as they will be from the stored case: from its folder, or above it.
+    input = harness::input_from_json(*kind, harness::Json::parse(args.inputs), "",
+                                     std::filesystem::path(args.corpora) / args.query);
   } catch (const harness::Json::parse_error& e) {
     std::fprintf(stderr, "crosscheck add: inputs: %s\n", e.what());
     return kExitBadInput;

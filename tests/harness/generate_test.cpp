@@ -7,14 +7,17 @@
 #include "harness/features.h"
 #include "harness/input_json.h"
 #include "oracle/exact/exact_reference.h"
+#include "test_paths.h"
 
 namespace cc::harness {
 namespace {
 
+const GenerateOptions kOptions{.mesh_folder = test::fcl_mesh_folder()};
+
 TEST(Generate, IsDeterministic) {
   for (QueryKind kind : kAllQueryKinds) {
     RandomChoices a(9), b(9);
-    EXPECT_EQ(input_to_json(generate(kind, a)).dump(), input_to_json(generate(kind, b)).dump());
+    EXPECT_EQ(input_to_json(generate(kind, a, kOptions)).dump(), input_to_json(generate(kind, b, kOptions)).dump());
   }
 }
 
@@ -22,7 +25,7 @@ TEST(Generate, ZeroChoicesGiveASimpleCaseInTheDomain) {
   const exact::ExactRationalReference exact;
   for (QueryKind kind : kAllQueryKinds) {
     ReplayChoices zeros({});
-    const ExactVerdict v = exact.judge(generate(kind, zeros));
+    const ExactVerdict v = exact.judge(generate(kind, zeros, kOptions));
     EXPECT_EQ(v.contract, Contract::in) << name(kind) << ": " << v.note;
   }
 }
@@ -34,7 +37,7 @@ TEST(Generate, MeetsTouchingParallelAndDegenerateCases) {
     const int n = is_mesh_query(kind) ? 200 : 2000;  // a mesh case is judged in about 30 ms
     for (int i = 0; i < n; ++i) {
       RandomChoices c(static_cast<std::uint64_t>(i));
-      const Input input = generate(kind, c);
+      const Input input = generate(kind, c, kOptions);
       const ExactVerdict v = exact.judge(input);
       const Features f = features_of(input, v);
       touching += f.touching;
@@ -59,7 +62,7 @@ TEST(Generate, OutOfContractCasesLeaveTheDomain) {
     const int n = is_mesh_query(kind) ? 100 : 500;
     for (int i = 0; i < n; ++i) {
       RandomChoices c(static_cast<std::uint64_t>(i));
-      outside += exact.judge(generate(kind, c, {.out_of_contract = true})).contract != Contract::in;
+      outside += exact.judge(generate(kind, c, {.out_of_contract = true, .mesh_folder = test::fcl_mesh_folder()})).contract != Contract::in;
     }
     EXPECT_GT(outside, n / 20) << name(kind);
   }

@@ -1,6 +1,7 @@
 #include "harness/input_json.h"
 
 #include <gtest/gtest.h>
+#include "test_paths.h"
 
 #include <cmath>
 #include <cstring>
@@ -17,9 +18,9 @@ TEST(InputJson, EveryKindRoundTripsBitForBit) {
   for (QueryKind kind : kAllQueryKinds) {
     for (std::uint64_t seed = 0; seed < 200; ++seed) {
       RandomChoices choices(seed);
-      const Input input = generate(kind, choices, {.out_of_contract = true});
+      const Input input = generate(kind, choices, {.out_of_contract = true, .mesh_folder = test::fcl_mesh_folder()});
       const Json json = input_to_json(input);
-      const Input back = input_from_json(kind, json, "/inputs");
+      const Input back = input_from_json(kind, json, "/inputs", test::corpus_case_folder());
       ASSERT_TRUE(same_bits(input_to_json(back), json)) << name(kind) << " " << json.dump();
     }
   }

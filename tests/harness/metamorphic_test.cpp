@@ -1,6 +1,7 @@
 #include "harness/metamorphic.h"
 
 #include <gtest/gtest.h>
+#include "test_paths.h"
 
 #include "harness/choices.h"
 #include "harness/generate.h"
@@ -15,7 +16,7 @@ TEST(Transform, FlippingOrSwappingTwiceIsTheIdentity) {
   for (QueryKind kind : kAllQueryKinds) {
     for (std::uint64_t seed = 0; seed < 50; ++seed) {
       RandomChoices c(seed);
-      const Input in = generate(kind, c);
+      const Input in = generate(kind, c, {.mesh_folder = test::fcl_mesh_folder()});
       for (int axis = 0; axis < 3; ++axis) {
         const auto once = transform(in, Relation::flip_axis, axis);
         if (!once) continue;
@@ -32,7 +33,7 @@ TEST(Transform, ScalingUpAndDownIsTheIdentityOrDoesNotApply) {
   for (QueryKind kind : kAllQueryKinds) {
     for (std::uint64_t seed = 0; seed < 50; ++seed) {
       RandomChoices c(seed);
-      const Input in = flush_extremes(generate(kind, c));
+      const Input in = flush_extremes(generate(kind, c, {.mesh_folder = test::fcl_mesh_folder()}));
       const auto up = transform(in, Relation::scale, 5);
       if (is_mesh_query(kind)) {  // never scaled: see metamorphic.h
         EXPECT_FALSE(up.has_value());

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
+#include "test_paths.h"
 
 #include <cstdlib>
 #include <iostream>
@@ -49,6 +50,7 @@ bool check_property(const std::string& name, harness::QueryKind kind, int out_of
     const auto choices = *rc::gen::container<std::vector<std::uint64_t>>(kChoices, rc::gen::arbitrary<std::uint64_t>());
     harness::ReplayChoices replay(choices);
     harness::GenerateOptions options;
+    options.mesh_folder = fcl_mesh_folder();
     options.out_of_contract = replay.chance(out_of_contract_percent);
     body(harness::generate(kind, replay, options));
   });
