@@ -220,7 +220,7 @@ struct Explain {
     if (nearest == nullptr) {
       Explanation e;
       e.title = "no pair near contact";
-      e.deciding = "every pair's bounding boxes are apart by more than 2^-20 of the scale";
+      e.deciding = "every pair's bounding boxes are apart by more than 2^" + std::to_string(std::ilogb(kNearMargin)) + " of the scale";
       e.deciding_value = v.unlisted_margin;
       return e;
     }
