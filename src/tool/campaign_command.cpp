@@ -65,6 +65,9 @@ std::string summary_of(const Finding& f) {
     if (!s.empty()) s += "; ";
     s += p.party + " " + std::string(to_string(p.standing)) + ": " + p.why;
   }
+  if (!f.evaluation.exact.decided && !f.evaluation.exact.note.empty()) {
+    s += (s.empty() ? "" : "; ") + std::string("exact reference: ") + f.evaluation.exact.note;
+  }
   return s;
 }
 
