@@ -14,6 +14,9 @@
 namespace cc::harness {
 namespace {
 
+// A shrunk mesh case is written with its triangles only if it has at most this many.
+constexpr std::size_t kMaxWrittenFaces = 64;
+
 // The same double, bit for bit (NaN equal to NaN, -0 not equal to 0).
 bool same_value(double a, double b) { return format_double(a) == format_double(b); }
 
@@ -159,7 +162,20 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
     return true;
   };
 
-  if (const MeshPair* meshes = meshes_of(input)) shrink_faces(kind, current, *meshes, start, attempt);
+  // Meshes lose faces first; the result is kept only if it is small enough to read as triangles.
+  if (const MeshPair* meshes = meshes_of(input)) {
+    const ShrinkResult before = r;
+    const Json before_doc = current;
+    if (shrink_faces(kind, current, *meshes, start, attempt)) {
+      const MeshPair& now = *meshes_of(r.input);
+      if (now.a.mesh->size() + now.b.mesh->size() > kMaxWrittenFaces) {
+        const int attempts = r.attempts;
+        r = before;
+        r.attempts = attempts;
+        current = before_doc;
+      }
+    }
+  }
 
   for (bool progress = true; progress && r.attempts < max_attempts && std::chrono::steady_clock::now() < deadline;) {
     progress = false;
