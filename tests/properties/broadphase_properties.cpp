@@ -1,0 +1,110 @@
+// Properties of the first level: incremental sweep-and-prune, the full re-sort and brute force
+// give the same pairs on every frame, through moves, insertions and removals, and the pairs
+// each frame reports as added and removed turn the last frame's set into this one's. Boxes sit
+// on a coarse grid of halves, so that equal endpoints, touching boxes, zero-extent boxes,
+// identical boxes and boxes inside others come up all the time; the property counts them.
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+
+#include <algorithm>
+
+#include "collide/box_pairs.h"
+#include "properties/property.h"
+
+namespace cc::test {
+namespace {
+
+using harness::Choices;
+
+double grid_value(Choices& c) { return 0.5 * (static_cast<double>(c.draw(17)) - 8); }
+
+Aabb draw_box(Choices& c, const std::vector<Aabb>& others) {
+  if (!others.empty() && c.chance(15)) return others[c.draw(others.size())];  // identical
+  Aabb b;
+  for (int k = 0; k < 3; ++k) {
+    const double a = grid_value(c), z = c.chance(20) ? a : grid_value(c);  // zero extent sometimes
+    b.lo[k] = std::min(a, z), b.hi[k] = std::max(a, z);
+  }
+  return b;
+}
+
+struct Seen {
+  int frames = 0, touching = 0, zero_extent = 0, identical = 0, nested = 0, removals = 0;
+  void count(const std::vector<Aabb>& boxes, const std::vector<ObjectPair>& pairs) {
+    ++frames;
+    for (const auto& [i, j] : pairs) {
+      const Aabb &a = boxes[i], &b = boxes[j];
+      bool touch = false, inside = true;
+      for (int k = 0; k < 3; ++k) {
+        touch = touch || a.hi[k] == b.lo[k] || b.hi[k] == a.lo[k];
+        inside = inside && a.lo[k] <= b.lo[k] && b.hi[k] <= a.hi[k];
+      }
+      touching += touch;
+      identical += a == b;
+      nested += inside && !(a == b);
+    }
+    for (const Aabb& b : boxes) zero_extent += b.lo.x == b.hi.x || b.lo.y == b.hi.y || b.lo.z == b.hi.z;
+  }
+};
+
+TEST(BroadphaseProperties, IncrementalResortAndBruteForceAgreeOnEveryFrame) {
+  Seen seen;
+  const bool passed = check_property_with_choices("sweep-and-prune agrees with brute force", 300, [&](Choices& c) {
+    SweepAndPrune sap;
+    std::vector<Aabb> boxes;       // the live boxes, in slots
+    std::vector<ObjectId> ids;     // their ids in sap
+    const std::size_t n = 1 + c.draw(30);
+    for (std::size_t i = 0; i < n; ++i) {
+      boxes.push_back(draw_box(c, boxes));
+      ids.push_back(sap.add(boxes.back()));
+    }
+    std::vector<ObjectPair> last;
+    for (int frame = 0, frames = 1 + static_cast<int>(c.draw(8)); frame < frames; ++frame) {
+      for (std::size_t i = 0; i < boxes.size(); ++i) {
+        if (!c.chance(40)) continue;
+        const Vec3 step{0.5 * (static_cast<double>(c.draw(3)) - 1), 0.5 * (static_cast<double>(c.draw(3)) - 1),
+                        0.5 * (static_cast<double>(c.draw(3)) - 1)};
+        boxes[i] = {boxes[i].lo + step, boxes[i].hi + step};
+        sap.move(ids[i], boxes[i]);
+      }
+      if (!boxes.empty() && c.chance(30)) {  // one leaves
+        const std::size_t i = c.draw(boxes.size());
+        sap.remove(ids[i]);
+        boxes.erase(boxes.begin() + static_cast<std::ptrdiff_t>(i));
+        ids.erase(ids.begin() + static_cast<std::ptrdiff_t>(i));
+        ++seen.removals;
+      }
+      if (c.chance(30)) {  // one arrives
+        boxes.push_back(draw_box(c, boxes));
+        ids.push_back(sap.add(boxes.back()));
+      }
+      const PairChanges changes = sap.update();
+      const std::vector<ObjectPair> brute = box_pairs_brute_force(boxes);
+      RC_ASSERT(sort_and_sweep(boxes) == brute);
+      std::vector<ObjectPair> expected;
+      for (const auto& [i, j] : brute) expected.emplace_back(std::min(ids[i], ids[j]), std::max(ids[i], ids[j]));
+      std::sort(expected.begin(), expected.end());
+      RC_ASSERT(sap.pairs() == expected);
+      std::vector<ObjectPair> replayed;
+      for (const ObjectPair& p : last) {
+        if (!std::binary_search(changes.removed.begin(), changes.removed.end(), p)) replayed.push_back(p);
+      }
+      replayed.insert(replayed.end(), changes.added.begin(), changes.added.end());
+      std::sort(replayed.begin(), replayed.end());
+      RC_ASSERT(replayed == expected);
+      last = expected;
+      seen.count(boxes, brute);
+    }
+  });
+  EXPECT_TRUE(passed);
+  std::printf("%d frames: %d touching pairs, %d zero-extent boxes, %d identical pairs, %d nested pairs, %d removals\n",
+              seen.frames, seen.touching, seen.zero_extent, seen.identical, seen.nested, seen.removals);
+  EXPECT_GT(seen.touching, 100);
+  EXPECT_GT(seen.zero_extent, 100);
+  EXPECT_GT(seen.identical, 50);
+  EXPECT_GT(seen.nested, 50);
+  EXPECT_GT(seen.removals, 50);
+}
+
+}  // namespace
+}  // namespace cc::test
