@@ -1,0 +1,67 @@
+// The two-level pipeline for many moving objects: sweep-and-prune over the objects' boxes
+// prunes the pairs that cannot touch; the hierarchies of the pairs left are tested against each
+// other (BVH-vs-BVH) for their colliding triangle pairs.
+#pragma once
+
+#include <memory>
+#include <vector>
+
+#include "collide/bvh_collide.h"
+#include "collide/object_bounds.h"
+#include "collide/sweep_and_prune.h"
+
+namespace cc {
+
+/// How a rotating object's box is made each frame.
+enum class RotationBounds {
+  bounding_cube,  // the cube that holds the object in every rotation: only moved each frame
+  refit,          // the box fitted around the placed vertices: tighter, a pass over them
+};
+
+/// Two objects that collide, and their colliding triangle pairs (faces of the first object's
+/// mesh, faces of the second's), sorted.
+struct ObjectContact {
+  ObjectPair objects;
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> triangles;
+};
+
+/// Objects (a mesh with its hierarchy, and a pose) in one world. Per frame: move(), then
+/// broad_phase() (boxes, then sweep-and-prune), then narrow_phase() on its candidates.
+///  - The candidates are the pairs whose boxes overlap; the boxes hold the placed meshes (see
+///    object_bounds.h), so no colliding pair is pruned. The contacts are collide()'s on every
+///    candidate (its contract: closed sets, conservative leaf tests, surfaces only).
+///  - Ids come from add() and are not reused; a removed object leaves at once.
+template <class BV>
+class CollisionWorld {
+ public:
+  explicit CollisionWorld(RotationBounds bounds = RotationBounds::refit, CollideOptions options = {})
+      : bounds_(bounds), options_(options) {}
+
+  ObjectId add(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Bvh<BV>> bvh, const RigidTransform& pose);
+  void remove(ObjectId id);
+  void move(ObjectId id, const RigidTransform& pose) { objects_.at(id).pose = pose; }
+
+  /// Refits or moves every object's box and updates sweep-and-prune; returns the candidates.
+  const std::vector<ObjectPair>& broad_phase();
+  /// collide() on every candidate of the last broad_phase(); the pairs that collide.
+  std::vector<ObjectContact> narrow_phase() const;
+
+  const SweepAndPrune& sweep() const { return sap_; }
+  Aabb box_of(ObjectId id) const;
+
+ private:
+  struct Object {
+    std::shared_ptr<const Mesh> mesh;
+    std::shared_ptr<const Bvh<BV>> bvh;
+    RigidTransform pose;
+    double radius = 0;
+    bool alive = true;
+  };
+  RotationBounds bounds_;
+  CollideOptions options_;
+  std::vector<Object> objects_;
+  SweepAndPrune sap_;
+  std::vector<ObjectPair> candidates_;
+};
+
+}  // namespace cc
