@@ -6,6 +6,7 @@
 
 #include "collide/bounding_volume.h"
 #include "collide/triangle_triangle.h"
+#include "harness/median.h"
 #include "harness/mesh_collide.h"
 
 namespace cc::harness {
@@ -13,13 +14,6 @@ namespace {
 
 constexpr std::size_t kSample = 256;
 constexpr std::size_t kBatch = 20000;
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // The median time per call of `op(i)` for i = 0 .. kBatch-1, over `repeats` batches. `op`
 // returns something that depends on its work, so that the work is not optimised away.

@@ -10,6 +10,7 @@
 
 #include "harness/classify.h"
 #include "harness/input_json.h"
+#include "harness/median.h"
 #include "harness/mesh_collide.h"
 #include "harness/mesh_files.h"
 #include "harness/mesh_poses.h"
@@ -20,6 +21,8 @@
 
 namespace cc::tool {
 namespace {
+
+using harness::median;
 
 using harness::Json;
 using harness::MeshPair;
@@ -32,13 +35,6 @@ struct ReportArgs {
   std::string corpora = "corpora";
   std::string json;
 };
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 double ms_since(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
 

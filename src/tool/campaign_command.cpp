@@ -14,6 +14,7 @@
 #include <csignal>
 
 #include "harness/campaign.h"
+#include "harness/median.h"
 #include "harness/mesh_files.h"
 #include "harness/input_json.h"
 #include "harness/shrink.h"
@@ -24,6 +25,8 @@
 
 namespace cc::tool {
 namespace {
+
+using harness::median;
 
 using namespace harness;
 
@@ -116,13 +119,6 @@ struct Stored {
   int written = 0, known = 0, failed = 0, grouped = 0;
   std::vector<int> complex_before, complex_after;  // values not small integers or halves
 };
-
-double median(std::vector<int> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 // Shrinks one finding and writes it as a new case file, in a child process: a shrinking step
 // may call FCL on inputs that crash it. Exit 0: written; 3: already stored; else failed.

@@ -12,6 +12,7 @@
 #include "collide/collision_world.h"
 #include "harness/classify.h"
 #include "harness/input_json.h"
+#include "harness/median.h"
 #include "harness/mesh_collide.h"
 #include "harness/rock_slide.h"
 #include "oracle/exact/exact_meshes.h"
@@ -20,6 +21,8 @@
 
 namespace cc::tool {
 namespace {
+
+using harness::median;
 
 using Clock = std::chrono::steady_clock;
 
@@ -34,13 +37,6 @@ struct SceneArgs {
 };
 
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
-
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 std::size_t triangle_pairs(const std::vector<ObjectContact>& contacts) {
   std::size_t n = 0;
