@@ -96,3 +96,7 @@ struct BoundingVolume<Kdop<K>> {
 };
 
 }  // namespace cc
+
+/// Applies X to every volume type the hierarchies take (for their explicit instantiations).
+#define CC_FOR_EACH_BOUNDING_VOLUME(X) \
+  X(cc::Aabb) X(cc::Obb) X(cc::Kdop<6>) X(cc::Kdop<14>) X(cc::Kdop<16>) X(cc::Kdop<18>) X(cc::Kdop<24>) X(cc::Kdop<26>)

@@ -166,13 +166,8 @@ Bvh<BV> build_bvh(const Mesh& mesh, const BuildOptions& options) {
   return {};
 }
 
-template Bvh<Aabb> build_bvh<Aabb>(const Mesh&, const BuildOptions&);
-template Bvh<Obb> build_bvh<Obb>(const Mesh&, const BuildOptions&);
-template Bvh<Kdop<6>> build_bvh<Kdop<6>>(const Mesh&, const BuildOptions&);
-template Bvh<Kdop<14>> build_bvh<Kdop<14>>(const Mesh&, const BuildOptions&);
-template Bvh<Kdop<16>> build_bvh<Kdop<16>>(const Mesh&, const BuildOptions&);
-template Bvh<Kdop<18>> build_bvh<Kdop<18>>(const Mesh&, const BuildOptions&);
-template Bvh<Kdop<24>> build_bvh<Kdop<24>>(const Mesh&, const BuildOptions&);
-template Bvh<Kdop<26>> build_bvh<Kdop<26>>(const Mesh&, const BuildOptions&);
+#define CC_INSTANTIATE(BV) template Bvh<BV> build_bvh<BV>(const Mesh&, const BuildOptions&);
+CC_FOR_EACH_BOUNDING_VOLUME(CC_INSTANTIATE)
+#undef CC_INSTANTIATE
 
 }  // namespace cc

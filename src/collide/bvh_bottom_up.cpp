@@ -89,13 +89,8 @@ LinkedTree bottom_up_tree(const Mesh& mesh) {
   return tree;
 }
 
-template LinkedTree bottom_up_tree<Aabb>(const Mesh&);
-template LinkedTree bottom_up_tree<Obb>(const Mesh&);
-template LinkedTree bottom_up_tree<Kdop<6>>(const Mesh&);
-template LinkedTree bottom_up_tree<Kdop<14>>(const Mesh&);
-template LinkedTree bottom_up_tree<Kdop<16>>(const Mesh&);
-template LinkedTree bottom_up_tree<Kdop<18>>(const Mesh&);
-template LinkedTree bottom_up_tree<Kdop<24>>(const Mesh&);
-template LinkedTree bottom_up_tree<Kdop<26>>(const Mesh&);
+#define CC_INSTANTIATE(BV) template LinkedTree bottom_up_tree<BV>(const Mesh&);
+CC_FOR_EACH_BOUNDING_VOLUME(CC_INSTANTIATE)
+#undef CC_INSTANTIATE
 
 }  // namespace cc::detail

@@ -172,22 +172,11 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> collide_brute_force(const M
   return pairs;
 }
 
-template Aabb moved_volume<Aabb>(const Bvh<Aabb>&, std::size_t, const RigidTransform&, BvUpdate);
-template Obb moved_volume<Obb>(const Bvh<Obb>&, std::size_t, const RigidTransform&, BvUpdate);
-template CollisionResult collide<Aabb>(const Bvh<Aabb>&, const RigidTransform&, const Bvh<Aabb>&, const RigidTransform&,
-                                       const CollideOptions&);
-template CollisionResult collide<Obb>(const Bvh<Obb>&, const RigidTransform&, const Bvh<Obb>&, const RigidTransform&,
-                                      const CollideOptions&);
-#define CC_COLLIDE_KDOP(K)                                                                                      \
-  template CollisionResult collide<Kdop<K>>(const Bvh<Kdop<K>>&, const RigidTransform&, const Bvh<Kdop<K>>&, \
-                                            const RigidTransform&, const CollideOptions&);     \
-  template Kdop<K> moved_volume<Kdop<K>>(const Bvh<Kdop<K>>&, std::size_t, const RigidTransform&, BvUpdate);
-CC_COLLIDE_KDOP(6)
-CC_COLLIDE_KDOP(14)
-CC_COLLIDE_KDOP(16)
-CC_COLLIDE_KDOP(18)
-CC_COLLIDE_KDOP(24)
-CC_COLLIDE_KDOP(26)
-#undef CC_COLLIDE_KDOP
+#define CC_INSTANTIATE(BV)                                                                                \
+  template CollisionResult collide<BV>(const Bvh<BV>&, const RigidTransform&, const Bvh<BV>&, const RigidTransform&, \
+                                       const CollideOptions&);                                          \
+  template BV moved_volume<BV>(const Bvh<BV>&, std::size_t, const RigidTransform&, BvUpdate);
+CC_FOR_EACH_BOUNDING_VOLUME(CC_INSTANTIATE)
+#undef CC_INSTANTIATE
 
 }  // namespace cc

@@ -76,13 +76,8 @@ LinkedTree incremental_tree(const Mesh& mesh) {
   return tree;
 }
 
-template LinkedTree incremental_tree<Aabb>(const Mesh&);
-template LinkedTree incremental_tree<Obb>(const Mesh&);
-template LinkedTree incremental_tree<Kdop<6>>(const Mesh&);
-template LinkedTree incremental_tree<Kdop<14>>(const Mesh&);
-template LinkedTree incremental_tree<Kdop<16>>(const Mesh&);
-template LinkedTree incremental_tree<Kdop<18>>(const Mesh&);
-template LinkedTree incremental_tree<Kdop<24>>(const Mesh&);
-template LinkedTree incremental_tree<Kdop<26>>(const Mesh&);
+#define CC_INSTANTIATE(BV) template LinkedTree incremental_tree<BV>(const Mesh&);
+CC_FOR_EACH_BOUNDING_VOLUME(CC_INSTANTIATE)
+#undef CC_INSTANTIATE
 
 }  // namespace cc::detail

@@ -161,13 +161,8 @@ Topology top_down_topology(const Mesh& mesh, const BuildOptions& options) {
   return TopDown<BV>(mesh, options).build();
 }
 
-template Topology top_down_topology<Aabb>(const Mesh&, const BuildOptions&);
-template Topology top_down_topology<Obb>(const Mesh&, const BuildOptions&);
-template Topology top_down_topology<Kdop<6>>(const Mesh&, const BuildOptions&);
-template Topology top_down_topology<Kdop<14>>(const Mesh&, const BuildOptions&);
-template Topology top_down_topology<Kdop<16>>(const Mesh&, const BuildOptions&);
-template Topology top_down_topology<Kdop<18>>(const Mesh&, const BuildOptions&);
-template Topology top_down_topology<Kdop<24>>(const Mesh&, const BuildOptions&);
-template Topology top_down_topology<Kdop<26>>(const Mesh&, const BuildOptions&);
+#define CC_INSTANTIATE(BV) template Topology top_down_topology<BV>(const Mesh&, const BuildOptions&);
+CC_FOR_EACH_BOUNDING_VOLUME(CC_INSTANTIATE)
+#undef CC_INSTANTIATE
 
 }  // namespace cc::detail

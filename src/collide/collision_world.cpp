@@ -47,13 +47,8 @@ std::vector<ObjectContact> CollisionWorld<BV>::narrow_phase() const {
   return out;
 }
 
-template class CollisionWorld<Aabb>;
-template class CollisionWorld<Obb>;
-template class CollisionWorld<Kdop<6>>;
-template class CollisionWorld<Kdop<14>>;
-template class CollisionWorld<Kdop<16>>;
-template class CollisionWorld<Kdop<18>>;
-template class CollisionWorld<Kdop<24>>;
-template class CollisionWorld<Kdop<26>>;
+#define CC_INSTANTIATE(BV) template class CollisionWorld<BV>;
+CC_FOR_EACH_BOUNDING_VOLUME(CC_INSTANTIATE)
+#undef CC_INSTANTIATE
 
 }  // namespace cc

@@ -186,19 +186,12 @@ RayMeshHit ray_mesh_brute_force(const Mesh& mesh, const Ray& ray) {
   return result;
 }
 
-#define CC_RAY_MESH(BV)                                                          \
+#define CC_INSTANTIATE(BV)                                                       \
   template double ray_mesh_pad<BV>(const Bvh<BV>&, const Ray&);                  \
   template RayVolumeEntry ray_volume_entry<BV>(const BV&, const Ray&, double); \
   template RayMeshHit ray_mesh_closest<BV>(const Bvh<BV>&, const Ray&);          \
   template RayMeshHit ray_mesh_any<BV>(const Bvh<BV>&, const Ray&);
-CC_RAY_MESH(Aabb)
-CC_RAY_MESH(Obb)
-CC_RAY_MESH(Kdop<6>)
-CC_RAY_MESH(Kdop<14>)
-CC_RAY_MESH(Kdop<16>)
-CC_RAY_MESH(Kdop<18>)
-CC_RAY_MESH(Kdop<24>)
-CC_RAY_MESH(Kdop<26>)
-#undef CC_RAY_MESH
+CC_FOR_EACH_BOUNDING_VOLUME(CC_INSTANTIATE)
+#undef CC_INSTANTIATE
 
 }  // namespace cc

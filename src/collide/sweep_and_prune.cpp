@@ -26,10 +26,8 @@ void check(const Aabb& box, const char* what, ObjectId id) {
 }  // namespace
 
 // The order of the lists: by value, lower endpoints before upper ones at equal values (so that
-// touching boxes overlap); the object being removed sorts after everything.
-bool SweepAndPrune::before(const Endpoint& a, const Endpoint& b) const {
-  const bool a_leaves = a.id == leaving_, b_leaves = b.id == leaving_;
-  if (a_leaves != b_leaves) return b_leaves;
+// touching boxes overlap).
+bool SweepAndPrune::before(const Endpoint& a, const Endpoint& b) {
   if (a.value != b.value) return a.value < b.value;
   return !a.upper && b.upper;
 }
@@ -57,15 +55,22 @@ void SweepAndPrune::move(ObjectId id, const Aabb& box) {
 
 void SweepAndPrune::remove(ObjectId id) {
   if (id >= boxes_.size() || !alive_[id]) throw std::invalid_argument("SweepAndPrune::remove: no object " + std::to_string(id));
-  // The object moves past every other one to the end of each list, which clears its overlaps
-  // swap by swap, and then its endpoints are dropped.
-  leaving_ = id;
+  // The object's endpoints move past every other one to the end of each list (upper first),
+  // which clears its overlaps swap by swap, and are then dropped.
   for (int axis = 0; axis < 3; ++axis) {
-    resort(axis);
     auto& list = axes_[axis];
+    for (const bool upper : {true, false}) {
+      const std::size_t end = list.size() - (upper ? 1 : 2);
+      std::size_t i = 0;
+      while (list[i].id != id || list[i].upper != upper) ++i;
+      for (; i < end; ++i) {
+        flip(axis, list[i + 1], list[i]);
+        std::swap(list[i], list[i + 1]);
+        ++swaps_;
+      }
+    }
     list.resize(list.size() - 2);
   }
-  leaving_ = UINT32_MAX;
   alive_[id] = false;
   --live_;
 }

@@ -58,14 +58,13 @@ class SweepAndPrune {
     ObjectId id;
     bool upper;
   };
-  bool before(const Endpoint& a, const Endpoint& b) const;
+  static bool before(const Endpoint& a, const Endpoint& b);
   void resort(int axis);
   void flip(int axis, const Endpoint& moving_left, const Endpoint& moved_right);
   void set_overlap(std::uint64_t key, bool overlapping);
 
   std::vector<Aabb> boxes_;
   std::vector<bool> alive_;
-  ObjectId leaving_ = UINT32_MAX;  // during remove(): the object whose endpoints sort last
   std::size_t live_ = 0;
   std::vector<Endpoint> axes_[3];
   std::unordered_map<std::uint64_t, std::uint8_t> axis_bits_;  // pairs overlapping on some axis
