@@ -97,7 +97,7 @@ MeshPair generate_meshes(ValueSource& v, const GenerateOptions& options) {
       break;
     default:  // brought to near contact along a random direction
       m.pose_a.rotation = fcl_meshes ? Mat3::identity() : draw_rotation(v);
-      m.pose_b.rotation = fcl_meshes ? fcl_style_pose(c).rotation : draw_rotation(v);
+      m.pose_b.rotation = fcl_meshes ? fcl_style_rotation(c) : draw_rotation(v);
       bisect_to_contact(m, c);
   }
   if (options.out_of_contract && c.chance(10)) out_of_contract(m, v);

@@ -13,18 +13,6 @@ constexpr double kPi = 3.141592653589793;
 double unit(Choices& c) { return static_cast<double>(c.draw(std::uint64_t{1} << 53)) * 0x1p-53; }
 double between(Choices& c, double lo, double hi) { return lo + (hi - lo) * unit(c); }
 
-// R = Rz(c) Ry(b) Rx(a) for Euler angles drawn in [-pi, pi], as FCL's test utility does.
-Mat3 euler_rotation(Choices& c) {
-  const double a = between(c, -kPi, kPi), b = between(c, -kPi, kPi), g = between(c, -kPi, kPi);
-  const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b), cg = std::cos(g),
-               sg = std::sin(g);
-  Mat3 m;
-  m(0, 0) = cb * cg, m(0, 1) = sa * sb * cg - ca * sg, m(0, 2) = ca * sb * cg + sa * sg;
-  m(1, 0) = cb * sg, m(1, 1) = sa * sb * sg + ca * cg, m(1, 2) = ca * sb * sg - sa * cg;
-  m(2, 0) = -sb, m(2, 1) = sa * cb, m(2, 2) = ca * cb;
-  return m;
-}
-
 // The furthest any vertex of the mesh is from its pose's origin, in norm1 (a bound on its
 // extent in any direction).
 double reach(const Mesh& m) {
@@ -35,9 +23,20 @@ double reach(const Mesh& m) {
 
 }  // namespace
 
+Mat3 fcl_style_rotation(Choices& c) {
+  const double a = between(c, -kPi, kPi), b = between(c, -kPi, kPi), g = between(c, -kPi, kPi);
+  const double ca = std::cos(a), sa = std::sin(a), cb = std::cos(b), sb = std::sin(b), cg = std::cos(g),
+               sg = std::sin(g);
+  Mat3 m;
+  m(0, 0) = cb * cg, m(0, 1) = sa * sb * cg - ca * sg, m(0, 2) = ca * sb * cg + sa * sg;
+  m(1, 0) = cb * sg, m(1, 1) = sa * sb * sg + ca * cg, m(1, 2) = ca * sb * sg - sa * cg;
+  m(2, 0) = -sb, m(2, 1) = sa * cb, m(2, 2) = ca * cb;
+  return m;
+}
+
 RigidTransform fcl_style_pose(Choices& c) {
   RigidTransform t;
-  t.rotation = euler_rotation(c);
+  t.rotation = fcl_style_rotation(c);
   t.translation = {between(c, -3000, 3000), between(c, -3000, 3000), between(c, 0, 3000)};
   return t;
 }

@@ -7,8 +7,12 @@
 
 namespace cc::harness {
 
-/// A pose as FCL's test utility draws rob.obj's in env.obj: R = Rz(c) Ry(b) Rx(a) for Euler
-/// angles in [-pi, pi], translation in [-3000, 3000]^2 x [0, 3000].
+/// A rotation as FCL's test utility draws one: R = Rz(c) Ry(b) Rx(a) for Euler angles in
+/// [-pi, pi].
+Mat3 fcl_style_rotation(Choices& c);
+
+/// A pose as FCL's test utility draws rob.obj's in env.obj: fcl_style_rotation, then a
+/// translation in [-3000, 3000]^2 x [0, 3000].
 RigidTransform fcl_style_pose(Choices& c);
 
 /// b moved along a random direction until the meshes almost touch: from a placement where they

@@ -55,7 +55,6 @@ struct Map {
   Sphere sphere(const Sphere& s) { return {point(s.center), length(s.radius)}; }
 
   std::optional<Input> operator()(const RayAabbInput& in) {
-    if (relation == Relation::swap_shapes) return std::nullopt;
     RayAabbInput r = in;
     r.ray.origin = point(in.ray.origin);
     r.ray.dir = point(in.ray.dir);  // scaled too: t stays the same
@@ -84,26 +83,22 @@ struct Map {
     return ObbObbInput{obb(in.a), obb(in.b)};
   }
   std::optional<Input> operator()(const TriAabbInput& in) {
-    if (relation == Relation::swap_shapes) return std::nullopt;
     return TriAabbInput{triangle(in.tri), box(in.box)};
   }
   std::optional<Input> operator()(const TriObbInput& in) {
-    if (relation == Relation::swap_shapes) return std::nullopt;
     return TriObbInput{triangle(in.tri), obb(in.box)};
   }
   std::optional<Input> operator()(const TriTriInput& in) {
     if (relation == Relation::swap_shapes) return TriTriInput{in.b, in.a};
     return TriTriInput{triangle(in.a), triangle(in.b)};
   }
-  // Meshes: the world's axes permuted, which permutes the rows of both poses; the relative
-  // transform, and with it every computation of the library, is unchanged bit for bit. (A flip
-  // would make the poses improper rotations; swapping the meshes transposes the pairs but moves
-  // a into b's frame instead, with other roundings; scaling would copy the meshes.)
+  // Meshes: the world's axes permuted (the only relation that applies to them), which permutes
+  // the rows of both poses; the relative transform, and with it every computation of the
+  // library, is unchanged bit for bit.
   std::optional<Input> operator()(const MeshMeshInput& in) { return meshes(in.meshes, MeshMeshInput{}); }
   std::optional<Input> operator()(const MeshMeshFirstInput& in) { return meshes(in.meshes, MeshMeshFirstInput{}); }
   template <class Query>
   std::optional<Input> meshes(const MeshPair& m, Query out) {
-    if (relation != Relation::permute_axes) return std::nullopt;
     out.meshes = m;
     for (RigidTransform* pose : {&out.meshes.pose_a, &out.meshes.pose_b}) {
       for (int j = 0; j < 3; ++j) pose->rotation.col[j] = point(pose->rotation.col[j]);
@@ -162,7 +157,16 @@ std::string_view to_string(Relation r) {
   return "?";
 }
 
+bool relation_applies(QueryKind kind, Relation relation) {
+  // A flip would make a pose an improper rotation; swapping the meshes transposes the pairs but
+  // moves a into b's frame instead, with other roundings; scaling would copy the meshes.
+  if (is_mesh_query(kind)) return relation == Relation::permute_axes;
+  const bool two_shapes_alike = kind != QueryKind::ray_aabb && kind != QueryKind::tri_aabb && kind != QueryKind::tri_obb;
+  return relation != Relation::swap_shapes || two_shapes_alike;
+}
+
 std::optional<Input> transform(const Input& input, Relation relation, int parameter) {
+  if (!relation_applies(kind_of(input), relation)) return std::nullopt;
   Map map{relation, parameter};
   std::optional<Input> out = std::visit(map, input);
   if (!map.ok) return std::nullopt;

@@ -19,10 +19,14 @@ enum class Relation {
 
 std::string_view to_string(Relation r);
 
-/// The transformed query, or nothing when the relation does not apply: no second shape to swap,
-/// a k-DOP direction set not closed under the operation (16 under both, 24 under flips), a
-/// scaling that would overflow, underflow or change a value's precision, or a mesh query under
-/// anything but a permutation (of the world's axes: both poses' rows).
+/// Whether the relation applies to queries of this kind at all: swapping needs two shapes of the
+/// same kind; a mesh query takes only a permutation (of the world's axes: both poses' rows).
+bool relation_applies(QueryKind kind, Relation relation);
+
+/// The transformed query, or nothing when the relation does not apply: to its kind (see
+/// relation_applies), or to this input: a k-DOP direction set not closed under the operation
+/// (16 under both, 24 under flips), a scaling that would overflow, underflow or change a
+/// value's precision.
 std::optional<Input> transform(const Input& input, Relation relation, int parameter);
 
 /// The query with every finite nonzero value outside [2^-250, 2^250] in magnitude replaced by 0:

@@ -24,64 +24,65 @@ std::string one_line(std::string message) {
   return message;
 }
 
-// The coordinates of every `v` line, read exactly, in file order.
-std::vector<Vec3> exact_vertices(const std::filesystem::path& path, const std::string& text) {
-  std::vector<Vec3> out;
-  std::istringstream lines(text);
-  std::string line;
-  for (std::size_t number = 1; std::getline(lines, line); ++number) {
-    std::istringstream tokens(line);
-    std::string keyword;
-    if (!(tokens >> keyword) || keyword != "v") continue;
-    Vec3 p;
-    for (int k = 0; k < 3; ++k) {
-      std::string token;
-      if (!(tokens >> token)) fail(path, number, "a vertex needs three coordinates");
-      const bool plus = token.size() > 1 && token[0] == '+' && token[1] != '+' && token[1] != '-';
-      const char* begin = token.data() + (plus ? 1 : 0);
-      const char* end = token.data() + token.size();
-      double x = 0;
-      const auto [ptr, ec] = std::from_chars(begin, end, x);
-      if (ec == std::errc::result_out_of_range) fail(path, number, "coordinate \"" + token + "\" is out of range");
-      if (ec != std::errc() || ptr != end) fail(path, number, "\"" + token + "\" is not a number");
-      if (!std::isfinite(x)) fail(path, number, "coordinate \"" + token + "\" is not finite");
-      p[k] = x;
-    }
-    out.push_back(p);
-  }
-  return out;
+// A coordinate as std::from_chars reads it (a leading '+' allowed, as strtod allows it).
+double coordinate(const std::filesystem::path& path, std::size_t line, const std::string& token) {
+  const bool plus = token.size() > 1 && token[0] == '+' && token[1] != '+' && token[1] != '-';
+  const char* begin = token.data() + (plus ? 1 : 0);
+  const char* end = token.data() + token.size();
+  double x = 0;
+  const auto [ptr, ec] = std::from_chars(begin, end, x);
+  if (ec == std::errc::result_out_of_range) fail(path, line, "coordinate \"" + token + "\" is out of range");
+  if (ec != std::errc() || ptr != end) fail(path, line, "\"" + token + "\" is not a number");
+  if (!std::isfinite(x)) fail(path, line, "coordinate \"" + token + "\" is not finite");
+  return x;
 }
 
-// Every `f` line names at least three vertices, each within the file's `v` lines (1-based; a
-// negative index counts back from the last vertex read so far). tinyobjloader checks indices only
-// after the whole file, naming its last line; this names the face's own.
-void check_faces(const std::filesystem::path& path, const std::string& text, std::size_t vertex_count) {
+// One pass over the file: the coordinates of every `v` line, read exactly, in file order; and
+// every `f` line checked to name at least three vertices, each within the file's `v` lines
+// (1-based; a negative index counts back from the last vertex read so far). tinyobjloader
+// checks indices only after the whole file, naming its last line; this names the face's own.
+std::vector<Vec3> exact_vertices(const std::filesystem::path& path, const std::string& text) {
+  std::vector<Vec3> out;
+  std::vector<std::pair<std::size_t, long>> ahead;  // faces naming a vertex not read yet: line, index
   std::istringstream lines(text);
   std::string line;
-  std::size_t seen = 0;
   for (std::size_t number = 1; std::getline(lines, line); ++number) {
     std::istringstream tokens(line);
     std::string keyword;
     if (!(tokens >> keyword)) continue;
-    if (keyword == "v") ++seen;
-    if (keyword != "f") continue;
-    int corners = 0;
-    for (std::string token; tokens >> token; ++corners) {
-      const std::string index_text = token.substr(0, token.find('/'));
-      long index = 0;
-      const auto [ptr, ec] = std::from_chars(index_text.data(), index_text.data() + index_text.size(), index);
-      if (ec != std::errc() || ptr != index_text.data() + index_text.size()) {
-        fail(path, number, "\"" + token + "\" is not a vertex index");
+    if (keyword == "v") {
+      Vec3 p;
+      for (int k = 0; k < 3; ++k) {
+        std::string token;
+        if (!(tokens >> token)) fail(path, number, "a vertex needs three coordinates");
+        p[k] = coordinate(path, number, token);
       }
-      const bool valid = index > 0 ? static_cast<std::size_t>(index) <= vertex_count
-                                   : index < 0 && static_cast<std::size_t>(-index) <= seen;
-      if (!valid) {
-        fail(path, number, "the face names vertex " + index_text + ", but the file has " + std::to_string(vertex_count) +
-                               " vertices" + (index < 0 ? " (" + std::to_string(seen) + " before this line)" : ""));
+      out.push_back(p);
+    } else if (keyword == "f") {
+      int corners = 0;
+      for (std::string token; tokens >> token; ++corners) {
+        const std::string index_text = token.substr(0, token.find('/'));
+        long index = 0;
+        const auto [ptr, ec] = std::from_chars(index_text.data(), index_text.data() + index_text.size(), index);
+        if (ec != std::errc() || ptr != index_text.data() + index_text.size()) {
+          fail(path, number, "\"" + token + "\" is not a vertex index");
+        }
+        if (index == 0 || (index < 0 && static_cast<std::size_t>(-index) > out.size())) {
+          fail(path, number, "the face names vertex " + index_text + ", but " + std::to_string(out.size()) +
+                                 " vertices come before this line");
+        }
+        if (index > 0 && static_cast<std::size_t>(index) > out.size()) ahead.emplace_back(number, index);
       }
+      if (corners < 3) fail(path, number, "a face needs three vertices, this one has " + std::to_string(corners));
     }
-    if (corners < 3) fail(path, number, "a face needs three vertices, this one has " + std::to_string(corners));
   }
+  for (const auto& [number, index] : ahead) {
+    if (static_cast<std::size_t>(index) > out.size()) {
+      fail(path, number, "the face names vertex " + std::to_string(index) + ", but the file has " +
+                             std::to_string(out.size()) + " vertices");
+    }
+  }
+  return out;
 }
 
 }  // namespace
@@ -94,7 +95,6 @@ Mesh read_obj_file(const std::filesystem::path& path) {
   const std::string text = buffer.str();
 
   const std::vector<Vec3> vertices = exact_vertices(path, text);
-  check_faces(path, text, vertices.size());
 
   tinyobj::ObjReaderConfig config;
   config.triangulate = true;

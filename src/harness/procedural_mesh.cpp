@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <random>
+
+#include "harness/seeded_random.h"
 
 namespace cc::harness {
 
@@ -28,17 +29,7 @@ std::optional<ProceduralMesh::Shape> shape_named(std::string_view name) {
 
 namespace {
 
-// Doubles in [0, 1) from the raw 64-bit outputs (std's distributions differ between libraries).
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : engine_(seed) {}
-  double unit() { return static_cast<double>(engine_() >> 11) * 0x1p-53; }
-  double between(double lo, double hi) { return lo + (hi - lo) * unit(); }
-  std::uint64_t below(std::uint64_t n) { return engine_() % n; }
-
- private:
-  std::mt19937_64 engine_;
-};
+using Random = SeededRandom;
 
 class Soup {
  public:

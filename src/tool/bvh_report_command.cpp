@@ -75,7 +75,7 @@ double approximate_over_exact(const Bvh<BV>& b, const RigidTransform& t) {
   return median(ratios);
 }
 
-Tally run_library(const harness::LibraryBvh& library, std::vector<Pose>& poses) {
+Tally run_library(const harness::LibraryBvh& library, const std::vector<Pose>& poses) {
   Tally t;
   t.name = std::string(to_string(library.bv)) + " " + std::string(to_string(library.build.strategy)) + " " +
            std::string(to_string(library.update));
@@ -84,8 +84,7 @@ Tally run_library(const harness::LibraryBvh& library, std::vector<Pose>& poses) 
     const Bvh<BV> a = build_bvh<BV>(*poses[0].m.a.mesh, library.build);
     const Bvh<BV> b = build_bvh<BV>(*poses[0].m.b.mesh, library.build);
     t.build_ms = ms_since(start);
-    for (Pose& p : poses) {
-      p.m.library = library;
+    for (const Pose& p : poses) {
       const auto q = Clock::now();
       const CollideOptions options{CollisionMode::all_pairs, library.update, library.descent};
       const CollisionResult r = collide(a, p.m.pose_a, b, p.m.pose_b, options);
@@ -178,7 +177,7 @@ int run(const ReportArgs& args) {
   for (int i = 0; i < args.random + args.near; ++i) {
     Pose p{base, i >= args.random, {}};
     if (p.near) {
-      p.m.pose_b.rotation = harness::fcl_style_pose(c).rotation;
+      p.m.pose_b.rotation = harness::fcl_style_rotation(c);
       harness::bisect_to_contact(p.m, c);  // with the default hierarchy: OBB, top-down
     } else {
       p.m.pose_b = harness::fcl_style_pose(c);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "harness/procedural_mesh.h"
+#include "harness/seeded_random.h"
 
 namespace cc {
 namespace {
@@ -36,18 +37,9 @@ std::string describe(const Ray& r) {
   return buf;
 }
 
-// Doubles in [0, 1) from the raw 64-bit outputs (std's distributions differ between libraries).
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : engine_(seed) {}
-  double unit() { return static_cast<double>(engine_() >> 11) * 0x1p-53; }
-  double between(double lo, double hi) { return lo + (hi - lo) * unit(); }
-  std::uint64_t below(std::uint64_t n) { return engine_() % n; }
-  Vec3 in_cube(double h) { return {between(-h, h), between(-h, h), between(-h, h)}; }
+using Random = harness::SeededRandom;
 
- private:
-  std::mt19937_64 engine_;
-};
+Vec3 in_cube(Random& random, double h) { return {random.between(-h, h), random.between(-h, h), random.between(-h, h)}; }
 
 // Rays of every kind the traversal must get right, for a mesh of about unit size around the
 // origin: random ones, ones aimed at a face's vertex or edge (shared with its neighbours: ties),
@@ -60,14 +52,14 @@ std::vector<Ray> rays_for(const Mesh& mesh, std::uint64_t seed, int count) {
     const Triangle tri = mesh.triangle(random.below(mesh.size()));
     Vec3 target;
     switch (random.below(4)) {
-      case 0: target = random.in_cube(1); break;
+      case 0: target = in_cube(random, 1); break;
       case 1: target = tri.v[random.below(3)]; break;
       case 2: target = 0.5 * (tri.v[0] + tri.v[1]); break;
       default: target = (1.0 / 3) * (tri.v[0] + tri.v[1] + tri.v[2]); break;
     }
-    Ray r{random.in_cube(3), {}, 0, INFINITY};
+    Ray r{in_cube(random, 3), {}, 0, INFINITY};
     switch (i % 8) {
-      case 0: r.origin = random.in_cube(0.2); break;  // inside (a sphere's, a torus's hole)
+      case 0: r.origin = in_cube(random, 0.2); break;  // inside (a sphere's, a torus's hole)
       case 1: r.tmax = random.between(0, 1); break;    // may end before the mesh
       case 2: r.tmin = -INFINITY; break;                // a line
       case 3: r.origin.z = target.z = 0; break;         // in the plane z = 0
@@ -163,7 +155,7 @@ TYPED_TEST(RayMeshTest, TheHierarchyPrunes) {
   int hits = 0;
   for (int i = 0; i < 100; ++i) {
     const Vec3 origin = 3.0 * Vec3{random.between(-1, 1), random.between(-1, 1), 1};
-    const RayMeshHit h = ray_mesh_closest(bvh, {origin, random.in_cube(0.5) - origin, 0, INFINITY});
+    const RayMeshHit h = ray_mesh_closest(bvh, {origin, in_cube(random, 0.5) - origin, 0, INFINITY});
     if (!h.hit) continue;
     ++hits;
     tests += h.counters.triangle_tests;

@@ -7,6 +7,7 @@
 #include "harness/features.h"
 #include "harness/input_json.h"
 #include "oracle/exact/exact_reference.h"
+#include "case_budget.h"
 #include "test_paths.h"
 
 namespace cc::harness {
@@ -34,7 +35,7 @@ TEST(Generate, MeetsTouchingParallelAndDegenerateCases) {
   const exact::ExactRationalReference exact;
   for (QueryKind kind : kAllQueryKinds) {
     int touching = 0, parallel = 0, degenerate = 0, hits = 0, misses = 0;
-    const int n = is_mesh_query(kind) ? 200 : 2000;  // a mesh case is judged in about 30 ms
+    const int n = test::case_budget(kind, 2000);
     for (int i = 0; i < n; ++i) {
       RandomChoices c(static_cast<std::uint64_t>(i));
       const Input input = generate(kind, c, kOptions);
@@ -59,7 +60,7 @@ TEST(Generate, OutOfContractCasesLeaveTheDomain) {
   const exact::ExactRationalReference exact;
   for (QueryKind kind : kAllQueryKinds) {
     int outside = 0;
-    const int n = is_mesh_query(kind) ? 100 : 500;
+    const int n = test::case_budget(kind, 500);
     for (int i = 0; i < n; ++i) {
       RandomChoices c(static_cast<std::uint64_t>(i));
       outside += exact.judge(generate(kind, c, {.out_of_contract = true, .mesh_folder = test::fcl_mesh_folder()})).contract != Contract::in;

@@ -61,9 +61,6 @@ std::string describe(const LibraryBvh& l) {
          std::string(to_string(l.descent));
 }
 
-// A mesh query of either kind, as a MeshPair (and the input, for features and printing).
-MeshPair meshes(const Input& input) { return *meshes_of(input); }
-
 // Each pair of `found` is in `all`, and each pair of `all` missing from `found` is apart by
 // less than the band (exact margin in (-band, 0)).
 void expect_brute_force_up_to_band(const Pairs& found, const Pairs& all, const ExactVerdict& v, const std::string& what) {
@@ -82,17 +79,22 @@ void expect_brute_force_up_to_band(const Pairs& found, const Pairs& all, const E
   }
 }
 
-bool in_domain(const Input& input) { return !exact::meshes_outside_domain(*meshes_of(input)); }
+// The exact verdict on a generated mesh query, counted in `met`; inputs outside the library's
+// domain, or that the reference cannot decide, are discarded.
+ExactVerdict judged(const Input& input, Met& met) {
+  RC_PRE(!exact::meshes_outside_domain(*meshes_of(input)));
+  const ExactVerdict v = exact::judge_meshes(*meshes_of(input));
+  RC_PRE(v.decided);
+  met.count(features_of(input, v));
+  return v;
+}
 
 TEST(BvhProperties, ThePairsAreBruteForcesWhateverTheHierarchy) {
   Met met;
   const std::string property = "every hierarchy finds brute force's pairs";
   const bool passed = check_property(property, QueryKind::mesh_mesh, 0, 40, met, [&](const Input& input) {
-    RC_PRE(in_domain(input));
-    const MeshPair m = meshes(input);
-    const ExactVerdict v = exact::judge_meshes(m);
-    RC_PRE(v.decided);
-    met.count(features_of(input, v));
+    const ExactVerdict v = judged(input, met);
+    const MeshPair& m = *meshes_of(input);
     const Pairs all = collide_brute_force(*m.a.mesh, m.pose_a, *m.b.mesh, m.pose_b);
     for (const LibraryBvh& l : hierarchies()) {
       MeshPair with = m;
@@ -108,11 +110,8 @@ TEST(BvhProperties, SwappingTheMeshesTransposesThePairs) {
   Met met;
   const std::string property = "swapping the meshes transposes the pairs";
   const bool passed = check_property(property, QueryKind::mesh_mesh, 0, 40, met, [&](const Input& input) {
-    RC_PRE(in_domain(input));
-    const MeshPair m = meshes(input);
-    const ExactVerdict v = exact::judge_meshes(m);
-    RC_PRE(v.decided);
-    met.count(features_of(input, v));
+    const ExactVerdict v = judged(input, met);
+    const MeshPair& m = *meshes_of(input);
     MeshPair swapped = m;
     std::swap(swapped.a, swapped.b);
     std::swap(swapped.pose_a, swapped.pose_b);
@@ -135,9 +134,8 @@ TEST(BvhProperties, AFirstHitIsOneOfAllThePairs) {
   Met met;
   const std::string property = "a first hit is one of all the pairs";
   const bool passed = check_property(property, QueryKind::mesh_mesh_first, 0, 150, met, [&](const Input& input) {
-    RC_PRE(in_domain(input));
-    const MeshPair m = meshes(input);
-    met.count(features_of(input, exact::judge_meshes(m)));
+    judged(input, met);
+    const MeshPair& m = *meshes_of(input);
     const Pairs first = library_collide(m, CollisionMode::first_hit).pairs;
     const Pairs all = library_collide(m, CollisionMode::all_pairs).pairs;
     RC_ASSERT(first.size() <= 1u);

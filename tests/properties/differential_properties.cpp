@@ -7,6 +7,7 @@
 #include "harness/evaluate.h"
 #include "harness/input_json.h"
 #include "oracle/exact/exact_reference.h"
+#include "case_budget.h"
 #include "properties/property.h"
 
 namespace cc::test {
@@ -21,8 +22,7 @@ TEST_P(Differential, TheLibraryIsNeverAnImplBug) {
   const exact::ExactRationalReference exact;
   const std::string property = std::string(name(kind)) + " is never an impl_bug";
   Met met;
-  // A mesh case builds two hierarchies and tests its near pairs exactly: about 30 ms.
-  const int cases = is_mesh_query(kind) ? 300 : 1500;
+  const int cases = case_budget(kind, 1500);
   const bool passed = check_property(property, kind, 10, cases, met, [&](const Input& input) {
     const Evaluation e = evaluate(input, exact, nullptr);
     met.count(features_of(input, e.exact));

@@ -12,6 +12,7 @@
 #include "harness/library.h"
 #include "harness/metamorphic.h"
 #include "oracle/exact/exact_reference.h"
+#include "case_budget.h"
 #include "properties/property.h"
 
 namespace cc::test {
@@ -32,7 +33,7 @@ TEST_P(Metamorphic, TheAnswerIsUnchanged) {
   const std::string property = std::string(name(kind)) + ": " + std::string(to_string(relation));
   Met met;
   int applied = 0;
-  const int cases = is_mesh_query(kind) ? 200 : 1000;  // a mesh case takes about 30 ms
+  const int cases = case_budget(kind, 1000);
   const bool passed = check_property(property, kind, 0, cases, met, [&](const Input& generated) {
     const Input input = relation == Relation::scale ? flush_extremes(generated) : generated;
     met.count(features_of(input, exact.judge(input)));
@@ -61,10 +62,7 @@ std::vector<Case> all_cases() {
   std::vector<Case> cases;
   for (QueryKind kind : kAllQueryKinds) {
     for (Relation r : {Relation::swap_shapes, Relation::permute_axes, Relation::flip_axis, Relation::scale}) {
-      const bool has_two_shapes = kind != QueryKind::ray_aabb && kind != QueryKind::tri_aabb && kind != QueryKind::tri_obb;
-      if (r == Relation::swap_shapes && !has_two_shapes) continue;
-      if (is_mesh_query(kind) && r != Relation::permute_axes) continue;  // see metamorphic.h
-      cases.push_back({kind, r});
+      if (relation_applies(kind, r)) cases.push_back({kind, r});
     }
   }
   return cases;
