@@ -73,11 +73,7 @@ ExactShape box_shape(const Vec3& lo, const Vec3& hi, const std::string& name) {
 
 namespace {
 
-struct Candidate {
-  std::string name;
-  QVec3 axis;
-  Magnitude conditioning;
-};
+using Candidate = CandidateAxis;
 
 int rank_of(const std::vector<QVec3>& d) {
   if (d.empty()) return 0;
@@ -97,26 +93,38 @@ int rank_of(const std::vector<QVec3>& d) {
 
 }  // namespace
 
-SatResult exact_sat(const ExactShape& a, const ExactShape& b) {
-  std::vector<QVec3> dirs = a.directions;
-  std::vector<std::string> names = a.names;
-  dirs.insert(dirs.end(), b.directions.begin(), b.directions.end());
-  names.insert(names.end(), b.names.begin(), b.names.end());
-  std::vector<Magnitude> lengths;
-  for (const QVec3& d : dirs) lengths.push_back(length(d));
+namespace {
 
-  SatResult result;
-  result.rank = rank_of(dirs);
+struct Directions {
+  std::vector<QVec3> dirs;
+  std::vector<std::string> names;
+  std::vector<Magnitude> lengths;
+  int rank = 0;
+};
+
+Directions directions_of(const ExactShape& a, const ExactShape& b) {
+  Directions d{a.directions, a.names, {}, 0};
+  d.dirs.insert(d.dirs.end(), b.directions.begin(), b.directions.end());
+  d.names.insert(d.names.end(), b.names.begin(), b.names.end());
+  for (const QVec3& v : d.dirs) d.lengths.push_back(length(v));
+  d.rank = rank_of(d.dirs);
+  return d;
+}
+
+// The axes of the full-dimensional and the flat cases, which do not depend on the offset.
+std::vector<Candidate> spanning_axes(const Directions& d) {
+  const auto& dirs = d.dirs;
+  const auto& names = d.names;
+  const auto& lengths = d.lengths;
   std::vector<Candidate> candidates;
-  const QVec3 o = b.center - a.center;
-  if (result.rank == 3) {
+  if (d.rank == 3) {
     for (std::size_t i = 0; i < dirs.size(); ++i) {
       for (std::size_t j = i + 1; j < dirs.size(); ++j) {
         const QVec3 c = cross(dirs[i], dirs[j]);
         if (!is_zero(c)) candidates.push_back({names[i] + " x " + names[j], c, lengths[i] * lengths[j]});
       }
     }
-  } else if (result.rank == 2) {
+  } else if (d.rank == 2) {
     // The plane normal from the best-conditioned pair: largest |di x dj|^2 / (|di|^2 |dj|^2).
     std::size_t bi = 0, bj = 0;
     Rational best = -1;
@@ -134,12 +142,52 @@ SatResult exact_sat(const ExactShape& a, const ExactShape& b) {
     for (std::size_t k = 0; k < dirs.size(); ++k) {
       candidates.push_back({n_name + " x " + names[k], cross(n, dirs[k]), n_conditioning * lengths[k]});
     }
-  } else if (result.rank == 1) {
-    const QVec3 g = dirs[0];
-    candidates.push_back({names[0], g, lengths[0]});
+  }
+  return candidates;
+}
+
+}  // namespace
+
+std::vector<CandidateAxis> candidate_axes_for_any_offset(const ExactShape& a, const ExactShape& b) {
+  const Directions d = directions_of(a, b);
+  if (d.rank >= 2) return spanning_axes(d);
+  std::vector<Candidate> candidates;
+  static const char* kAxisNames[] = {"x", "y", "z"};
+  if (d.rank == 1) {
+    const QVec3& g = d.dirs[0];
+    candidates.push_back({d.names[0], g, d.lengths[0]});
+    for (int k = 0; k < 3; ++k) {  // the coordinate axis least parallel to g
+      QVec3 e{0, 0, 0};
+      e[k] = 1;
+      const QVec3 u = cross(g, e);
+      if (is_zero(u) || abs(g[k]) > abs(g[(k + 1) % 3]) || abs(g[k]) > abs(g[(k + 2) % 3])) continue;
+      candidates.push_back({d.names[0] + " x " + kAxisNames[k], u, length(u)});
+      const QVec3 v = cross(g, u);
+      candidates.push_back({d.names[0] + " x (" + d.names[0] + " x " + kAxisNames[k] + ")", v, length(v)});
+      break;
+    }
+    return candidates;
+  }
+  for (int k = 0; k < 3; ++k) {
+    QVec3 e{0, 0, 0};
+    e[k] = 1;
+    candidates.push_back({kAxisNames[k], e, Magnitude::of(1)});
+  }
+  return candidates;
+}
+
+SatResult exact_sat(const ExactShape& a, const ExactShape& b) {
+  const Directions d = directions_of(a, b);
+  SatResult result;
+  result.rank = d.rank;
+  std::vector<Candidate> candidates = spanning_axes(d);
+  const QVec3 o = b.center - a.center;
+  if (result.rank == 1) {  // the line and the direction across it towards o
+    const QVec3& g = d.dirs[0];
+    candidates.push_back({d.names[0], g, d.lengths[0]});
     const QVec3 across = cross(g, cross(g, o));
-    if (!is_zero(across)) candidates.push_back({names[0] + " x (" + names[0] + " x o)", across, length(across)});
-  } else if (!is_zero(o)) {
+    if (!is_zero(across)) candidates.push_back({d.names[0] + " x (" + d.names[0] + " x o)", across, length(across)});
+  } else if (result.rank == 0 && !is_zero(o)) {
     candidates.push_back({"o", o, length(o)});
   }
 

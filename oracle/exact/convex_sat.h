@@ -68,6 +68,20 @@ struct SatResult {
 
 SatResult exact_sat(const ExactShape& a, const ExactShape& b);
 
+/// A candidate separating axis and the divisor that turns a gap along it into a length (see
+/// SatResult).
+struct CandidateAxis {
+  std::string name;
+  QVec3 axis;
+  Magnitude conditioning;
+};
+
+/// Candidate axes that decide whether A and B + s are disjoint for every offset s at once (so
+/// for shapes moving apart or together): exact_sat's axes when the edge directions span space
+/// or a plane; for collinear directions g, the line and two directions across it; for points,
+/// the coordinate axes.
+std::vector<CandidateAxis> candidate_axes_for_any_offset(const ExactShape& a, const ExactShape& b);
+
 /// The two polytopes of an obb_obb, tri_aabb, tri_obb or tri_tri query (finite inputs), in the
 /// order the verdict uses (box first); nothing for other kinds.
 std::optional<std::pair<ExactShape, ExactShape>> polytopes_of(const harness::Input& input);

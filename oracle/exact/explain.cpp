@@ -1,5 +1,6 @@
 // The exact reference's reasoning, for triage: per kind, a table of the axes or slabs that
 // decide, with exact values and the same quantities evaluated in floating point.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -10,6 +11,7 @@
 #include "oracle/exact/exact_kdop_kdop.h"
 #include "oracle/exact/exact_meshes.h"
 #include "oracle/exact/exact_ray_aabb.h"
+#include "oracle/exact/exact_sweep.h"
 #include "oracle/exact/exact_reference.h"
 #include "oracle/exact/judges.h"
 
@@ -231,6 +233,84 @@ struct Explain {
     e.facts.insert(e.facts.begin(), {{"colliding pairs", std::to_string(v.answer.pairs.size())},
                                      {"pairs near contact", std::to_string(v.pair_margins.size())},
                                      {"explained pair", pair}});
+    return e;
+  }
+  // Per frame: the boxes present, the overlapping pairs, and the pair nearest to touching.
+  Explanation operator()(const harness::BroadphaseInput& in) const {
+    const harness::ExactVerdict v = judge(in);
+    Explanation e;
+    e.title = "boxes per frame (closed-box overlap by comparisons of the bounds)";
+    if (v.contract != harness::Contract::in) {
+      e.deciding = v.note;
+      return e;
+    }
+    e.columns = {"frame", "boxes", "overlapping pairs", "pairs"};
+    for (std::size_t f = 0; f < in.frames.size(); ++f) {
+      std::size_t present = 0;
+      for (const auto& box : in.frames[f]) present += box.has_value();
+      std::string listed;
+      for (std::size_t i = 0; i < v.answer.frames[f].size() && i < 8; ++i) {
+        const auto& [a, b] = v.answer.frames[f][i];
+        listed.append("(").append(std::to_string(a)).append(", ").append(std::to_string(b)).append(") ");
+      }
+      if (v.answer.frames[f].size() > 8) listed.append("...");
+      e.rows.push_back({std::to_string(f), std::to_string(present), std::to_string(v.answer.frames[f].size()), listed});
+    }
+    e.deciding = "the pair nearest to touching, over all frames (overlap > 0, gap < 0, relative to the scale)";
+    e.deciding_value = v.margin;
+    return e;
+  }
+  // The faces near the ray, each with its exact first point and its margin.
+  Explanation operator()(const harness::RayMeshInput& in) const {
+    const harness::ExactVerdict v = judge(in);
+    Explanation e;
+    e.title = "faces near the ray (segment against triangle, exact separating axes)";
+    if (v.contract != harness::Contract::in) {
+      e.deciding = v.note;
+      return e;
+    }
+    e.columns = {"face", "hit", "margin"};
+    for (const harness::PairMargin& p : v.pair_margins) {
+      const bool hit = std::binary_search(v.answer.pairs.begin(), v.answer.pairs.end(), p.pair);
+      e.rows.push_back({std::to_string(p.pair.first), hit ? "yes" : "no", num(p.margin)});
+      if (std::fabs(p.margin) == std::fabs(v.margin)) e.deciding_row = static_cast<int>(e.rows.size()) - 1;
+    }
+    e.facts.push_back({"faces", std::to_string(in.mesh.mesh->size())});
+    e.facts.push_back({"faces near the ray", std::to_string(v.pair_margins.size())});
+    if (v.answer.hit) {
+      e.facts.push_back({"first t (exact, rounded)", num(v.answer.params[0])});
+      e.facts.push_back({"t allowed", interval(v.param_ranges[0].first, v.param_ranges[0].second)});
+    }
+    e.deciding = "the face nearest the boundary";
+    e.deciding_value = v.margin;
+    return e;
+  }
+  // Per candidate axis: the projected centres' offset p + t s against the radii r, and the
+  // times at which the projections overlap.
+  Explanation operator()(const harness::MovingObbInput& in) const {
+    const harness::ExactVerdict v = judge(in);
+    Explanation e;
+    e.title = "moving separating axes: |p + t s| <= r";
+    if (v.contract != harness::Contract::in) {
+      e.deciding = v.note;
+      return e;
+    }
+    e.columns = {"axis", "p", "s", "r", "times"};
+    const std::vector<MovingAxis> axes = moving_axes(in.a, in.b);
+    for (const MovingAxis& m : axes) {
+      ExactWindow w;
+      w.restrict(m.p, m.s, m.r);
+      e.rows.push_back({m.axis.name, num(m.p), num(m.s), num(m.r), w.hit() ? interval(to_double(w.first), to_double(w.last)) : "never"});
+    }
+    const ExactWindow window = exact_sweep(axes);
+    e.facts.push_back({"window", window.hit() ? interval(to_double(window.first), to_double(window.last)) : "empty"});
+    if (v.answer.hit) {
+      e.facts.push_back({"t_first allowed", interval(v.param_ranges[0].first, v.param_ranges[0].second)});
+      e.facts.push_back({"t_last allowed", interval(v.param_ranges[1].first, v.param_ranges[1].second)});
+    }
+    e.deciding = v.answer.hit ? "overlap halfway through the window, relative to the scale"
+                              : "the closest approach: minus the largest gap over the axes, relative to the scale";
+    e.deciding_value = v.margin;
     return e;
   }
   template <class In>

@@ -18,5 +18,8 @@ ExactVerdict judge(const harness::TriObbInput& in);
 ExactVerdict judge(const harness::TriTriInput& in);
 ExactVerdict judge(const harness::MeshMeshInput& in);
 ExactVerdict judge(const harness::MeshMeshFirstInput& in);
+ExactVerdict judge(const harness::BroadphaseInput& in);
+ExactVerdict judge(const harness::RayMeshInput& in);
+ExactVerdict judge(const harness::MovingObbInput& in);
 
 }  // namespace cc::exact

@@ -3,6 +3,7 @@
 #include <exception>
 #include <stdexcept>
 
+#include "oracle/fcl/fcl_managers.h"
 #include "oracle/fcl/parties.h"
 
 namespace cc::fcl_oracle {
@@ -49,6 +50,19 @@ struct Ask {
   }
   std::vector<Opinion> operator()(const harness::MeshMeshInput& in) const { return meshes(in.meshes, false); }
   std::vector<Opinion> operator()(const harness::MeshMeshFirstInput& in) const { return meshes(in.meshes, true); }
+  std::vector<Opinion> operator()(const harness::BroadphaseInput& in) const {
+    std::vector<Opinion> out;
+    const std::vector<std::string> parties = fcl_broadphase_parties();
+    for (std::size_t i = 0; i < parties.size(); ++i) {
+      const std::string& manager = fcl_manager_names()[i];
+      out.push_back(guarded(parties[i], [&](const harness::BroadphaseInput& x) { return fcl_broadphase(manager, x); }, in));
+    }
+    return out;
+  }
+  std::vector<Opinion> operator()(const harness::RayMeshInput&) const { return {}; }  // FCL 0.7 casts no rays
+  std::vector<Opinion> operator()(const harness::MovingObbInput& in) const {
+    return {guarded("fcl.continuousCollide", fcl_continuous_collide, in)};
+  }
   static std::vector<Opinion> meshes(const harness::MeshPair& m, bool first_only) {
     std::vector<Opinion> out;
     for (const std::string& party : fcl_mesh_parties()) {
@@ -80,6 +94,9 @@ std::vector<std::string> FclSecondOpinion::parties(QueryKind kind) const {
     case QueryKind::tri_tri: return {"fcl.Intersect::intersect_Triangle"};
     case QueryKind::mesh_mesh:
     case QueryKind::mesh_mesh_first: return fcl_mesh_parties();
+    case QueryKind::broadphase: return fcl_broadphase_parties();
+    case QueryKind::ray_mesh: return {};
+    case QueryKind::moving_obb: return {"fcl.continuousCollide"};
   }
   return {};
 }

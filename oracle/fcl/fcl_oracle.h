@@ -17,6 +17,13 @@ namespace cc::fcl_oracle {
 ///   tri_tri        fcl.Intersect::intersect_Triangle
 ///   mesh_mesh      fcl.BVHModel<OBBd>, <OBBRSSd>, <AABBd>, <KDOPd<18>> (collide with unlimited
 ///                  contacts; mesh_mesh_first: one contact)
+///   broadphase     fcl.<Manager>CollisionManager for each of FCL's seven managers (Naive, SaP,
+///                  SSaP, IntervalTree, DynamicAABBTree, DynamicAABBTree_Array, SpatialHashing),
+///                  given the boxes as the objects' AABBs
+///   ray_mesh       none (FCL 0.7 has no ray queries): the exact reference and the library's
+///                  brute force are the other two opinions
+///   moving_obb     fcl.continuousCollide (conservative advancement under translation; not
+///                  applicable to boxes with a zero extent)
 /// A C++ exception thrown by FCL or libccd is caught and reported as a failed opinion.
 class FclSecondOpinion final : public harness::SecondOpinion {
  public:

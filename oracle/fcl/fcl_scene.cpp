@@ -1,13 +1,5 @@
 #include "oracle/fcl/fcl_scene.h"
 
-#include <fcl/broadphase/broadphase_SSaP.h>
-#include <fcl/broadphase/broadphase_SaP.h>
-#include <fcl/broadphase/broadphase_bruteforce.h>
-#include <fcl/broadphase/broadphase_dynamic_AABB_tree.h>
-#include <fcl/broadphase/broadphase_dynamic_AABB_tree_array.h>
-#include <fcl/broadphase/broadphase_interval_tree.h>
-#include <fcl/broadphase/broadphase_spatialhash.h>
-#include <fcl/broadphase/detail/hierarchy_tree.h>
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/math/bv/OBBRSS.h>
 #include <fcl/narrowphase/collision.h>
@@ -19,28 +11,12 @@
 #include <stdexcept>
 
 #include "oracle/fcl/convert.h"
+#include "oracle/fcl/fcl_managers.h"
 
 namespace cc::fcl_oracle {
 namespace {
 
 using Model = fcl::BVHModel<fcl::OBBRSSd>;
-
-std::unique_ptr<fcl::BroadPhaseCollisionManagerd> make_manager(const std::string& name, const Aabb& world) {
-  if (name == "Naive") return std::make_unique<fcl::NaiveCollisionManagerd>();
-  if (name == "SaP") return std::make_unique<fcl::SaPCollisionManagerd>();
-  if (name == "SSaP") return std::make_unique<fcl::SSaPCollisionManagerd>();
-  if (name == "IntervalTree") return std::make_unique<fcl::IntervalTreeCollisionManagerd>();
-  if (name == "DynamicAABBTree") return std::make_unique<fcl::DynamicAABBTreeCollisionManagerd>();
-  if (name == "DynamicAABBTree_Array") return std::make_unique<fcl::DynamicAABBTreeCollisionManager_Arrayd>();
-  if (name == "SpatialHashing") {
-    using Hash = fcl::SpatialHashingCollisionManagerd<fcl::detail::SimpleHashTable<
-        fcl::AABBd, fcl::CollisionObjectd*, fcl::detail::SpatialHash<double>>>;
-    const double cell = 4;  // about two rock diameters
-    return std::make_unique<Hash>(cell, fcl::Vector3d(world.lo.x, world.lo.y, world.lo.z),
-                                  fcl::Vector3d(world.hi.x, world.hi.y, world.hi.z));
-  }
-  throw std::invalid_argument("unknown FCL broadphase manager \"" + name + "\"");
-}
 
 fcl::Transform3d transform_of(const RigidTransform& t) {
   fcl::Transform3d tf = fcl::Transform3d::Identity();
@@ -59,12 +35,10 @@ struct FclScene::Impl {
   bool registered = false;
 };
 
-std::vector<std::string> FclScene::managers() {
-  return {"Naive", "SaP", "SSaP", "IntervalTree", "DynamicAABBTree", "DynamicAABBTree_Array", "SpatialHashing"};
-}
+std::vector<std::string> FclScene::managers() { return fcl_manager_names(); }
 
 FclScene::FclScene(const std::string& manager, const Aabb& world) : impl_(std::make_unique<Impl>()) {
-  impl_->manager = make_manager(manager, world);
+  impl_->manager = make_fcl_manager(manager, world, 4);  // cells of about two rock diameters
 }
 
 FclScene::~FclScene() = default;

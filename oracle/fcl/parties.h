@@ -28,6 +28,11 @@ Opinion fcl_intersect_triangle(const harness::TriTriInput& in);
 std::vector<std::string> fcl_mesh_parties();
 Opinion fcl_collide_meshes(const std::string& party, const harness::MeshPair& m, bool first_only);
 
+// FCL's broadphase managers, each over the boxes of every frame.
+std::vector<std::string> fcl_broadphase_parties();
+Opinion fcl_broadphase(const std::string& manager, const harness::BroadphaseInput& in);
+// FCL's continuousCollide (conservative advancement, translation) on two moving boxes.
+Opinion fcl_continuous_collide(const harness::MovingObbInput& in);
 /// True when FCL's collision matrix (libccd solver) has the shape pairs used above.
 bool fcl_supports_used_pairs();
 

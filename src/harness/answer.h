@@ -13,11 +13,14 @@ using FacePair = std::pair<std::uint32_t, std::uint32_t>;
 
 /// The answer to a query: whether the shapes meet, and for some queries parameters of the
 /// contact. ray_aabb: {t_enter, t_exit} when hit. Mesh queries: the colliding pairs, sorted
-/// (mesh_mesh_first: the one pair found).
+/// (mesh_mesh_first: the one pair found). ray_mesh: {t} and the pair (face, 0) when hit.
+/// moving_obb: {t_first, t_last} when hit. broadphase: the overlapping pairs of boxes of each
+/// frame, sorted, in `frames`; hit when some frame has one.
 struct Answer {
   bool hit = false;
   std::vector<double> params;
   std::vector<FacePair> pairs;
+  std::vector<std::vector<FacePair>> frames;
   friend bool operator==(const Answer&, const Answer&) = default;
 };
 

@@ -42,11 +42,26 @@ Band library_band(QueryKind kind) {
               "b's triangles move into a's frame in floating point (2^-49 of the scale per coordinate), which "
               "can part touching triangles, then tri_tri's 2^-44; 2^-40 leaves room for the conditioning of "
               "the deciding axis"};
+    case QueryKind::broadphase:
+      return {0, BandSides::exact, 0, "comparisons of the given bounds only (closed boxes): exact"};
+    case QueryKind::ray_mesh:
+      return {0x1p-40, BandSides::conservative, 0,
+              "intersect_ray_triangle may hit a face the ray misses by 2^-44 R, R <= 2 M; the exact margin is at "
+              "most that distance. t is judged against ranges: no later than the exact first point, no earlier "
+              "than where the ray comes within that distance of a face's box"};
+    case QueryKind::moving_obb:
+      return {0x1p-40, BandSides::conservative, 0,
+              "at the reported times no axis (as given, not normalised) separates the boxes by more than "
+              "2^-40 M; t_first and t_last are judged against the exact window and that of the boxes grown "
+              "by the band"};
   }
   throw std::out_of_range("no such query kind");
 }
 
 namespace {
+
+// Every manager is given the boxes as the objects' AABBs and reports the pairs it finds overlapping.
+constexpr std::string_view kManagerBand = "AABB::overlap on the given bounds (closed boxes): exact";
 
 struct PartyBand {
   std::string_view party;
@@ -81,11 +96,23 @@ constexpr PartyBand kPartyBands[] = {
      {0x1p-38, BandSides::two_sided, 0,
       "both meshes moved into the world frame in floating point and refitted, then intersect_Triangle (2^-40)"}},
     {"fcl.BVHModel<KDOPd<18>>", {0x1p-38, BandSides::two_sided, 0, "as BVHModel<AABBd>"}},
+    {"fcl.NaiveCollisionManager", {0, BandSides::exact, 0, kManagerBand}},
+    {"fcl.SaPCollisionManager", {0, BandSides::exact, 0, kManagerBand}},
+    {"fcl.SSaPCollisionManager", {0, BandSides::exact, 0, kManagerBand}},
+    {"fcl.IntervalTreeCollisionManager", {0, BandSides::exact, 0, kManagerBand}},
+    {"fcl.DynamicAABBTreeCollisionManager", {0, BandSides::exact, 0, kManagerBand}},
+    {"fcl.DynamicAABBTreeCollisionManager_Array", {0, BandSides::exact, 0, kManagerBand}},
+    {"fcl.SpatialHashingCollisionManager", {0, BandSides::exact, 0, kManagerBand}},
+    {"fcl.continuousCollide",
+     {0x1p-12, BandSides::two_sided, 0,
+      "conservative advancement stops within toc_err = 1e-4 of the step and GJK's 1e-6 distance tolerance, "
+      "absolute: the band they mean at unit scale"}},
 };
 
 }  // namespace
 
 Band party_band(std::string_view party) {
+  if (is_library_party(party)) throw std::out_of_range("a library party takes its query's library band");
   for (const PartyBand& p : kPartyBands) {
     if (p.party == party) return p.band;
   }

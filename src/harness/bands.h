@@ -27,6 +27,11 @@ struct Band {
 /// The library's band for a kind of query.
 Band library_band(QueryKind kind);
 
+/// Whether a party is one of the library's other ways to answer a query ("library.<name>",
+/// e.g. the full re-sort beside incremental sweep-and-prune); it is judged by the library's band
+/// and, when wrong, is an impl_bug.
+constexpr bool is_library_party(std::string_view party) { return party.starts_with("library."); }
+
 /// A second-opinion party's band (see FclSecondOpinion for the party names). Throws
 /// std::out_of_range for an unknown party.
 Band party_band(std::string_view party);

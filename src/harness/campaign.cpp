@@ -100,10 +100,11 @@ bool is_finding(CaseClass c) {
     Evaluation e;
     slot.phase = in_library;
     e.library = ask_library(input);
+    e.opinions = library_alternatives(input);
     slot.phase = in_exact;
     e.exact = exact->judge(input);
     slot.phase = in_second_opinion;
-    e.opinions = second->opinions(input);
+    for (Opinion& o : second->opinions(input)) e.opinions.push_back(std::move(o));
     slot.phase = idle;
     e.verdict = classify(kind, e.library, e.exact, e.opinions);
 

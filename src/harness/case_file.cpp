@@ -76,6 +76,13 @@ void read_answer(const Json& j, const std::string& pointer, Answer& a) {
   a.hit = boolean(member(j, pointer, "hit"), pointer + "/hit");
   if (j.contains("params")) a.params = numbers_from(j["params"], pointer + "/params");
   if (j.contains("pairs")) a.pairs = pairs_from(j["pairs"], pointer + "/pairs");
+  if (j.contains("frames")) {
+    const Json& frames = j["frames"];
+    if (!frames.is_array()) throw FormatError(pointer + "/frames", "expected an array of frames, each a list of pairs");
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+      a.frames.push_back(pairs_from(frames[f], pointer + "/frames/" + std::to_string(f)));
+    }
+  }
 }
 Answer answer_from(const Json& j, const std::string& pointer) {
   Answer a;
@@ -89,6 +96,15 @@ void write_answer(const Answer& a, Json& j) {
     Json pairs = Json::array();
     for (const auto& [i, k] : a.pairs) pairs.push_back(Json::array({i, k}));
     j["pairs"] = pairs;
+  }
+  if (!a.frames.empty()) {
+    Json frames = Json::array();
+    for (const auto& frame : a.frames) {
+      Json pairs = Json::array();
+      for (const auto& [i, k] : frame) pairs.push_back(Json::array({i, k}));
+      frames.push_back(pairs);
+    }
+    j["frames"] = frames;
   }
 }
 Json answer_json(const Answer& a) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <optional>
 #include <sstream>
 
 #include "harness/bands.h"
@@ -125,22 +126,83 @@ PartyStanding judge_pairs(std::string party, const Band& band, const Answer& sai
   return standing;
 }
 
-PartyStanding judge_party(std::string party, const Band& band, const Answer& said, const ExactVerdict& exact,
-                          QueryKind kind) {
-  if (is_mesh_query(kind)) return judge_pairs(std::move(party), band, said, exact, kind == QueryKind::mesh_mesh_first);
-  PartyStanding p{std::move(party), Standing::right, ""};
-  if (said.hit != exact.answer.hit) {
-    p.standing = within_band(band, said.hit, exact.margin) ? Standing::within_band : Standing::wrong;
-    p.why = describe(said.hit, exact);
-  } else if (said.hit && band.param_width > 0 && !params_agree(band, said, exact.answer)) {
-    p.standing = Standing::wrong;
-    std::ostringstream s;
-    s.precision(17);
-    s << "parameters differ:";
-    for (double v : said.params) s << ' ' << v;
+// broadphase: every pair of every frame where the party and the exact answer differ; the
+// truth is exact comparisons of the given bounds, so within a band only if the band allows.
+PartyStanding judge_frames(std::string party, const Band& band, const Answer& said, const ExactVerdict& exact) {
+  PartyStanding standing{std::move(party), Standing::right, ""};
+  const auto& truth = exact.answer.frames;
+  if (said.frames.size() != truth.size()) {
+    standing.standing = Standing::wrong;
+    standing.why = "answers " + std::to_string(said.frames.size()) + " frames of " + std::to_string(truth.size());
+    return standing;
+  }
+  int differing = 0;
+  std::string first;
+  for (std::size_t f = 0; f < truth.size(); ++f) {
+    std::vector<FacePair> only_said, only_exact;
+    std::set_difference(said.frames[f].begin(), said.frames[f].end(), truth[f].begin(), truth[f].end(),
+                        std::back_inserter(only_said));
+    std::set_difference(truth[f].begin(), truth[f].end(), said.frames[f].begin(), said.frames[f].end(),
+                        std::back_inserter(only_exact));
+    if (differing == 0 && !(only_said.empty() && only_exact.empty())) {
+      const bool says = !only_said.empty();
+      first = "frame " + std::to_string(f) + ": says boxes " + pair_text(says ? only_said[0] : only_exact[0]) +
+              (says ? " overlap, exact apart" : " are apart, exact overlapping");
+    }
+    differing += static_cast<int>(only_said.size() + only_exact.size());
+  }
+  if (differing > 0) {
+    standing.standing = band.sides == BandSides::exact ? Standing::wrong : Standing::within_band;
+    standing.why = first + (differing > 1 ? " (and " + std::to_string(differing - 1) + " more pairs)" : "");
+  }
+  return standing;
+}
+
+// A hit's parameters against the ranges of the exact verdict, or within the band's relative
+// width of the exact parameters. Nothing when they agree, else why not.
+std::optional<std::string> params_wrong(const Band& band, const Answer& said, const ExactVerdict& exact) {
+  const auto& ranges = exact.param_ranges;
+  bool wrong = false;
+  if (!ranges.empty()) {
+    if (said.params.empty()) return std::nullopt;  // a party that gives none (e.g. any hit)
+    wrong = said.params.size() != ranges.size();
+    for (std::size_t i = 0; !wrong && i < ranges.size(); ++i) {
+      wrong = !(ranges[i].first <= said.params[i] && said.params[i] <= ranges[i].second);
+    }
+  } else {
+    if (band.param_width <= 0) return std::nullopt;
+    wrong = !params_agree(band, said, exact.answer);
+  }
+  if (!wrong) return std::nullopt;
+  std::ostringstream s;
+  s.precision(17);
+  s << "parameters differ:";
+  for (double v : said.params) s << ' ' << v;
+  if (ranges.empty()) {
     s << " vs exact";
     for (double v : exact.answer.params) s << ' ' << v;
-    p.why = s.str();
+  } else {
+    s << " outside";
+    for (const auto& [lo, hi] : ranges) s << " [" << lo << ", " << hi << ']';
+  }
+  return s.str();
+}
+
+PartyStanding judge_party(std::string party, const Band& band, const Answer& said, const ExactVerdict& exact,
+                          QueryKind kind) {
+  if (kind == QueryKind::broadphase) return judge_frames(std::move(party), band, said, exact);
+  PartyStanding p{std::move(party), Standing::right, ""};
+  if (is_mesh_query(kind) || kind == QueryKind::ray_mesh) {
+    p = judge_pairs(std::move(p.party), band, said, exact, kind != QueryKind::mesh_mesh);
+  } else if (said.hit != exact.answer.hit) {
+    p.standing = within_band(band, said.hit, exact.margin) ? Standing::within_band : Standing::wrong;
+    p.why = describe(said.hit, exact);
+  }
+  if (p.standing != Standing::wrong && said.hit && exact.answer.hit) {
+    if (auto why = params_wrong(band, said, exact)) {
+      p.standing = Standing::wrong;
+      p.why = *why;
+    }
   }
   return p;
 }
@@ -166,7 +228,7 @@ Verdict classify(QueryKind kind, const Answer& library, const ExactVerdict& exac
   }
 
   v.parties.push_back(judge_party("library", library_band(kind), library, exact, kind));
-  bool any_wrong = false, any_failed = false, any_band = v.parties[0].standing == Standing::within_band;
+  bool any_wrong = false, library_wrong = false, any_failed = false, any_band = v.parties[0].standing == Standing::within_band;
   for (const Opinion& o : opinions) {
     if (o.status == Opinion::Status::not_applicable) {
       v.parties.push_back({o.party, Standing::not_applicable, o.detail});
@@ -174,16 +236,20 @@ Verdict classify(QueryKind kind, const Answer& library, const ExactVerdict& exac
     }
     if (o.status == Opinion::Status::failed) {
       v.parties.push_back({o.party, Standing::failed, o.detail});
-      any_failed = true;
+      (is_library_party(o.party) ? library_wrong : any_failed) = true;  // the library's own failure is a bug
       continue;
     }
-    Band band = party_band(o.party);
-    band.param_width = 0;  // second opinions give no parameters
-    v.parties.push_back(judge_party(o.party, band, o.answer, exact, kind));
-    any_wrong |= v.parties.back().standing == Standing::wrong;
+    const bool library = is_library_party(o.party);
+    Band band = library ? library_band(kind) : party_band(o.party);
+    if (!library) band.param_width = 0;  // second opinions give no parameters
+    Answer said = o.answer;
+    if (!library) said.params.clear();
+    v.parties.push_back(judge_party(o.party, band, said, exact, kind));
+    const bool wrong = v.parties.back().standing == Standing::wrong;
+    (library ? library_wrong : any_wrong) |= wrong;
     any_band |= v.parties.back().standing == Standing::within_band;
   }
-  if (v.parties[0].standing == Standing::wrong) {
+  if (v.parties[0].standing == Standing::wrong || library_wrong) {
     v.cls = CaseClass::impl_bug;
   } else if (any_failed) {
     v.cls = CaseClass::oracle_crash;

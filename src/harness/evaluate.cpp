@@ -8,7 +8,10 @@ Evaluation evaluate(const Input& input, const ExactReference& exact, const Secon
   Evaluation e;
   e.library = ask_library(input);
   e.exact = exact.judge(input);
-  if (second != nullptr) e.opinions = second->opinions(input);
+  e.opinions = library_alternatives(input);
+  if (second != nullptr) {
+    for (Opinion& o : second->opinions(input)) e.opinions.push_back(std::move(o));
+  }
   e.verdict = classify(kind_of(input), e.library, e.exact, e.opinions);
   return e;
 }

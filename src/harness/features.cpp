@@ -91,6 +91,48 @@ struct Of {
   Features operator()(const MeshMeshInput& in) const { return of(in.meshes); }
   Features operator()(const MeshMeshFirstInput& in) const { return of(in.meshes); }
 
+  // Parallel: two boxes share a bound value on an axis (equal endpoints). Degenerate: a flat or
+  // point box, or two identical boxes.
+  Features operator()(const BroadphaseInput& in) const {
+    Features f;
+    for (const auto& frame : in.frames) {
+      for (std::size_t i = 0; i < frame.size(); ++i) {
+        if (!frame[i]) continue;
+        f.degenerate |= zero_extent(*frame[i]);
+        for (std::size_t j = i + 1; j < frame.size() && !(f.parallel && f.degenerate); ++j) {
+          if (!frame[j]) continue;
+          f.degenerate |= *frame[i] == *frame[j];
+          for (int k = 0; k < 3; ++k) f.parallel |= frame[i]->lo[k] == frame[j]->hi[k] || frame[i]->hi[k] == frame[j]->lo[k];
+        }
+      }
+    }
+    return f;
+  }
+  // Parallel: the ray runs along an axis or in the plane of a face. Degenerate: a zero
+  // direction or a degenerate face.
+  Features operator()(const RayMeshInput& in) const {
+    Features f;
+    const Mesh& mesh = *in.mesh.mesh;
+    for (int k = 0; k < 3; ++k) f.parallel |= in.ray.dir[k] == 0;
+    f.degenerate = is_zero(in.ray.dir);
+    for (std::size_t i = 0; i < mesh.size(); ++i) {
+      const Triangle t = mesh.triangle(i);
+      const Vec3 n = cross(edge(t, 0), edge(t, 1));
+      f.degenerate |= is_zero(n);
+      f.parallel |= !is_zero(n) && dot(n, in.ray.dir) == 0;
+    }
+    return f;
+  }
+  // Parallel: parallel box axes, or a rate of exactly 0 along an axis of axis-aligned boxes.
+  // Degenerate: a zero half extent, or no relative motion.
+  Features operator()(const MovingObbInput& in) const {
+    Features f = (*this)(ObbObbInput{in.a.box, in.b.box});
+    const Vec3 w = in.b.velocity - in.a.velocity;
+    f.parallel |= w.x == 0 || w.y == 0 || w.z == 0;
+    f.degenerate |= is_zero(w);
+    return f;
+  }
+
   // Parallel: the meshes' frames are aligned up to a permutation and flips of the axes (the
   // relative rotation is a signed permutation), so axis-aligned faces of one are parallel to
   // those of the other. Degenerate: a face of either mesh is a segment or a point.

@@ -8,6 +8,9 @@
 //               rotation of b's pose (table_rotation(b % 32); a's pose is the identity), byte 4:
 //               the library's hierarchy (bits 0-2 bv type, 3-4 build strategy % 3, 5 exact
 //               update, 6 larger-first descent)
+//   (broadphase) byte 1: boxes (1 + b % 8), byte 2: frames (1 + b % 4), bytes 3-6: per frame a
+//               mask of the boxes present (bit i: box i)
+//   (ray_mesh)  byte 1: triangles (1 + b % 4), byte 2: the library's hierarchy (as mesh_*)
 //   then        little-endian IEEE doubles, in the order of the kind's fields (below)
 //
 // Fields: ray_aabb origin, dir, tmin, tmax, lo, hi (flag bit 4: tmin = -inf, bit 5: tmax = +inf);
@@ -15,8 +18,10 @@
 // kdop_kdop the points of a, then of b; obb_obb a.center, a.half, a.axes (by columns), the same
 // for b; tri_aabb the 3 vertices, lo, hi; tri_obb the 3 vertices, center, half, axes; tri_tri
 // the 3 vertices of a, then of b; mesh_* b's translation, then the triangles of a, then of b
-// (small soups; a rotation not in the table is recorded as the identity). A shorter input reads
-// as if padded with zero bytes.
+// (small soups; a rotation not in the table is recorded as the identity); broadphase lo, hi of
+// every box of every frame (absent ones too, ignored); ray_mesh origin, dir, tmin, tmax (flags as
+// ray_aabb), then the triangles; moving_obb a as obb_obb, a's velocity, then b the same. A
+// shorter input reads as if padded with zero bytes.
 #pragma once
 
 #include <cstdint>

@@ -20,6 +20,9 @@ Input generate(QueryKind kind, Choices& choices, const GenerateOptions& options)
     case QueryKind::tri_tri: return detail::generate_tri_tri(values, options);
     case QueryKind::mesh_mesh: return MeshMeshInput{detail::generate_meshes(values, options)};
     case QueryKind::mesh_mesh_first: return MeshMeshFirstInput{detail::generate_meshes(values, options)};
+    case QueryKind::broadphase: return detail::generate_broadphase(values, options);
+    case QueryKind::ray_mesh: return detail::generate_ray_mesh(values, options);
+    case QueryKind::moving_obb: return detail::generate_moving_obb(values, options);
   }
   return {};
 }

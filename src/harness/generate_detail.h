@@ -15,6 +15,14 @@ TriAabbInput generate_tri_aabb(ValueSource& values, const GenerateOptions& optio
 TriObbInput generate_tri_obb(ValueSource& values, const GenerateOptions& options);
 TriTriInput generate_tri_tri(ValueSource& values, const GenerateOptions& options);
 MeshPair generate_meshes(ValueSource& values, const GenerateOptions& options);
+BroadphaseInput generate_broadphase(ValueSource& values, const GenerateOptions& options);
+RayMeshInput generate_ray_mesh(ValueSource& values, const GenerateOptions& options);
+MovingObbInput generate_moving_obb(ValueSource& values, const GenerateOptions& options);
+/// A hierarchy for the library: any volume, build and walk; with `few`, one of a few per volume
+/// type (for FCL's big meshes, so that the campaign's workers build each once).
+LibraryBvh draw_library(Choices& choices, bool few);
+/// A procedural mesh of about the given size.
+ProceduralMesh draw_recipe(Choices& choices, double size);
 
 
 /// A box [lo, lo + extent], extents often 0; out of contract sometimes inverted.

@@ -13,7 +13,6 @@
 #include "harness/touch.h"
 
 namespace cc::harness::detail {
-namespace {
 
 // Any hierarchy; for FCL's meshes (`few`), one of a few per volume type, so that the campaign's
 // workers build each once and reuse it over thousands of poses.
@@ -47,6 +46,8 @@ ProceduralMesh draw_recipe(Choices& c, double size) {
   r.degenerate_percent = c.chance(30) ? static_cast<int>(c.draw(40)) : 0;
   return r;
 }
+
+namespace {
 
 void out_of_contract(MeshPair& m, ValueSource& v) {
   Choices& c = v.choices();

@@ -1,10 +1,12 @@
 // The inputs of one query of each kind. The variant's alternatives follow QueryKind's order.
 #pragma once
 
+#include <optional>
 #include <variant>
 #include <vector>
 
 #include "collide/aabb.h"
+#include "collide/moving_box.h"
 #include "collide/obb.h"
 #include "collide/ray_aabb.h"
 #include "collide/sphere.h"
@@ -63,8 +65,30 @@ struct MeshMeshFirstInput {
   friend bool operator==(const MeshMeshFirstInput&, const MeshMeshFirstInput&) = default;
 };
 
+/// A set of boxes over a sequence of frames: frames[f][i] is box i in frame f, or nothing when
+/// box i is not in the scene then (not yet added, or removed). Every frame has the same number
+/// of slots. The answer: the overlapping pairs (i, j), i < j, of each frame.
+struct BroadphaseInput {
+  std::vector<std::vector<std::optional<Aabb>>> frames;
+  friend bool operator==(const BroadphaseInput&, const BroadphaseInput&) = default;
+};
+/// The first point where a ray meets a mesh (its own frame), through the library's hierarchy.
+struct RayMeshInput {
+  MeshRef mesh;
+  Ray ray;
+  LibraryBvh library;
+  friend bool operator==(const RayMeshInput&, const RayMeshInput&) = default;
+};
+/// Two boxes moving with constant velocities over a step: whether they meet, and when first
+/// and last.
+struct MovingObbInput {
+  MovingObb a, b;
+  friend bool operator==(const MovingObbInput&, const MovingObbInput&) = default;
+};
+
 using Input = std::variant<RayAabbInput, SphereSphereInput, AabbAabbInput, KdopKdopInput, ObbObbInput, TriAabbInput,
-                           TriObbInput, TriTriInput, MeshMeshInput, MeshMeshFirstInput>;
+                           TriObbInput, TriTriInput, MeshMeshInput, MeshMeshFirstInput, BroadphaseInput, RayMeshInput,
+                           MovingObbInput>;
 
 /// The two meshes of a mesh query; nothing for other kinds.
 inline const MeshPair* meshes_of(const Input& input) {

@@ -54,12 +54,7 @@ class Reader {
     const Reader r = object(name);
     return {r.vec3("lo"), r.vec3("hi")};
   }
-  Obb obb(const std::string& name) const {
-    const Reader r = object(name);
-    const std::vector<Vec3> axes = r.points("axes");
-    if (axes.size() != 3) throw FormatError(r.path("axes"), "expected 3 columns");
-    return {r.vec3("center"), r.vec3("half"), Mat3::from_columns(axes[0], axes[1], axes[2])};
-  }
+  Obb obb(const std::string& name) const { return obb_fields(object(name)); }
   Sphere sphere(const std::string& name) const {
     const Reader r = object(name);
     return {r.vec3("center"), r.number("radius")};
@@ -160,6 +155,38 @@ class Reader {
     if (r.has("descent")) l.descent = r.choice("descent", kDescents);
     return l;
   }
+  MovingObb moving(const std::string& name) const {
+    const Reader r = object(name);
+    return {obb_fields(r), r.vec3("velocity")};
+  }
+  static Obb obb_fields(const Reader& r) {
+    const std::vector<Vec3> axes = r.points("axes");
+    if (axes.size() != 3) throw FormatError(r.path("axes"), "expected 3 columns");
+    return {r.vec3("center"), r.vec3("half"), Mat3::from_columns(axes[0], axes[1], axes[2])};
+  }
+  Ray ray() const { return {vec3("origin"), vec3("dir"), number("tmin"), number("tmax")}; }
+  std::vector<std::vector<std::optional<Aabb>>> frames(const std::string& name) const {
+    const Json& list = member(name);
+    if (!list.is_array()) throw FormatError(path(name), "expected an array of frames");
+    std::vector<std::vector<std::optional<Aabb>>> out;
+    for (std::size_t f = 0; f < list.size(); ++f) {
+      const std::string p = path(name) + "/" + std::to_string(f);
+      if (!list[f].is_array()) throw FormatError(p, "expected an array of boxes (or null)");
+      if (!out.empty() && list[f].size() != out.front().size()) {
+        throw FormatError(p, "expected " + std::to_string(out.front().size()) + " boxes, as in frame 0");
+      }
+      auto& frame = out.emplace_back();
+      for (std::size_t i = 0; i < list[f].size(); ++i) {
+        if (list[f][i].is_null()) {
+          frame.emplace_back();
+          continue;
+        }
+        const Reader box(list[f][i], p + "/" + std::to_string(i));
+        frame.emplace_back(Aabb{box.vec3("lo"), box.vec3("hi")});
+      }
+    }
+    return out;
+  }
   MeshPair meshes(const std::filesystem::path& case_dir) const {
     return {mesh("a", case_dir), mesh("b", case_dir), pose("pose_a"), pose("pose_b"), library("library")};
   }
@@ -217,10 +244,15 @@ Json meshes(const MeshPair& m) {
   return {{"a", mesh(m.a)}, {"pose_a", pose(m.pose_a)}, {"b", mesh(m.b)}, {"pose_b", pose(m.pose_b)}, {"library", library(m.library)}};
 }
 
+Json ray_fields(const Ray& r) {
+  return {{"origin", vec3(r.origin)}, {"dir", vec3(r.dir)}, {"tmin", number_to_json(r.tmin)}, {"tmax", number_to_json(r.tmax)}};
+}
+
 struct ToJson {
   Json operator()(const RayAabbInput& in) const {
-    return {{"origin", vec3(in.ray.origin)}, {"dir", vec3(in.ray.dir)},        {"tmin", number_to_json(in.ray.tmin)},
-            {"tmax", number_to_json(in.ray.tmax)}, {"box", aabb(in.box)}};
+    Json j = ray_fields(in.ray);
+    j["box"] = aabb(in.box);
+    return j;
   }
   Json operator()(const SphereSphereInput& in) const { return {{"a", sphere(in.a)}, {"b", sphere(in.b)}}; }
   Json operator()(const AabbAabbInput& in) const { return {{"a", aabb(in.a)}, {"b", aabb(in.b)}}; }
@@ -231,6 +263,29 @@ struct ToJson {
   Json operator()(const TriTriInput& in) const { return {{"a", triangle(in.a)}, {"b", triangle(in.b)}}; }
   Json operator()(const MeshMeshInput& in) const { return meshes(in.meshes); }
   Json operator()(const MeshMeshFirstInput& in) const { return meshes(in.meshes); }
+  Json operator()(const BroadphaseInput& in) const {
+    Json frames = Json::array();
+    for (const auto& frame : in.frames) {
+      Json boxes = Json::array();
+      for (const auto& box : frame) boxes.push_back(box ? aabb(*box) : Json(nullptr));
+      frames.push_back(boxes);
+    }
+    return {{"frames", frames}};
+  }
+  Json operator()(const RayMeshInput& in) const {
+    Json j = ray_fields(in.ray);
+    j["mesh"] = mesh(in.mesh);
+    j["library"] = library(in.library);
+    return j;
+  }
+  Json operator()(const MovingObbInput& in) const {
+    const auto moving = [](const MovingObb& m) {
+      Json j = obb(m.box);
+      j["velocity"] = vec3(m.velocity);
+      return j;
+    };
+    return {{"a", moving(in.a)}, {"b", moving(in.b)}};
+  }
 };
 
 }  // namespace
@@ -243,7 +298,7 @@ Input input_from_json(QueryKind kind, const Json& json, const std::string& point
   switch (kind) {
     case QueryKind::ray_aabb: {
       RayAabbInput in;
-      in.ray = {r.vec3("origin"), r.vec3("dir"), r.number("tmin"), r.number("tmax")};
+      in.ray = r.ray();
       in.box = r.aabb("box");
       return in;
     }
@@ -262,6 +317,9 @@ Input input_from_json(QueryKind kind, const Json& json, const std::string& point
     case QueryKind::tri_tri: return TriTriInput{r.triangle("a"), r.triangle("b")};
     case QueryKind::mesh_mesh: return MeshMeshInput{r.meshes(case_dir)};
     case QueryKind::mesh_mesh_first: return MeshMeshFirstInput{r.meshes(case_dir)};
+    case QueryKind::broadphase: return BroadphaseInput{r.frames("frames")};
+    case QueryKind::ray_mesh: return RayMeshInput{r.mesh("mesh", case_dir), r.ray(), r.library("library")};
+    case QueryKind::moving_obb: return MovingObbInput{r.moving("a"), r.moving("b")};
   }
   throw FormatError(pointer, "unknown query kind");
 }

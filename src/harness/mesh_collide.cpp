@@ -42,4 +42,12 @@ CollisionResult library_collide(const MeshPair& m, CollisionMode mode) {
   });
 }
 
+RayMeshHit library_ray_mesh(const std::shared_ptr<const Mesh>& mesh, const LibraryBvh& library, const Ray& ray,
+                            bool any_hit) {
+  return with_bv_type(library.bv, [&]<class BV>() {
+    const auto bvh = cached_bvh<BV>(mesh, library.build);
+    return any_hit ? ray_mesh_any(*bvh, ray) : ray_mesh_closest(*bvh, ray);
+  });
+}
+
 }  // namespace cc::harness

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "collide/bvh_collide.h"
+#include "collide/ray_mesh.h"
 #include "harness/mesh_query.h"
 
 namespace cc::harness {
@@ -16,5 +17,9 @@ std::shared_ptr<const Bvh<BV>> cached_bvh(const std::shared_ptr<const Mesh>& mes
 /// The library's answer to a mesh query, with its counters: both meshes' hierarchies of the
 /// case's type and build, walked with its update and descent options.
 CollisionResult library_collide(const MeshPair& meshes, CollisionMode mode);
+/// The library's answer to a ray_mesh query through the mesh's hierarchy of the given type and
+/// build: the closest hit, or (any_hit) the first one found.
+RayMeshHit library_ray_mesh(const std::shared_ptr<const Mesh>& mesh, const LibraryBvh& library, const Ray& ray,
+                            bool any_hit);
 
 }  // namespace cc::harness

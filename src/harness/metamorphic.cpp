@@ -92,6 +92,20 @@ struct Map {
     if (relation == Relation::swap_shapes) return TriTriInput{in.b, in.a};
     return TriTriInput{triangle(in.a), triangle(in.b)};
   }
+  std::optional<Input> operator()(const BroadphaseInput& in) {
+    BroadphaseInput r = in;
+    for (auto& frame : r.frames) {
+      for (auto& b : frame) {
+        if (b) b = box(*b);
+      }
+    }
+    return r;
+  }
+  std::optional<Input> operator()(const RayMeshInput&) { return std::nullopt; }
+  std::optional<Input> operator()(const MovingObbInput& in) {
+    if (relation == Relation::swap_shapes) return MovingObbInput{in.b, in.a};
+    return MovingObbInput{{obb(in.a.box), point(in.a.velocity)}, {obb(in.b.box), point(in.b.velocity)}};
+  }
   // Meshes: the world's axes permuted (the only relation that applies to them), which permutes
   // the rows of both poses; the relative transform, and with it every computation of the
   // library, is unchanged bit for bit.
@@ -143,6 +157,19 @@ struct Flush {
   Input operator()(const TriTriInput& in) const { return TriTriInput{flush(in.a), flush(in.b)}; }
   Input operator()(const MeshMeshInput& in) const { return in; }  // never scaled
   Input operator()(const MeshMeshFirstInput& in) const { return in; }
+  Input operator()(const BroadphaseInput& in) const {
+    BroadphaseInput r = in;
+    for (auto& frame : r.frames) {
+      for (auto& b : frame) {
+        if (b) b = flush(*b);
+      }
+    }
+    return r;
+  }
+  Input operator()(const RayMeshInput& in) const { return in; }  // never transformed
+  Input operator()(const MovingObbInput& in) const {
+    return MovingObbInput{{flush(in.a.box), flush(in.a.velocity)}, {flush(in.b.box), flush(in.b.velocity)}};
+  }
 };
 
 }  // namespace
@@ -161,6 +188,9 @@ bool relation_applies(QueryKind kind, Relation relation) {
   // A flip would make a pose an improper rotation; swapping the meshes transposes the pairs but
   // moves a into b's frame instead, with other roundings; scaling would copy the meshes.
   if (is_mesh_query(kind)) return relation == Relation::permute_axes;
+  // A ray_mesh relation would have to copy and transform the mesh; broadphase has no two shapes.
+  if (kind == QueryKind::ray_mesh) return false;
+  if (kind == QueryKind::broadphase) return relation != Relation::swap_shapes;
   const bool two_shapes_alike = kind != QueryKind::ray_aabb && kind != QueryKind::tri_aabb && kind != QueryKind::tri_obb;
   return relation != Relation::swap_shapes || two_shapes_alike;
 }

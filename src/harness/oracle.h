@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "harness/answer.h"
@@ -40,6 +41,10 @@ struct ExactVerdict {
   /// -unlisted_margin of the scale (their bounding boxes are), and counts as at that margin.
   std::vector<PairMargin> pair_margins;
   double unlisted_margin = 0;
+  /// When not empty: the closed range [first, second] in which each parameter of a hit must
+  /// lie to be right (instead of the band's relative width), e.g. a first contact time no
+  /// later than the exact one and no earlier than the band allows.
+  std::vector<std::pair<double, double>> param_ranges;
 
   /// The margin of a pair of a mesh query.
   double margin_of(const FacePair& pair) const;

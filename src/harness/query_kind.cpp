@@ -14,6 +14,9 @@ std::string_view name(QueryKind kind) {
     case QueryKind::tri_tri: return "tri_tri";
     case QueryKind::mesh_mesh: return "mesh_mesh";
     case QueryKind::mesh_mesh_first: return "mesh_mesh_first";
+    case QueryKind::broadphase: return "broadphase";
+    case QueryKind::ray_mesh: return "ray_mesh";
+    case QueryKind::moving_obb: return "moving_obb";
   }
   return "?";
 }

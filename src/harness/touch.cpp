@@ -92,6 +92,26 @@ void make_touching(Input& input, ValueSource& v) {
           put_vertex_at(in.tri, static_cast<int>(c.draw(3)), in.box.center + in.box.axes * local);
         } else if constexpr (std::is_same_v<T, MeshMeshInput> || std::is_same_v<T, MeshMeshFirstInput>) {
           touch_at_vertices(in.meshes, c);
+        } else if constexpr (std::is_same_v<T, BroadphaseInput>) {
+          // Two boxes of a frame: the second put face to face against the first on one axis.
+          if (in.frames.empty() || in.frames[0].size() < 2) return;
+          auto& frame = in.frames[c.draw(in.frames.size())];
+          const std::size_t i = c.draw(frame.size()), j = c.draw(frame.size());
+          if (i == j || !frame[i] || !frame[j]) return;
+          AabbAabbInput pair{*frame[i], *frame[j]};
+          Input as_pair = pair;
+          make_touching(as_pair, v);
+          frame[j] = std::get<AabbAabbInput>(as_pair).b;
+        } else if constexpr (std::is_same_v<T, RayMeshInput>) {
+          // Aimed at a vertex of a face, ending there.
+          const Triangle t = in.mesh.mesh->triangle(c.draw(in.mesh.mesh->size()));
+          in.ray.dir = t.v[c.draw(3)] - in.ray.origin;
+          in.ray.tmin = 0, in.ray.tmax = 1;
+        } else if constexpr (std::is_same_v<T, MovingObbInput>) {
+          // Placed face to face at rest, then moved back so that they meet at t = 1/2.
+          ObbObbInput boxes{in.a.box, in.b.box};
+          place_against_face(boxes, v, false);
+          in.b.box.center = boxes.b.center - 0.5 * (in.b.velocity - in.a.velocity);
         } else {
           const int i = static_cast<int>(c.draw(3));
           const Vec3 target = c.chance(50) ? in.a.v[static_cast<std::size_t>(i)]

@@ -90,6 +90,27 @@ Scene scene_of(const Input& input) {
         } else if constexpr (std::is_same_v<T, TriTriInput>) {
           s.triangle(in.a, 0);
           s.triangle(in.b, 1);
+        } else if constexpr (std::is_same_v<T, BroadphaseInput>) {  // the last frame's boxes
+          if (in.frames.empty()) return;
+          for (const auto& box : in.frames.back()) {
+            if (box) s.aabb(*box, 0);
+          }
+        } else if constexpr (std::is_same_v<T, RayMeshInput>) {  // the ray and the first 400 faces
+          const Mesh& mesh = *in.mesh.mesh;
+          double reach = 1;
+          for (std::size_t f = 0; f < std::min<std::size_t>(mesh.size(), 400); ++f) {
+            s.triangle(mesh.triangle(f), 1);
+            for (const Vec3& p : mesh.triangle(f).v) reach = std::max(reach, 2 * max_abs(p - in.ray.origin));
+          }
+          const double len = std::max(max_abs(in.ray.dir), 1e-300);
+          const double t0 = std::max(in.ray.tmin, -reach / len), t1 = std::min(in.ray.tmax, reach / len);
+          s.segments.push_back({in.ray.origin + t0 * in.ray.dir, in.ray.origin + t1 * in.ray.dir, 0});
+          s.points.push_back({in.ray.origin, 0});
+        } else if constexpr (std::is_same_v<T, MovingObbInput>) {  // at the start and the end of the step
+          s.obb(in.a.box, 0);
+          s.obb({in.a.box.center + in.a.velocity, in.a.box.half, in.a.box.axes}, 0);
+          s.obb(in.b.box, 1);
+          s.obb({in.b.box.center + in.b.velocity, in.b.box.half, in.b.box.axes}, 1);
         } else {  // meshes, placed in the world (the first 200 triangles of each)
           const MeshPair& m = in.meshes;
           for (int side = 0; side < 2; ++side) {

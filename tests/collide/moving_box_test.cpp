@@ -10,6 +10,7 @@
 #include <random>
 #include <vector>
 
+#include "oracle/exact/exact_sweep.h"
 #include "oracle/exact/rational.h"
 
 namespace cc {
@@ -49,45 +50,10 @@ bool same_bits(const SweepHit& x, const SweepHit& y) {
 
 // ---- Exact references (GMP rationals), for boxes with positive extents ----
 
-// The first and last times in [0, 1] at which the boxes meet; first > last when they do not.
-struct ExactWindow {
-  Rational first = 0, last = 1;
-  bool hit() const { return first <= last; }
-  // Meets the window of one direction: |p + t s| <= r.
-  void restrict(const Rational& p, const Rational& s, const Rational& r) {
-    if (sgn(s) == 0) {
-      if (abs(p) > r) first = 1, last = 0;
-      return;
-    }
-    Rational enter = (-r - p) / s, exit = (r - p) / s;
-    if (sgn(s) < 0) std::swap(enter, exit);
-    first = std::max(first, enter);
-    last = std::min(last, exit);
-  }
-};
+using exact::ExactWindow;
 
-// The boxes as the parallelepipeds they are (axes as given, not quite orthonormal): their
-// Minkowski difference is a zonotope with six generators, whose facet normals are the cross
-// products of pairs of generators, and it moves by t (vb - va).
-ExactWindow exact_sweep(const MovingObb& a, const MovingObb& b) {
-  std::vector<QVec3> generators;
-  for (const Obb* o : {&a.box, &b.box}) {
-    for (int i = 0; i < 3; ++i) generators.push_back(exact::rational(o->half[i]) * exact::rational(o->axes.col[i]));
-  }
-  const QVec3 d = exact::rational(b.box.center) - exact::rational(a.box.center);
-  const QVec3 w = exact::rational(b.velocity) - exact::rational(a.velocity);
-  ExactWindow window;
-  for (std::size_t p = 0; p < generators.size(); ++p) {
-    for (std::size_t q = p + 1; q < generators.size(); ++q) {
-      const QVec3 n = exact::cross(generators[p], generators[q]);
-      if (exact::is_zero(n)) continue;
-      Rational r = 0;
-      for (const QVec3& g : generators) r += abs(exact::dot(n, g));
-      window.restrict(exact::dot(n, d), exact::dot(n, w), r);
-    }
-  }
-  return window;
-}
+// The boxes as the parallelepipeds they are (axes as given, not quite orthonormal).
+ExactWindow exact_sweep(const MovingObb& a, const MovingObb& b) { return exact::exact_sweep(exact::moving_axes(a, b)); }
 
 // The largest gap between the boxes at time t over the 15 axes a_i, b_j, a_i x b_j as given
 // (not normalised).
@@ -113,15 +79,7 @@ Rational largest_gap(const MovingObb& a, const MovingObb& b, const Rational& t) 
 }
 
 ExactWindow exact_sweep(const Aabb& a, const Vec3& va, const Aabb& b, const Vec3& vb) {
-  ExactWindow window;
-  for (int k = 0; k < 3; ++k) {
-    // a.lo - b.hi <= t w <= a.hi - b.lo, as |p + t s| <= r with the centre and half width.
-    const Rational low = exact::rational(a.lo[k]) - exact::rational(b.hi[k]);
-    const Rational high = exact::rational(a.hi[k]) - exact::rational(b.lo[k]);
-    const Rational w = exact::rational(vb[k]) - exact::rational(va[k]);
-    window.restrict(-(low + high) / 2, w, (high - low) / 2);
-  }
-  return window;
+  return exact::exact_sweep(a, va, b, vb);
 }
 
 // ---- Random cases (deterministic: the generator's bits, not a distribution's) ----

@@ -10,6 +10,7 @@
 #include <random>
 #include <string>
 
+#include "oracle/exact/exact_ray_triangle.h"
 #include "oracle/exact/rational.h"
 
 namespace cc {
@@ -180,97 +181,6 @@ TEST(IntersectRayTriangle, OutOfContractInputsGiveNoHit) {
 using exact::QVec3;
 using exact::Rational;
 
-struct ExactRay {
-  QVec3 o, d;
-  std::optional<Rational> tmin, tmax;  // nothing: -inf, +inf
-
-  bool in_range(const Rational& t) const { return (!tmin || t >= *tmin) && (!tmax || t <= *tmax); }
-  QVec3 at(const Rational& t) const { return o + t * d; }
-};
-
-bool on_segment(const QVec3& p, const QVec3& a, const QVec3& b) {
-  const QVec3 e = b - a, w = p - a;
-  if (exact::is_zero(e)) return exact::is_zero(w);
-  if (!exact::is_zero(exact::cross(w, e))) return false;
-  const Rational s = exact::dot(w, e);
-  return s >= 0 && s <= exact::dot(e, e);
-}
-
-bool in_triangle(const QVec3& p, const std::array<QVec3, 3>& v) {
-  const QVec3 n = exact::cross(v[1] - v[0], v[2] - v[0]);
-  if (exact::is_zero(n)) return on_segment(p, v[0], v[1]) || on_segment(p, v[1], v[2]) || on_segment(p, v[2], v[0]);
-  if (sgn(exact::dot(n, p - v[0])) != 0) return false;
-  for (int i = 0; i < 3; ++i) {
-    if (sgn(exact::dot(n, exact::cross(v[(i + 1) % 3] - v[i], p - v[i]))) < 0) return false;
-  }
-  return true;
-}
-
-// The first parameter at which the ray meets the segment [a, b].
-std::optional<Rational> first_on_segment(const ExactRay& r, const QVec3& a, const QVec3& b) {
-  const QVec3 e = b - a, w = a - r.o;
-  if (exact::is_zero(r.d)) return on_segment(r.o, a, b) ? r.tmin : std::nullopt;  // (tmin finite)
-  if (exact::is_zero(e)) {
-    if (!exact::is_zero(exact::cross(w, r.d))) return std::nullopt;
-    const Rational t = exact::dot(w, r.d) / exact::dot(r.d, r.d);
-    return r.in_range(t) ? std::optional(t) : std::nullopt;
-  }
-  const QVec3 m = exact::cross(r.d, e);
-  if (!exact::is_zero(m)) {  // o + t d = a + s e
-    if (sgn(exact::dot(m, w)) != 0) return std::nullopt;  // skew
-    const Rational mm = exact::dot(m, m);
-    const Rational t = exact::dot(exact::cross(w, e), m) / mm, s = exact::dot(exact::cross(w, r.d), m) / mm;
-    return s >= 0 && s <= 1 && r.in_range(t) ? std::optional(t) : std::nullopt;
-  }
-  if (!exact::is_zero(exact::cross(w, r.d))) return std::nullopt;  // parallel lines apart
-  const Rational dd = exact::dot(r.d, r.d);
-  Rational ta = exact::dot(w, r.d) / dd, tb = exact::dot(b - r.o, r.d) / dd;
-  if (ta > tb) std::swap(ta, tb);
-  const Rational lo = r.tmin ? std::max(ta, *r.tmin) : ta;
-  const Rational hi = r.tmax ? std::min(tb, *r.tmax) : tb;
-  return lo <= hi ? std::optional(lo) : std::nullopt;
-}
-
-// The exact first parameter at which the ray meets the closed triangle, if any.
-std::optional<Rational> exact_first_hit(const ExactRay& r, const std::array<QVec3, 3>& v) {
-  const QVec3 n = exact::cross(v[1] - v[0], v[2] - v[0]);
-  if (!exact::is_zero(n) && sgn(exact::dot(n, r.d)) != 0) {  // crosses the plane once
-    const Rational t = exact::dot(n, v[0] - r.o) / exact::dot(n, r.d);
-    return r.in_range(t) && in_triangle(r.at(t), v) ? std::optional(t) : std::nullopt;
-  }
-  // In a plane with the triangle (or it is a segment or a point): the start or an edge.
-  if (r.tmin && in_triangle(r.at(*r.tmin), v)) return r.tmin;
-  std::optional<Rational> best;
-  for (int i = 0; i < 3; ++i) {
-    const auto t = first_on_segment(r, v[i], v[(i + 1) % 3]);
-    if (t && (!best || *t < *best)) best = t;
-  }
-  return best;
-}
-
-Rational distance2_to_segment(const QVec3& p, const QVec3& a, const QVec3& b) {
-  const QVec3 e = b - a, w = p - a;
-  if (exact::is_zero(e)) return exact::dot(w, w);
-  Rational s = exact::dot(w, e) / exact::dot(e, e);
-  s = std::clamp(s, Rational(0), Rational(1));
-  const QVec3 r = w - s * e;
-  return exact::dot(r, r);
-}
-
-// The squared Euclidean distance from p to the closed triangle.
-Rational distance2_to_triangle(const QVec3& p, const std::array<QVec3, 3>& v) {
-  Rational best = distance2_to_segment(p, v[0], v[1]);
-  best = std::min(best, distance2_to_segment(p, v[1], v[2]));
-  best = std::min(best, distance2_to_segment(p, v[2], v[0]));
-  const QVec3 n = exact::cross(v[1] - v[0], v[2] - v[0]);
-  if (!exact::is_zero(n)) {
-    const Rational h = exact::dot(n, p - v[0]), nn = exact::dot(n, n);
-    const Rational plane = h * h / nn;
-    if (in_triangle(p - (h / nn) * n, v)) best = std::min(best, plane);
-  }
-  return best;
-}
-
 // Doubles in [0, 1) from the raw 64-bit outputs (std's distributions differ between libraries).
 class Random {
  public:
@@ -294,11 +204,9 @@ struct Statistics {
 // a reported point lies within the tolerance of the triangle.
 void check_against_exact(const Ray& r, const Triangle& tri, Statistics& stats) {
   const RayTriangleHit h = intersect_ray_triangle(r, tri);
-  ExactRay q{exact::rational(r.origin), exact::rational(r.dir), std::nullopt, std::nullopt};
-  if (r.tmin != -INFINITY) q.tmin = exact::rational(r.tmin);
-  if (r.tmax != INFINITY) q.tmax = exact::rational(r.tmax);
-  const std::array<QVec3, 3> v = {exact::rational(tri.v[0]), exact::rational(tri.v[1]), exact::rational(tri.v[2])};
-  const std::optional<Rational> t_exact = exact_first_hit(q, v);
+  const exact::ExactRay q = exact::exact_ray(r);
+  const std::array<QVec3, 3> v = exact::exact_triangle(tri);
+  const std::optional<Rational> t_exact = exact::exact_first_hit(q, v);
   ++stats.cases;
   const auto describe = [&] {
     char buf[512];
@@ -320,7 +228,7 @@ void check_against_exact(const Ray& r, const Triangle& tri, Statistics& stats) {
   if (!std::isfinite(h.t)) return;
   double reach = 0;
   for (const Vec3& p : tri.v) reach = std::max(reach, max_abs(p - r.origin));
-  const Rational d2 = distance2_to_triangle(q.at(exact::rational(h.t)), v);
+  const Rational d2 = exact::distance2_to_triangle(q.at(exact::rational(h.t)), v);
   const Rational bound = exact::rational(kRayTriangleTolerance * reach);
   const double distance = std::sqrt(exact::to_double(d2));
   if (reach > 0) stats.worst_distance = std::max(stats.worst_distance, distance / reach);

@@ -13,11 +13,11 @@ const std::filesystem::path kBad = std::filesystem::path(CROSSCHECK_TEST_DATA) /
 Case sample() {
   Case c;
   c.input = RayAabbInput{{{-1, 0.5, -0.0}, {1, 0, 5e-324}, 0, INFINITY}, {{0, 0, 0}, {1, 1, 1}}};
-  c.library = {true, {1, 2}, {}};
-  c.exact.answer = {true, {1, 2}, {}};
+  c.library = {true, {1, 2}, {}, {}};
+  c.exact.answer = {true, {1, 2}, {}, {}};
   c.exact.margin = 0.5;
   c.opinions = {{"libccd.GJK", Opinion::Status::not_applicable, {}, "a ray of infinite length"},
-                {"libccd.MPR", Opinion::Status::answered, {true, {}, {}}, ""}};
+                {"libccd.MPR", Opinion::Status::answered, {true, {}, {}, {}}, ""}};
   c.cls = CaseClass::agree;
   c.provenance = {"campaign", 7, 1234, "seed 7"};
   c.note = "a ray through the middle";

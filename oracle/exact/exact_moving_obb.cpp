@@ -1,0 +1,106 @@
+// moving_obb in exact arithmetic: the window of times at which the boxes (parallelepipeds, axes
+// as given) meet, the margin of the closest approach, and the ranges the library's first and last
+// times must fall in: between the exact window and the window of the boxes grown by its band.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "harness/bands.h"
+#include "oracle/exact/domain.h"
+#include "oracle/exact/exact_sweep.h"
+#include "oracle/exact/judges.h"
+
+namespace cc::exact {
+namespace {
+
+constexpr int kMinExponent = -500, kMaxExponent = 500;
+
+double magnitude_of(const MovingObb& m) {
+  return std::max({max_abs(m.box.center), max_abs(m.box.half), max_abs(m.velocity)});
+}
+
+// q / unit as a double (neither overflowing nor underflowing on the way).
+double ratio(const Rational& q, Magnitude unit) { return (Magnitude::of(q) / unit).to_double(); }
+
+// The double nearest below (above) a rational.
+double round_down(const Rational& q) {
+  double x = to_double(q);
+  if (rational(x) > q) x = std::nextafter(x, -INFINITY);
+  return x;
+}
+double round_up(const Rational& q) {
+  double x = to_double(q);
+  if (rational(x) < q) x = std::nextafter(x, INFINITY);
+  return x;
+}
+
+// Minus the least, over t in [0, 1], of the largest gap (|p + t s| - r) / conditioning over the
+// axes, in units of the scale: the margin of the closest approach (< 0 apart). The gaps are
+// lines in t, so the least of their maximum lies at 0, at 1 or where two lines cross.
+double closest_approach_margin(const std::vector<MovingAxis>& axes, double scale) {
+  struct Line {
+    double a, b;  // a + b t
+  };
+  std::vector<Line> lines;
+  const Magnitude unit_scale = Magnitude::of(rational(scale));
+  for (const MovingAxis& m : axes) {
+    const Magnitude unit = m.axis.conditioning * unit_scale;
+    const double p = ratio(m.p, unit), s = ratio(m.s, unit), r = ratio(m.r, unit);
+    lines.push_back({p - r, s});
+    lines.push_back({-p - r, -s});
+  }
+  const auto worst_gap = [&](double t) {
+    double g = -std::numeric_limits<double>::infinity();
+    for (const Line& l : lines) g = std::max(g, l.a + l.b * t);
+    return g;
+  };
+  double least = std::min(worst_gap(0), worst_gap(1));
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    for (std::size_t j = i + 1; j < lines.size(); ++j) {
+      if (lines[i].b == lines[j].b) continue;
+      const double t = (lines[j].a - lines[i].a) / (lines[i].b - lines[j].b);
+      if (t > 0 && t < 1) least = std::min(least, worst_gap(t));
+    }
+  }
+  return -least;
+}
+
+}  // namespace
+
+ExactVerdict judge(const harness::MovingObbInput& in) {
+  for (const MovingObb* m : {&in.a, &in.b}) {
+    if (!all_finite(m->box) || !all_finite({m->velocity.x, m->velocity.y, m->velocity.z})) {
+      return documented(false, "NaN or infinite input");
+    }
+    if (m->box.half.x < 0 || m->box.half.y < 0 || m->box.half.z < 0) return documented(false, "negative half extent");
+  }
+  const double magnitude = std::max(magnitude_of(in.a), magnitude_of(in.b));
+  if (auto why = scale_outside(magnitude, kMinExponent, kMaxExponent)) return unspecified(*why);
+  for (const MovingObb* m : {&in.a, &in.b}) {
+    if (auto why = not_orthonormal(m->box.axes)) return unspecified(*why);
+  }
+  const double scale = scale_of(magnitude);
+  const std::vector<MovingAxis> axes = moving_axes(in.a, in.b);
+  const ExactWindow window = exact_sweep(axes);
+  ExactVerdict v;
+  v.answer.hit = window.hit();
+  v.margin = std::min(closest_approach_margin(axes, scale), 0.0);
+  if (!v.answer.hit) {
+    v.margin = std::min(v.margin, -std::numeric_limits<double>::denorm_min());
+    return v;
+  }
+  v.answer.params = {to_double(window.first), to_double(window.last)};
+  // A hit's margin: how deep the boxes overlap halfway through the window (0 if they only touch).
+  const Rational middle = (window.first + window.last) / 2;
+  double depth = std::numeric_limits<double>::infinity();
+  for (const MovingAxis& m : axes) {
+    const Rational overlap = m.r - abs(m.p + middle * m.s);
+    depth = std::min(depth, ratio(overlap, length(m.axis.axis) * Magnitude::of(rational(scale))));
+  }
+  v.margin = std::max(depth, 0.0);
+  const ExactWindow grown = exact_sweep(axes, rational(harness::library_band(harness::QueryKind::moving_obb).width * scale));
+  v.param_ranges = {{round_down(grown.first), round_up(window.first)}, {round_down(window.last), round_up(grown.last)}};
+  return v;
+}
+
+}  // namespace cc::exact

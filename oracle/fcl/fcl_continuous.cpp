@@ -1,0 +1,36 @@
+// moving_obb: FCL's continuousCollide by conservative advancement on two boxes under
+// translation, as a second opinion on whether they meet during the step.
+#include <fcl/geometry/shape/box.h>
+#include <fcl/narrowphase/continuous_collision.h>
+
+#include "oracle/fcl/convert.h"
+#include "oracle/fcl/parties.h"
+#include "oracle/fcl/time_limit.h"
+
+namespace cc::fcl_oracle {
+
+Opinion fcl_continuous_collide(const harness::MovingObbInput& in) {
+  const std::string party = "fcl.continuousCollide";
+  for (const MovingObb* m : {&in.a, &in.b}) {
+    if (m->box.half.x <= 0 || m->box.half.y <= 0 || m->box.half.z <= 0) {
+      return not_applicable(party, "a box with a zero extent (FCL's Box needs positive sides)");
+    }
+  }
+  const fcl::Boxd a(2 * in.a.box.half.x, 2 * in.a.box.half.y, 2 * in.a.box.half.z);
+  const fcl::Boxd b(2 * in.b.box.half.x, 2 * in.b.box.half.y, 2 * in.b.box.half.z);
+  const fcl::Transform3d a0 = to_fcl_transform(in.a.box.axes, in.a.box.center);
+  const fcl::Transform3d a1 = to_fcl_transform(in.a.box.axes, in.a.box.center + in.a.velocity);
+  const fcl::Transform3d b0 = to_fcl_transform(in.b.box.axes, in.b.box.center);
+  const fcl::Transform3d b1 = to_fcl_transform(in.b.box.axes, in.b.box.center + in.b.velocity);
+  fcl::ContinuousCollisionRequestd request;
+  request.ccd_motion_type = fcl::CCDM_TRANS;
+  request.ccd_solver_type = fcl::CCDC_CONSERVATIVE_ADVANCEMENT;
+  request.gjk_solver_type = fcl::GST_LIBCCD;
+  fcl::ContinuousCollisionResultd result;
+  const bool returned = run_with_time_limit(
+      kLibccdTimeLimit * 10, [&] { fcl::continuousCollide(&a, a0, a1, &b, b0, b1, request, result); });
+  if (!returned) return failed(party, "did not return within its time limit");
+  return answered(party, result.is_collide);
+}
+
+}  // namespace cc::fcl_oracle
