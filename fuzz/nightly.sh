@@ -17,7 +17,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 minutes=10
 jobs=2
 report="$root/build/fuzz-report"
-targets="ray_aabb sphere_sphere aabb_aabb kdop_kdop obb_obb tri_aabb tri_obb tri_tri mesh_mesh mesh_mesh_first"
+targets="ray_aabb sphere_sphere aabb_aabb kdop_kdop obb_obb tri_aabb tri_obb tri_tri mesh_mesh mesh_mesh_first broadphase ray_mesh moving_obb"
 max_shrink=5
 while [ $# -gt 0 ]; do
   case "$1" in

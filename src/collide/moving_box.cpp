@@ -16,8 +16,13 @@ constexpr TimeWindow kNever{INFINITY, -INFINITY};
 constexpr TimeWindow kStep{0, 1};
 
 TimeWindow intersection(TimeWindow x, TimeWindow y) { return {std::max(x.enter, y.enter), std::min(x.exit, y.exit)}; }
-// The smallest window holding both (kNever leaves the other as it is).
-TimeWindow hull(TimeWindow x, TimeWindow y) { return {std::min(x.enter, y.enter), std::max(x.exit, y.exit)}; }
+bool empty(TimeWindow x) { return !(x.enter <= x.exit); }
+// The smallest window holding both (an empty one leaves the other as it is).
+TimeWindow hull(TimeWindow x, TimeWindow y) {
+  if (empty(x)) return y;
+  if (empty(y)) return x;
+  return {std::min(x.enter, y.enter), std::max(x.exit, y.exit)};
+}
 
 // A computed time moved outward by `relative` of its magnitude and by the subnormal slack.
 // Multiplicative, so that a time that overflowed to +-inf stays infinite.
@@ -159,16 +164,18 @@ SweepHit sweep_obb_obb(const MovingObb& a, const MovingObb& b) {
       const int j1 = (j + 1) % 3, j2 = (j + 2) % 3;
       // Projections onto a_i x b_j in a's frame and in b's frame, as in test_obb_obb. Each frame
       // gives a valid interval; like test_obb_obb (which separates only if both frames do), the
-      // axis keeps every time that either frame keeps.
+      // axis keeps every time of the step that either frame keeps. (Each is cut to the step
+      // first: the hull of two windows outside the step, one before and one after, would hold
+      // the whole step.)
       const auto in_a = [&](const Vec3& w) { return w[i2] * r[i1][j] - w[i1] * r[i2][j]; };
       const auto in_b = [&](const Vec3& w) { return r[i][j2] * w[j1] - r[i][j1] * w[j2]; };
       const double ra = box_a.half[i1] * abs_r[i2][j] + box_a.half[i2] * abs_r[i1][j];
       const double rb = box_b.half[j1] * abs_r[i][j2] + box_b.half[j2] * abs_r[i][j1];
-      window = intersection(window, hull(overlap_window(in_a(d_in_a), in_a(v_in_a), ra, rb, error),
-                                         overlap_window(in_b(d_in_b), in_b(v_in_b), ra, rb, error)));
+      window = intersection(window, hull(intersection(kStep, overlap_window(in_a(d_in_a), in_a(v_in_a), ra, rb, error)),
+                                         intersection(kStep, overlap_window(in_b(d_in_b), in_b(v_in_b), ra, rb, error))));
     }
   }
-  if (!(window.enter <= window.exit)) return {};
+  if (empty(window)) return {};
   if (!in_contract(a) || !in_contract(b)) return {};  // checked on the hit path only
   return {true, window.enter + 0.0, window.exit + 0.0};  // + 0.0: a time 0 is +0
 }

@@ -9,6 +9,7 @@
 #include "harness/input_json.h"
 #include "harness/number_text.h"
 #include "harness/shrink_faces.h"
+#include "harness/shrink_lists.h"
 #include "harness/signature.h"
 
 namespace cc::harness {
@@ -169,6 +170,22 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
     if (shrink_faces(kind, current, *meshes, start, attempt)) {
       const MeshPair& now = *meshes_of(r.input);
       if (now.a.mesh->size() + now.b.mesh->size() > kMaxWrittenFaces) {
+        const int attempts = r.attempts;
+        r = before;
+        r.attempts = attempts;
+        current = before_doc;
+      }
+    }
+  }
+
+  // Boxes and frames (broadphase), the mesh's faces (ray_mesh), when the result is small
+  // enough to read.
+  if (kind == QueryKind::broadphase || kind == QueryKind::ray_mesh) {
+    const ShrinkResult before = r;
+    const Json before_doc = current;
+    if (shrink_lists(kind, current, input, attempt)) {
+      const auto* ray = std::get_if<RayMeshInput>(&r.input);
+      if (ray != nullptr && ray->mesh.mesh->size() > kMaxWrittenFaces) {
         const int attempts = r.attempts;
         r = before;
         r.attempts = attempts;

@@ -140,6 +140,22 @@ AabbCase random_aabb_case(Random& rng) {
 
 // ---- Oriented boxes ----
 
+// A flat box sliding past a segment with a gap that an edge axis shows. A velocity component of
+// 1e-36 makes that axis's rate tiny in a's frame and rounding noise in b's: both windows lie far
+// outside the step, one before it and one after. They must not join into a window over the
+// whole step (found by the moving_obb campaign; corpora/moving_obb holds the case).
+TEST(SweepObbObb, EdgeAxisWindowsOnBothSidesOfTheStepStillSeparate) {
+  const MovingObb a{box({0, 0, 0}, {0, 26.606477512214493, 0}, Mat3::from_columns({0, 1, 0}, {1, 0, 0}, {0, 0, 1})), {}};
+  const MovingObb b{box({13.303238756107246, 0, 0.9033384755451381}, {0, 1, 0.01638648348841674},
+                        Mat3::from_columns({-0.3001622110843649, -0.9260882935914774, -0.22861128473846437},
+                                           {-0.30438780844723085, 0.32012404029013497, -0.8971447268401082},
+                                           {0.9040191973103434, -0.19970245692315813, -0.37797912586969273})),
+                    {5.905502822676008, 1.504632769052528e-36, -5e-324}};
+  ASSERT_FALSE(exact_sweep(a, b).hit());
+  EXPECT_FALSE(sweep_obb_obb(a, b).hit);
+  EXPECT_FALSE(sweep_obb_obb(b, a).hit);
+}
+
 TEST(SweepObbObb, HeadOnApproachMeetsAtTheKnownTime) {
   // Half extents 1, centres 3 apart, closing at 4: the faces meet at t = (3 - 2) / 4 = 1/4 and the
   // boxes overlap until t = 5/4, past the step.
