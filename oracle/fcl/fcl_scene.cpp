@@ -66,6 +66,15 @@ void FclScene::move(std::size_t i, const RigidTransform& pose) {
   impl_->objects[i]->computeAABB();
 }
 
+std::vector<Aabb> FclScene::boxes() const {
+  std::vector<Aabb> out;
+  for (const auto& o : impl_->objects) {
+    const fcl::AABBd& b = o->getAABB();
+    out.push_back({{b.min_[0], b.min_[1], b.min_[2]}, {b.max_[0], b.max_[1], b.max_[2]}});
+  }
+  return out;
+}
+
 std::vector<ObjectContact> FclScene::collide(std::size_t& candidates) {
   if (!impl_->registered) {
     std::vector<fcl::CollisionObjectd*> all;

@@ -27,6 +27,8 @@ class FclScene {
   /// Updates the manager and collides every candidate; the colliding object pairs (smaller
   /// number first) with their triangle pairs, sorted. `candidates` gets the manager's count.
   std::vector<ObjectContact> collide(std::size_t& candidates);
+  /// The objects' AABBs as FCL computed them for their current poses (what the manager sees).
+  std::vector<Aabb> boxes() const;
 
  private:
   struct Impl;

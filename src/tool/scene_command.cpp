@@ -34,6 +34,7 @@ struct SceneArgs {
   std::vector<std::string> managers;
   bool quiet = false;
   std::string json;
+  std::string broadphase_case;
 };
 
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
@@ -106,6 +107,7 @@ int run_scene(const SceneArgs& args, harness::BvType bv_type) {
   }
   std::vector<ManagerTally> tallies(managers.size());
 
+  harness::BroadphaseInput broadphase;  // FCL's boxes per frame, for --broadphase-case
   std::vector<double> broad_ms, narrow_ms;
   std::size_t candidates = 0, colliding = 0, tri_pairs = 0, brute_mismatches = 0;
   std::uint64_t swaps_before = 0;
@@ -167,6 +169,10 @@ int run_scene(const SceneArgs& args, harness::BvType bv_type) {
       }
       if (m == 0) fcl_ms_first = tallies[m].ms.back(), fcl_diff_first = diff.size();
     }
+    if (!args.broadphase_case.empty() && !fcl.empty()) {
+      auto& frame_boxes = broadphase.frames.emplace_back();
+      for (const Aabb& b : fcl.front()->boxes()) frame_boxes.emplace_back(b);
+    }
     if (!args.quiet) {
       std::printf("%6d %9.3f %10.3f %10zu %10zu %10zu %8llu %9.3f %9zu%s\n", frame, broad_ms.back(), narrow_ms.back(),
                   pairs.size(), contacts.size(), triangle_pairs(contacts), static_cast<unsigned long long>(swaps),
@@ -200,6 +206,11 @@ int run_scene(const SceneArgs& args, harness::BvType bv_type) {
                                   {"differing_pairs", tallies[m].differing}, {"classes", classes_json}};
   }
   std::printf("(FCL: the manager's update and collide, with BVHModel<OBBRSSd> collide on each candidate, all contacts)\n");
+  if (!args.broadphase_case.empty()) {
+    std::ofstream out(args.broadphase_case);
+    out << harness::input_to_json(broadphase).dump() << '\n';
+    if (!out) throw std::runtime_error("cannot write " + args.broadphase_case);
+  }
   if (!args.json.empty()) {
     std::ofstream out(args.json);
     out << harness::Json{{"objects", args.objects}, {"frames", args.frames}, {"seed", args.seed}, {"bv", args.bv},
@@ -247,6 +258,8 @@ void add_scene_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--manager", args->managers, "FCL broadphase managers to check against (repeat; default: all seven)");
   cmd->add_flag("--quiet", args->quiet, "Only the summary, not a line per frame");
   cmd->add_option("--json", args->json, "Also write the summary as JSON");
+  cmd->add_option("--broadphase-case", args->broadphase_case,
+                  "Write the boxes FCL's managers saw, every frame, as the inputs of a broadphase case (for `crosscheck add`)");
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 
