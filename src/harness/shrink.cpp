@@ -249,17 +249,22 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
         }
       }
     }
-    // Then each value on its own.
+    // Then each value on its own (the values in the case are read again after each change).
+    const auto values_in_case = [&] {
+      std::vector<double> values;
+      for (const std::string& q : leaves) values.push_back(*parse_double(current.at(Json::json_pointer(q)).get<std::string>()));
+      return values;
+    };
+    std::vector<double> in_case = values_in_case();
     for (const std::string& p : leaves) {
       const Json::json_pointer ptr(p);
-      std::vector<double> in_case;
-      for (const std::string& q : leaves) in_case.push_back(*parse_double(current.at(Json::json_pointer(q)).get<std::string>()));
       const double x = *parse_double(current.at(ptr).get<std::string>());
       for (double y : candidates(x, in_case)) {
         Json doc = current;
         doc[ptr] = number_to_json(y);
         if (attempt(doc)) {
           progress = true;
+          in_case = values_in_case();
           break;
         }
       }
