@@ -36,11 +36,12 @@ Obb moved_box(const Bvh<Obb>& b, std::size_t node, const RigidTransform& t, doub
 
 // Aabb and k-DOPs: re-fitted around moved points, each slab widened by pad times the 1-norm
 // of its direction.
+// `points` is scratch space (kept by the caller so that a query does not allocate per update).
 template <class BV>
-BV refitted(const Bvh<BV>& b, std::size_t node, const RigidTransform& t, double pad, BvUpdate update) {
+BV refitted(const Bvh<BV>& b, std::size_t node, const RigidTransform& t, double pad, BvUpdate update,
+            std::vector<Vec3>& points) {
   const std::span<const Vec3> source = update == BvUpdate::approximate ? b.corners.of(node) : b.hull_points.of(node);
-  std::vector<Vec3> points;
-  points.reserve(source.size());
+  points.clear();
   for (const Vec3& p : source) points.push_back(apply(t, p));
   BV v = BoundingVolume<BV>::fit(points);
   if constexpr (std::is_same_v<BV, Aabb>) {
@@ -63,7 +64,7 @@ class Traversal {
             const CollideOptions& options)
       : a_(a), b_(b), t_(relative(pose_a, pose_b)), options_(options) {
     pad_ = update_pad(b.magnitude, t_);
-    if constexpr (!std::is_same_v<BV, Obb>) volumes_.resize(b.nodes.size());
+    volumes_.resize(b.nodes.size());
     triangles_.resize(b.triangles.size());
   }
 
@@ -98,17 +99,18 @@ class Traversal {
     return BoundingVolume<BV>::size(x.bv) < BoundingVolume<BV>::size(y.bv);
   }
 
+  // b's volume in a's frame, computed once per node and query (a's descent tests the same node
+  // of b against many of a's). Moving an OBB is not an update (n_u counts refits only).
   const BV& volume_of(std::int32_t nb) {
-    if constexpr (std::is_same_v<BV, Obb>) {
-      scratch_ = moved_box(b_, nb, t_, pad_);
-      return scratch_;
-    } else {
-      if (!volumes_[nb]) {
-        volumes_[nb] = refitted(b_, nb, t_, pad_, options_.update);
+    if (!volumes_[nb]) {
+      if constexpr (std::is_same_v<BV, Obb>) {
+        volumes_[nb] = moved_box(b_, nb, t_, pad_);
+      } else {
+        volumes_[nb] = refitted(b_, nb, t_, pad_, options_.update, points_);
         ++result_.counters.bv_updates;
       }
-      return *volumes_[nb];
     }
+    return *volumes_[nb];
   }
 
   const Triangle& triangle_of(std::uint32_t slot) {
@@ -135,7 +137,7 @@ class Traversal {
   CollideOptions options_;
   double pad_ = 0;
   std::vector<std::optional<BV>> volumes_;
-  BV scratch_;
+  std::vector<Vec3> points_;  // scratch for refitted()
   std::vector<std::optional<Triangle>> triangles_;
   CollisionResult result_;
 };
@@ -153,7 +155,8 @@ BV moved_volume(const Bvh<BV>& b, std::size_t node, const RigidTransform& t, BvU
   if constexpr (std::is_same_v<BV, Obb>) {
     return moved_box(b, node, t, update_pad(b.magnitude, t));
   } else {
-    return refitted(b, node, t, update_pad(b.magnitude, t), update);
+    std::vector<Vec3> points;
+    return refitted(b, node, t, update_pad(b.magnitude, t), update, points);
   }
 }
 

@@ -11,7 +11,9 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 
 namespace cc::fp {
 
@@ -34,6 +36,19 @@ inline double median3(double a, double b, double c) {
 /// underflow. Its error is that of any order: at most 2u(|a| + |b| + |c|) (plus underflow).
 inline double sum3(double a, double b, double c) {
   return median3((a + b) + c, (a + c) + b, (b + c) + a);
+}
+
+/// x * 2^e: the value of std::ldexp(x, e) (both round once, correctly, on underflow and
+/// overflow), as one multiplication when 2^e is a normal double (no library call).
+inline double scale2(double x, int e) {
+  if (e >= -1022 && e <= 1023) return x * std::bit_cast<double>(static_cast<std::uint64_t>(e + 1023) << 52);
+  return std::ldexp(x, e);
+}
+
+/// std::ilogb(m) for a finite m != 0, read from the exponent bits when m is normal.
+inline int exponent_of(double m) {
+  const int biased = static_cast<int>((std::bit_cast<std::uint64_t>(m) >> 52) & 0x7ff);
+  return biased != 0 ? biased - 1023 : std::ilogb(m);
 }
 
 /// True when x is neither NaN nor infinite.

@@ -96,9 +96,10 @@ Kdop<K> fit_kdop(std::span<const Vec3> points);
 /// rounding (2^-48 of the largest coordinate). NaN slabs: false. Symmetric in a and b.
 template <int K>
 bool test_kdop_kdop(const Kdop<K>& a, const Kdop<K>& b) {
-  bool overlap = true;
-  for (int i = 0; i < K / 2; ++i) overlap &= (a.lo[i] <= b.hi[i]) & (b.lo[i] <= a.hi[i]);
-  return overlap;
+  for (int i = 0; i < K / 2; ++i) {
+    if (!(a.lo[i] <= b.hi[i]) || !(b.lo[i] <= a.hi[i])) return false;  // NaN: false
+  }
+  return true;
 }
 
 }  // namespace cc

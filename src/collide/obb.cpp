@@ -4,15 +4,8 @@ namespace cc {
 
 bool test_obb_obb(const Obb& a, const Obb& b) {
   const Vec3 d = b.center - a.center;  // swapping a and b negates d exactly
-  double r[3][3], abs_r[3][3];        // r[i][j] = a_i . b_j
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      r[i][j] = dot(a.axes.col[i], b.axes.col[j]);
-      abs_r[i][j] = std::fabs(r[i][j]);
-    }
-  }
-  const Vec3 ta = transpose_times(a.axes, d);  // d in a's frame
-  const Vec3 tb = transpose_times(b.axes, d);  // d in b's frame
+  double r[3][3], abs_r[3][3];        // r[i][j] = a_i . b_j, row i computed before a_i is tried
+  Vec3 ta;                            // d in a's frame, likewise
 
   // One bound for every axis. Rounding: at most 22u |d|_1 + 8u (sum of half extents) on the
   // worst (edge) axis; 32u covers it and its own evaluation. Frame: axes that are orthonormal
@@ -26,9 +19,15 @@ bool test_obb_obb(const Obb& a, const Obb& b) {
   };
 
   for (int i = 0; i < 3; ++i) {  // a's face normals
+    for (int j = 0; j < 3; ++j) {
+      r[i][j] = dot(a.axes.col[i], b.axes.col[j]);
+      abs_r[i][j] = std::fabs(r[i][j]);
+    }
+    ta[i] = dot(a.axes.col[i], d);
     const double rb = fp::sum3(b.half.x * abs_r[i][0], b.half.y * abs_r[i][1], b.half.z * abs_r[i][2]);
     if (separates(ta[i], a.half[i], rb)) return false;
   }
+  const Vec3 tb = transpose_times(b.axes, d);  // d in b's frame
   for (int j = 0; j < 3; ++j) {  // b's face normals
     const double ra = fp::sum3(a.half.x * abs_r[0][j], a.half.y * abs_r[1][j], a.half.z * abs_r[2][j]);
     if (separates(tb[j], ra, b.half[j])) return false;

@@ -28,9 +28,9 @@ RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box) {
   // errs by a negligible distance however long or short the direction. Exact; undone on return.
   // (Not when every component is parallel: the parameters then only pass through.)
   const double m = max_abs(ray.dir);
-  const int e = (m > 0x1p-1024 && std::isfinite(m)) ? std::ilogb(m) : 0;
-  const Vec3 dir{std::ldexp(ray.dir.x, -e), std::ldexp(ray.dir.y, -e), std::ldexp(ray.dir.z, -e)};
-  const double tmin = std::ldexp(ray.tmin, e), tmax = std::ldexp(ray.tmax, e);
+  const int e = (m > 0x1p-1024 && std::isfinite(m)) ? fp::exponent_of(m) : 0;
+  const Vec3 dir{fp::scale2(ray.dir.x, -e), fp::scale2(ray.dir.y, -e), fp::scale2(ray.dir.z, -e)};
+  const double tmin = fp::scale2(ray.tmin, e), tmax = fp::scale2(ray.tmax, e);
   // tmin and tmax compared as given: scaled, both may underflow to the same value. (Elsewhere an
   // underflowed tmin or tmax errs by less than the padding of the slabs it meets.)
   if (!(ray.tmin <= ray.tmax)) return {};
@@ -57,12 +57,14 @@ RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box) {
 
   double enter = -INFINITY, exit = INFINITY;  // over the slabs, as computed
   double enter_low = tmin, exit_high = tmax;  // with tmin and tmax, widened by the rounding bound
+  double nears[3] = {0, 0, 0}, fars[3] = {0, 0, 0};  // kept for the hit path
   for (int i = 0; i < 3; ++i) {
     if (parallel(i)) {  // the origin decides, exactly
       if (ray.origin[i] < box.lo[i] || ray.origin[i] > box.hi[i]) return {};
       continue;
     }
     const auto [near, far] = slab(i);
+    nears[i] = near, fars[i] = far;
     enter = std::max(enter, near);
     exit = std::min(exit, far);
     enter_low = std::max(enter_low, lower(near));
@@ -76,8 +78,8 @@ RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box) {
   // the smallest exit, so the choice does not depend on the order of the axes.
   double t_enter = ray.tmin, t_exit = ray.tmax;
   for (int i = 0; i < 3; ++i) {
-    if (parallel(i)) continue;
-    const auto [near, far] = slab(i);
+    if (parallel(i) || (nears[i] != enter && fars[i] != exit)) continue;
+    const double near = nears[i], far = fars[i];
     const double inv = 1.0 / ray.dir[i];
     const double lo = (box.lo[i] - ray.origin[i]) * inv, hi = (box.hi[i] - ray.origin[i]) * inv;
     if (near == enter) t_enter = std::max(t_enter, std::min(lo, hi));

@@ -4,7 +4,8 @@
 
 namespace cc::sat {
 
-double TriangleSet::magnitude() const { return std::max({max_abs(t.v[0]), max_abs(t.v[1]), max_abs(t.v[2])}); }
+TriangleSet::TriangleSet(const Triangle& tri)
+    : t(tri), magnitude_(std::max({max_abs(tri.v[0]), max_abs(tri.v[1]), max_abs(tri.v[2])})) {}
 
 Interval TriangleSet::project(const Vec3& axis) const {
   const double p0 = dot(axis, t.v[0]), p1 = dot(axis, t.v[1]), p2 = dot(axis, t.v[2]);
@@ -16,7 +17,7 @@ Vec3 TriangleSet::centroid() const {
   return {mean(0), mean(1), mean(2)};
 }
 
-double BoxSet::magnitude() const { return std::max(max_abs(box.lo), max_abs(box.hi)); }
+BoxSet::BoxSet(const Aabb& b) : box(b), magnitude_(std::max(max_abs(b.lo), max_abs(b.hi))) {}
 
 Interval BoxSet::project(const Vec3& axis) const {
   double low[3], high[3];

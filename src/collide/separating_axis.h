@@ -20,18 +20,26 @@ struct Interval {
 
 /// The vertices of a triangle as a convex set to project.
 struct TriangleSet {
+  explicit TriangleSet(const Triangle& tri);
   const Triangle& t;
-  double magnitude() const;                 // largest absolute coordinate
+  double magnitude() const { return magnitude_; }  // largest absolute coordinate
   Interval project(const Vec3& axis) const;  // each end within 3u |axis|_1 magnitude()
   Vec3 centroid() const;
+
+ private:
+  double magnitude_;  // computed once: every candidate axis needs it
 };
 
 /// An axis-aligned box as a convex set to project.
 struct BoxSet {
+  explicit BoxSet(const Aabb& b);
   const Aabb& box;
-  double magnitude() const;
+  double magnitude() const { return magnitude_; }
   Interval project(const Vec3& axis) const;
   Vec3 centroid() const;
+
+ private:
+  double magnitude_;
 };
 
 /// True when the projections of a and b onto `axis` are apart by more than their rounding

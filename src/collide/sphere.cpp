@@ -10,9 +10,9 @@ bool test_sphere_sphere(const Sphere& a, const Sphere& b) {
   // same after permuting, flipping or scaling the inputs.)
   const double m = std::max(max_abs(d), std::fabs(reach));
   if (m > 0 && std::isfinite(m)) {
-    const int e = std::ilogb(m);
-    d = {std::ldexp(d.x, -e), std::ldexp(d.y, -e), std::ldexp(d.z, -e)};
-    reach = std::ldexp(reach, -e);
+    const int e = fp::exponent_of(m);
+    d = {fp::scale2(d.x, -e), fp::scale2(d.y, -e), fp::scale2(d.z, -e)};
+    reach = fp::scale2(reach, -e);
   }
   const double dist2 = fp::sum3(d.x * d.x, d.y * d.y, d.z * d.z);
   const double reach2 = reach * reach;

@@ -47,8 +47,8 @@ inline double max_abs(const Vec3& a) { return std::max({std::fabs(a.x), std::fab
 inline Vec3 unit_scaled(const Vec3& a) {
   const double m = max_abs(a);
   if (m == 0 || !std::isfinite(m)) return a;
-  const int e = std::ilogb(m);
-  return {std::ldexp(a.x, -e), std::ldexp(a.y, -e), std::ldexp(a.z, -e)};
+  const int e = fp::exponent_of(m);
+  return {fp::scale2(a.x, -e), fp::scale2(a.y, -e), fp::scale2(a.z, -e)};
 }
 
 /// True when no component is NaN or infinite.

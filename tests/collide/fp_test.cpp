@@ -44,5 +44,24 @@ TEST(Median3, PicksTheMiddleValue) {
   EXPECT_EQ(median3(5, 5, 1), 5);
 }
 
+TEST(Scale2, IsLdexpBitForBit) {
+  const double values[] = {1.0, -1.5, 0.1, 0x1.fffffffffffffp0, 0x1p-1074, -0x1p-1060, 0x1.8p-1022, 0x1p1023,
+                           1e300, -1e-300, 0.0, -0.0, INFINITY, -INFINITY};
+  for (double x : values) {
+    for (int e : {-1100, -1075, -1074, -1023, -1022, -600, -53, -1, 0, 1, 52, 600, 1022, 1023, 1024, 1100}) {
+      const double got = scale2(x, e), want = std::ldexp(x, e);
+      EXPECT_EQ(std::signbit(got), std::signbit(want)) << x << " * 2^" << e;
+      EXPECT_EQ(got, want) << x << " * 2^" << e;  // rounding on underflow included
+    }
+  }
+  EXPECT_TRUE(std::isnan(scale2(NAN, 3)));
+}
+
+TEST(ExponentOf, IsIlogbForNormalAndSubnormalValues) {
+  for (double m : {1.0, 1.9999, 2.0, 0.75, -3.0, 0x1p-1022, 0x1p-1023, 0x1p-1074, 0x1.8p-1050, 1e308, -1e-310}) {
+    EXPECT_EQ(exponent_of(m), std::ilogb(m)) << m;
+  }
+}
+
 }  // namespace
 }  // namespace cc::fp

@@ -75,5 +75,52 @@ TEST(TestKdopKdop, IsSymmetric) {
   EXPECT_EQ(test_kdop_kdop(fit_kdop<24>(a), fit_kdop<24>(b)), test_kdop_kdop(fit_kdop<24>(b), fit_kdop<24>(a)));
 }
 
+// The definition of fit_kdop without its specialisations: every slab from sum3 of the three
+// exact products, widened by 4u of sum3 of their magnitudes for 2- and 3-term directions.
+template <int K>
+Kdop<K> plain_fit(const std::vector<Vec3>& points) {
+  Kdop<K> dop;
+  const auto dirs = kdop_directions<K>();
+  for (const Vec3& p : points) {
+    for (int i = 0; i < K / 2; ++i) {
+      const double tx = dirs[i].x * p.x, ty = dirs[i].y * p.y, tz = dirs[i].z * p.z;
+      const int terms = (dirs[i].x != 0) + (dirs[i].y != 0) + (dirs[i].z != 0);
+      const double s = fp::sum3(tx, ty, tz);
+      const double pad = (terms > 1 ? 4 * fp::u : 0.0) * fp::sum3(std::fabs(tx), std::fabs(ty), std::fabs(tz));
+      dop.lo[i] = std::min(dop.lo[i], s - pad);
+      dop.hi[i] = std::max(dop.hi[i], s + pad);
+    }
+  }
+  return dop;
+}
+
+template <int K>
+void expect_same_bits(const std::vector<Vec3>& points) {
+  const Kdop<K> fast = fit_kdop<K>(points), plain = plain_fit<K>(points);
+  for (int i = 0; i < K / 2; ++i) {
+    EXPECT_EQ(std::signbit(fast.lo[i]), std::signbit(plain.lo[i])) << "k " << K << " slab " << i;
+    EXPECT_EQ(std::signbit(fast.hi[i]), std::signbit(plain.hi[i])) << "k " << K << " slab " << i;
+    EXPECT_EQ(fast.lo[i], plain.lo[i]) << "k " << K << " slab " << i;
+    EXPECT_EQ(fast.hi[i], plain.hi[i]) << "k " << K << " slab " << i;
+  }
+}
+
+TEST(FitKdop, IsItsPlainDefinitionBitForBitSignedZerosIncluded) {
+  // Coordinates that make sums cancel to +0 or -0, and ordinary ones.
+  const double values[] = {0.0, -0.0, 1.0, -1.0, 0.1, -0.1, 0.3, 1e-300, -1e-300, 0x1p-1074, 3.5};
+  unsigned state = 12345;
+  const auto next = [&] { return state = state * 1103515245u + 12345u, values[(state >> 16) % std::size(values)]; };
+  for (int round = 0; round < 300; ++round) {
+    std::vector<Vec3> points;
+    for (int j = 0; j < 1 + round % 6; ++j) points.push_back({next(), next(), next()});
+    expect_same_bits<6>(points);
+    expect_same_bits<14>(points);
+    expect_same_bits<16>(points);
+    expect_same_bits<18>(points);
+    expect_same_bits<24>(points);
+    expect_same_bits<26>(points);
+  }
+}
+
 }  // namespace
 }  // namespace cc

@@ -1,0 +1,174 @@
+// Hierarchies, library against FCL with the same volume type:
+//  - bvh_build/<mesh>/<bv>: build time and bytes per triangle, for env.obj (2180 triangles) and a
+//    procedural torus of 99,856 triangles. Library: build_bvh with the default options (top
+//    down, longest side, midpoint, one triangle per leaf). FCL: BVHModel with its default
+//    splitter (bench/fcl_models.h).
+//  - bvh_all_pairs/env_rob/<bv>: env.obj against rob.obj, all colliding triangle pairs, over the
+//    poses of `crosscheck bvh-report` (100 drawn as FCL's test draws them, 100 brought to near
+//    contact, seed 1): library collide() (all pairs, approximate update, descent into a) against
+//    oracle/fcl's fcl_collide_meshes with the same volume type (OBBd, AABBd, KDOPd<18>).
+#include <benchmark/benchmark.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include "bench/fcl_models.h"
+#include "bench/inputs.h"
+#include "bench/suites.h"
+#include "collide/bvh_collide.h"
+#include "harness/choices.h"
+#include "harness/mesh_files.h"
+#include "harness/mesh_poses.h"
+#include "harness/mesh_query.h"
+#include "harness/procedural_mesh.h"
+#include "oracle/fcl/parties.h"
+
+namespace cc::bench {
+namespace {
+
+struct BvCase {
+  harness::BvType lib;
+  FclBv fcl;
+  const char* fcl_party;  // oracle/fcl's mesh party of this volume type, if it has one
+};
+const BvCase kCases[] = {
+    {harness::BvType::aabb, FclBv::aabb, "fcl.BVHModel<AABBd>"},
+    {harness::BvType::obb, FclBv::obb, "fcl.BVHModel<OBBd>"},
+    {harness::BvType::kdop16, FclBv::kdop16, nullptr},
+    {harness::BvType::kdop18, FclBv::kdop18, "fcl.BVHModel<KDOPd<18>>"},
+    {harness::BvType::kdop24, FclBv::kdop24, nullptr},
+};
+
+// What a library hierarchy occupies: every array it owns, by capacity.
+template <class BV>
+std::size_t bvh_bytes(const Bvh<BV>& t) {
+  const auto points = [](const NodePoints& p) {
+    return p.points.capacity() * sizeof(Vec3) + p.range.capacity() * sizeof(p.range[0]);
+  };
+  return t.nodes.capacity() * sizeof(BvhNode<BV>) + t.order.capacity() * sizeof(std::uint32_t) +
+         t.triangles.capacity() * sizeof(Triangle) + points(t.corners) + points(t.hull_points);
+}
+
+std::filesystem::path corpora_root() {
+  const char* env = std::getenv("CROSSCHECK_CORPORA");
+  return env ? std::filesystem::path(env) : std::filesystem::path(CROSSCHECK_SOURCE_DIR) / "corpora";
+}
+
+std::shared_ptr<const Mesh> load(const char* name) {
+  const auto folder = harness::mesh_folder(corpora_root());
+  const auto path = harness::find_mesh_file(name, folder);
+  if (!path) {
+    std::fprintf(stderr, "bench: %s not found in %s (set CROSSCHECK_CORPORA)\n", name, folder.string().c_str());
+    std::exit(2);
+  }
+  return harness::load_mesh_file(*path);
+}
+
+// The library's builds of the large mesh take seconds each (convex hulls per node, by Qhull),
+// so they run lib_repetitions times, FCL's fcl_repetitions times.
+void register_build(const std::string& mesh_name, std::shared_ptr<const Mesh> mesh, int lib_repetitions,
+                    int fcl_repetitions) {
+  const double triangles = static_cast<double>(mesh->size());
+  for (const BvCase& c : kCases) {
+    const std::string name = "bvh_build/" + mesh_name + "/" + std::string(to_string(c.fcl));
+    benchmark::RegisterBenchmark((name + "/lib").c_str(), [=](benchmark::State& state) {
+      std::size_t bytes = 0;
+      for (auto _ : state) {
+        harness::with_bv_type(c.lib, [&]<class BV>() {
+          const Bvh<BV> tree = build_bvh<BV>(*mesh, BuildOptions{});
+          bytes = bvh_bytes(tree);
+        });
+      }
+      state.counters["items_per_iter"] = 1;
+      state.counters["bytes_per_triangle"] = static_cast<double>(bytes) / triangles;
+    })->Iterations(1)->Repetitions(lib_repetitions)->Unit(benchmark::kMillisecond);
+    benchmark::RegisterBenchmark((name + "/fcl").c_str(), [=](benchmark::State& state) {
+      std::size_t bytes = 0;
+      for (auto _ : state) bytes = build_fcl_model(c.fcl, *mesh);
+      state.counters["items_per_iter"] = 1;
+      state.counters["bytes_per_triangle"] = static_cast<double>(bytes) / triangles;
+    })->Iterations(1)->Repetitions(fcl_repetitions)->Unit(benchmark::kMillisecond);
+  }
+}
+
+// The poses of crosscheck bvh-report (src/tool/bvh_report_command.cpp), from the same harness
+// functions and seed.
+std::shared_ptr<const std::vector<harness::MeshPair>> env_rob_poses(std::shared_ptr<const Mesh> env,
+                                                                     std::shared_ptr<const Mesh> rob) {
+  harness::MeshPair base;
+  base.a.source = base.b.source = harness::MeshRef::Source::file;
+  base.a.file = "meshes/env.obj", base.b.file = "meshes/rob.obj";
+  base.a.mesh = env, base.b.mesh = rob;
+  harness::RandomChoices c(1);
+  auto poses = std::make_shared<std::vector<harness::MeshPair>>();
+  for (int i = 0; i < 200; ++i) {
+    harness::MeshPair m = base;
+    if (i >= 100) {
+      m.pose_b.rotation = harness::fcl_style_rotation(c);
+      harness::bisect_to_contact(m, c);
+    } else {
+      m.pose_b = harness::fcl_style_pose(c);
+    }
+    poses->push_back(std::move(m));
+  }
+  return poses;
+}
+
+void register_all_pairs(std::shared_ptr<const Mesh> env, std::shared_ptr<const Mesh> rob) {
+  const auto poses = env_rob_poses(env, rob);
+  const double queries = static_cast<double>(poses->size());
+  for (const BvCase& c : kCases) {
+    const std::string name = "bvh_all_pairs/env_rob/" + std::string(to_string(c.fcl));
+    // Built once, outside the timing, as FCL's models are (fcl_collide_meshes caches them).
+    auto trees = std::make_shared<std::function<std::size_t()>>();
+    harness::with_bv_type(c.lib, [&]<class BV>() {
+      auto a = std::make_shared<const Bvh<BV>>(build_bvh<BV>(*env, BuildOptions{}));
+      auto b = std::make_shared<const Bvh<BV>>(build_bvh<BV>(*rob, BuildOptions{}));
+      *trees = [a, b, poses] {
+        std::size_t pairs = 0;
+        for (const harness::MeshPair& m : *poses) {
+          pairs += collide(*a, m.pose_a, *b, m.pose_b, CollideOptions{}).pairs.size();
+        }
+        return pairs;
+      };
+    });
+    benchmark::RegisterBenchmark((name + "/lib").c_str(), [=](benchmark::State& state) {
+      std::size_t pairs = 0;
+      for (auto _ : state) benchmark::DoNotOptimize(pairs = (*trees)());
+      state.counters["items_per_iter"] = queries;
+      state.counters["pairs"] = static_cast<double>(pairs);
+    })->Unit(benchmark::kMillisecond);
+    if (c.fcl_party == nullptr) continue;
+    const std::string party = c.fcl_party;
+    fcl_oracle::fcl_collide_meshes(party, poses->front(), false);  // builds and caches FCL's models
+    benchmark::RegisterBenchmark((name + "/fcl").c_str(), [=](benchmark::State& state) {
+      std::size_t pairs = 0;
+      for (auto _ : state) {
+        pairs = 0;
+        for (const harness::MeshPair& m : *poses) pairs += fcl_oracle::fcl_collide_meshes(party, m, false).answer.pairs.size();
+        benchmark::DoNotOptimize(pairs);
+      }
+      state.counters["items_per_iter"] = queries;
+      state.counters["pairs"] = static_cast<double>(pairs);
+    })->Unit(benchmark::kMillisecond);
+  }
+}
+
+}  // namespace
+
+void register_hierarchy_benchmarks() {
+  const auto env = load("env.obj"), rob = load("rob.obj");
+  register_build("env", env, 5, 5);
+  harness::ProceduralMesh torus;
+  torus.shape = harness::ProceduralMesh::Shape::torus;
+  torus.seed = seed();
+  torus.resolution = 158;  // 4 n^2 = 99,856 triangles
+  register_build("torus100k", std::make_shared<const Mesh>(harness::make_mesh(torus)), 1, 3);
+  register_all_pairs(env, rob);
+}
+
+}  // namespace cc::bench

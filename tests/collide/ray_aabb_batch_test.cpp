@@ -1,0 +1,163 @@
+#include "collide/ray_aabb_batch.h"
+
+#include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace cc {
+namespace {
+
+const double kNan = std::numeric_limits<double>::quiet_NaN();
+const double kInf = std::numeric_limits<double>::infinity();
+const double kDenormMin = std::numeric_limits<double>::denorm_min();
+
+// Every box of the batch against the scalar test; returns the number of hits.
+std::size_t expect_same_as_scalar(const Ray& ray, const AabbSoa& boxes) {
+  std::vector<std::uint8_t> hits(boxes.size(), 7);
+  const std::size_t count = test_ray_aabbs(ray, boxes, hits);
+  std::size_t expected = 0;
+  for (std::size_t i = 0; i < boxes.size(); ++i) {
+    const bool scalar = intersect_ray_aabb(ray, boxes[i]).hit;
+    expected += scalar;
+    EXPECT_EQ(hits[i], scalar ? 1 : 0) << "box " << i << " of " << boxes.size();
+  }
+  EXPECT_EQ(count, expected);
+  return count;
+}
+
+AabbSoa soa(std::initializer_list<Aabb> boxes) {
+  AabbSoa s;
+  for (const Aabb& b : boxes) s.push_back(b);
+  return s;
+}
+
+TEST(TestRayAabbs, StoresTheBoxesByCoordinate) {
+  const AabbSoa s = soa({{{1, 2, 3}, {4, 5, 6}}});
+  ASSERT_EQ(s.size(), 1u);
+  EXPECT_EQ(s[0], (Aabb{{1, 2, 3}, {4, 5, 6}}));
+}
+
+TEST(TestRayAabbs, TouchingIsAHit) {
+  const AabbSoa boxes = soa({{{0, 0, 0}, {1, 1, 1}},       // corner to corner
+                             {{1, 1, 1}, {2, 2, 2}},       // from its corner
+                             {{2, 2.6, 0}, {3, 3, 1}},     // missed
+                             {{-1, -1, -1}, {0, 0, 0}}});  // touched at the origin only
+  std::vector<std::uint8_t> hits(4);
+  EXPECT_EQ(test_ray_aabbs({{0, 0, 0}, {1, 1, 1}}, boxes, hits), 3u);
+  EXPECT_EQ(hits, (std::vector<std::uint8_t>{1, 1, 0, 1}));
+  expect_same_as_scalar({{0, 0, 0}, {1, 1, 1}}, boxes);
+}
+
+TEST(TestRayAabbs, ParallelSlabsAreDecidedByTheOrigin) {
+  const double outside = std::nextafter(1.0, 2.0);
+  const AabbSoa boxes = soa({{{0, 0, 0}, {1, 1, 1}}, {{outside, 0, 0}, {2, 1, 1}}, {{-1, 0, 0}, {0, 1, 1}}});
+  for (double dx : {0.0, -0.0, kDenormMin, -kDenormMin, 0x1p-1024, -0x1p-1024}) {
+    std::vector<std::uint8_t> hits(3);
+    EXPECT_EQ(test_ray_aabbs({{1, -1, 0.5}, {dx, 1, 0}}, boxes, hits), 1u);
+    EXPECT_EQ(hits, (std::vector<std::uint8_t>{1, 0, 0}));
+    expect_same_as_scalar({{1, -1, 0.5}, {dx, 1, 0}}, boxes);
+    expect_same_as_scalar({{0, -1, 0.5}, {dx, 1, 0}}, boxes);
+  }
+  // Parallel to all three slabs: a point test.
+  expect_same_as_scalar({{1, 1, 1}, {0, 0, 0}}, boxes);
+  expect_same_as_scalar({{outside, 1, 1}, {0, -0.0, 0}}, boxes);
+}
+
+TEST(TestRayAabbs, NaNAndInfinitiesGiveNoHit) {
+  const AabbSoa boxes = soa({{{0, 0, 0}, {1, 1, 1}},
+                             {{kNan, 0, 0}, {1, 1, 1}},
+                             {{0, 0, 0}, {1, kNan, 1}},
+                             {{-kInf, 0, 0}, {1, 1, 1}},
+                             {{0, 0, 0}, {1, 1, kInf}},
+                             {{1, 0, 0}, {0, 1, 1}}});  // inverted
+  std::vector<std::uint8_t> hits(boxes.size());
+  EXPECT_EQ(test_ray_aabbs({{-1, 0.5, 0.5}, {1, 0, 0}}, boxes, hits), 1u);
+  EXPECT_EQ(hits, (std::vector<std::uint8_t>{1, 0, 0, 0, 0, 0}));
+  for (const Ray& ray : std::initializer_list<Ray>{{{kNan, 0.5, 0.5}, {1, 0, 0}},
+                                                   {{-1, 0.5, 0.5}, {kNan, 0, 0}},
+                                                   {{-1, 0.5, 0.5}, {kInf, 0, 0}},
+                                                   {{-1, 0.5, 0.5}, {1, 0, 0}, kNan, kInf},
+                                                   {{-1, 0.5, 0.5}, {1, 0, 0}, 0, kNan},
+                                                   {{-1, 0.5, 0.5}, {1, 0, 0}, kInf, kInf},
+                                                   {{-1, 0.5, 0.5}, {1, 0, 0}, -kInf, -kInf},
+                                                   {{-1, 0.5, 0.5}, {1, 0, 0}, 2, 1}}) {
+    EXPECT_EQ(expect_same_as_scalar(ray, boxes), 0u);
+  }
+  expect_same_as_scalar({{-1, 0.5, 0.5}, {1, 0, 0}, -kInf, kInf}, boxes);
+}
+
+TEST(TestRayAabbs, AComponentSubnormalOnceScaledTakesTheScalarPath) {
+  // 2^-1000 against 1: scaled, it is 2^-1000 (normal), but 2^-1030 scaled stays subnormal.
+  const AabbSoa boxes = soa({{{0, 0, 0}, {1, 1, 1}}, {{0, 2, 0}, {1, 3, 1}}});
+  expect_same_as_scalar({{0.5, -1, 0.5}, {0x1p-1030, 1, 0}}, boxes);
+  expect_same_as_scalar({{0.5, -1, 0.5}, {-0x1p-1070, 1, 0}}, boxes);
+  expect_same_as_scalar({{0.5, -1, 0.5}, {0x1p-1000, 1, 0}}, boxes);
+}
+
+TEST(TestRayAabbs, TooFewHitSlotsThrow) {
+  const AabbSoa boxes = soa({{{0, 0, 0}, {1, 1, 1}}, {{0, 0, 0}, {1, 1, 1}}});
+  std::vector<std::uint8_t> hits(1);
+  EXPECT_THROW(test_ray_aabbs({{0, 0, 0}, {1, 0, 0}}, boxes, hits), std::invalid_argument);
+}
+
+// Random rays and boxes whose coordinates come from a small set of values, so that ties,
+// touching, parallel slabs and special values are frequent; every batch length from 0 to 40
+// exercises the vector blocks and the remainder.
+TEST(TestRayAabbs, AgreesWithTheScalarTestOnRandomSpecialValues) {
+  const double values[] = {0,   -0.0, 1, -1, 0.5, 2, 3, -3, 1e-300, -1e-300, 1e300, -1e300, kDenormMin, -kDenormMin,
+                           DBL_MIN, 0x1p-1024, std::nextafter(1.0, 2.0), std::nextafter(1.0, 0.0), 0.1, kNan, kInf,
+                           -kInf};
+  std::mt19937_64 rng(20261121);
+  const auto pick = [&](bool special) {
+    const std::size_t n = special ? std::size(values) : std::size(values) - 3;
+    return values[rng() % n];
+  };
+  std::size_t total_hits = 0;
+  for (int round = 0; round < 400; ++round) {
+    const bool special = round % 4 == 0;
+    Ray ray{{pick(special), pick(special), pick(special)}, {pick(special), pick(special), pick(special)}};
+    if (round % 3 == 0) ray.tmin = pick(special), ray.tmax = round % 2 ? kInf : pick(special);
+    AabbSoa boxes;
+    for (int i = 0; i < round % 41; ++i) {
+      Aabb b{{pick(special), pick(special), pick(special)}, {pick(special), pick(special), pick(special)}};
+      for (int a = 0; a < 3; ++a) {
+        if (i % 5 != 0 && b.lo[a] > b.hi[a]) std::swap(b.lo[a], b.hi[a]);  // mostly valid boxes
+      }
+      boxes.push_back(b);
+    }
+    total_hits += expect_same_as_scalar(ray, boxes);
+  }
+  EXPECT_GT(total_hits, 100u);  // the comparison is not only among misses
+}
+
+// Generic rays against boxes around them: the common case of the vector path, with hits and
+// near misses; a box is sometimes made to touch the ray at its entry point.
+TEST(TestRayAabbs, AgreesWithTheScalarTestOnGenericRays) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::size_t total_hits = 0;
+  for (int round = 0; round < 200; ++round) {
+    const Ray ray{{u(rng), u(rng), u(rng)}, {u(rng), u(rng), u(rng)}, round % 2 ? 0 : -kInf, round % 3 ? kInf : 2};
+    AabbSoa boxes;
+    for (int i = 0; i < 67; ++i) {
+      const Vec3 c{2 * u(rng), 2 * u(rng), 2 * u(rng)};
+      const Vec3 h{0.3 * std::fabs(u(rng)), 0.3 * std::fabs(u(rng)), 0.3 * std::fabs(u(rng))};
+      Aabb b{c - h, c + h};
+      if (i % 7 == 0) {  // a face through a point of the ray
+        const Vec3 p = ray.origin + 0.75 * ray.dir;
+        b.lo.x = p.x;
+        b.hi.x = std::max(b.hi.x, p.x);
+      }
+      boxes.push_back(b);
+    }
+    total_hits += expect_same_as_scalar(ray, boxes);
+  }
+  EXPECT_GT(total_hits, 100u);
+}
+
+}  // namespace
+}  // namespace cc
