@@ -22,17 +22,6 @@ double magnitude_of(const MovingObb& m) {
 // q / unit as a double (neither overflowing nor underflowing on the way).
 double ratio(const Rational& q, Magnitude unit) { return (Magnitude::of(q) / unit).to_double(); }
 
-// The double nearest below (above) a rational.
-double round_down(const Rational& q) {
-  double x = to_double(q);
-  if (rational(x) > q) x = std::nextafter(x, -INFINITY);
-  return x;
-}
-double round_up(const Rational& q) {
-  double x = to_double(q);
-  if (rational(x) < q) x = std::nextafter(x, INFINITY);
-  return x;
-}
 
 // Minus the least, over t in [0, 1], of the largest gap (|p + t s| - r) / conditioning over the
 // axes, in units of the scale: the margin of the closest approach (< 0 apart). The gaps are

@@ -63,16 +63,6 @@ std::optional<std::pair<std::optional<Rational>, std::optional<Rational>>> range
   return std::pair{enter, exit};
 }
 
-double round_down(const Rational& q) {
-  double x = to_double(q);
-  if (rational(x) > q) x = std::nextafter(x, -INFINITY);
-  return x;
-}
-double round_up(const Rational& q) {
-  double x = to_double(q);
-  if (rational(x) < q) x = std::nextafter(x, INFINITY);
-  return x;
-}
 
 }  // namespace
 

@@ -32,6 +32,20 @@ double to_double(const Rational& q) {
   return t;
 }
 
+double round_down(const Rational& q) {
+  double x = to_double(q);
+  if (x == INFINITY) return std::numeric_limits<double>::max();
+  if (x != -INFINITY && rational(x) > q) x = std::nextafter(x, -INFINITY);
+  return x;
+}
+
+double round_up(const Rational& q) {
+  double x = to_double(q);
+  if (x == -INFINITY) return -std::numeric_limits<double>::max();
+  if (x != INFINITY && rational(x) < q) x = std::nextafter(x, INFINITY);
+  return x;
+}
+
 QVec3 rational(const Vec3& v) { return {rational(v.x), rational(v.y), rational(v.z)}; }
 QVec3 operator+(const QVec3& a, const QVec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 QVec3 operator-(const QVec3& a, const QVec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }

@@ -17,6 +17,9 @@ Rational rational(double x);
 
 /// The double nearest to a rational (ties to even); +-inf beyond the double range.
 double to_double(const Rational& q);
+/// The largest double <= q, and the smallest double >= q (-inf and +inf beyond the range).
+double round_down(const Rational& q);
+double round_up(const Rational& q);
 
 struct QVec3 {
   Rational x, y, z;

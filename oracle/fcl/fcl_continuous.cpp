@@ -27,9 +27,10 @@ Opinion fcl_continuous_collide(const harness::MovingObbInput& in) {
   request.ccd_solver_type = fcl::CCDC_CONSERVATIVE_ADVANCEMENT;
   request.gjk_solver_type = fcl::GST_LIBCCD;
   fcl::ContinuousCollisionResultd result;
-  const bool returned = run_with_time_limit(
-      kLibccdTimeLimit * 10, [&] { fcl::continuousCollide(&a, a0, a1, &b, b0, b1, request, result); });
-  if (!returned) return failed(party, "did not return within its time limit");
+  const Guarded outcome =
+      run_guarded(kLibccdTimeLimit * 10, [&] { fcl::continuousCollide(&a, a0, a1, &b, b0, b1, request, result); });
+  if (outcome == Guarded::timed_out) return failed(party, "did not return within its time limit");
+  if (outcome == Guarded::aborted) return failed(party, "aborted (a failed assertion in FCL's libccd code)");
   return answered(party, result.is_collide);
 }
 

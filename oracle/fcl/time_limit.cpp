@@ -14,6 +14,10 @@ void on_alarm(int) {
   if (g_armed) siglongjmp(g_escape, 1);
 }
 
+void on_abort(int) {
+  if (g_armed) siglongjmp(g_escape, 2);
+}
+
 void set_timer(double seconds) {
   itimerval t{};
   t.it_value.tv_sec = static_cast<time_t>(seconds);
@@ -23,23 +27,32 @@ void set_timer(double seconds) {
 
 }  // namespace
 
-bool run_with_time_limit(double seconds, const std::function<void()>& f) {
-  struct sigaction action {};
-  struct sigaction previous {};
-  action.sa_handler = on_alarm;
-  sigemptyset(&action.sa_mask);
-  sigaction(SIGVTALRM, &action, &previous);
-  bool finished = false;
-  if (sigsetjmp(g_escape, 1) == 0) {
+Guarded run_guarded(double seconds, const std::function<void()>& f) {
+  struct sigaction alarm_action {}, abort_action {};
+  struct sigaction previous_alarm {}, previous_abort {};
+  alarm_action.sa_handler = on_alarm;
+  abort_action.sa_handler = on_abort;
+  sigemptyset(&alarm_action.sa_mask);
+  sigemptyset(&abort_action.sa_mask);
+  sigaction(SIGVTALRM, &alarm_action, &previous_alarm);
+  sigaction(SIGABRT, &abort_action, &previous_abort);
+  Guarded outcome = Guarded::returned;
+  if (const int jumped = sigsetjmp(g_escape, 1); jumped == 0) {
     g_armed = 1;
     set_timer(seconds);
     f();
-    finished = true;
+  } else {
+    outcome = jumped == 1 ? Guarded::timed_out : Guarded::aborted;
   }
   g_armed = 0;
   set_timer(0);
-  sigaction(SIGVTALRM, &previous, nullptr);
-  return finished;
+  sigaction(SIGABRT, &previous_abort, nullptr);
+  sigaction(SIGVTALRM, &previous_alarm, nullptr);
+  return outcome;
+}
+
+bool run_with_time_limit(double seconds, const std::function<void()>& f) {
+  return run_guarded(seconds, f) == Guarded::returned;
 }
 
 }  // namespace cc::fcl_oracle

@@ -12,6 +12,12 @@ namespace cc::fcl_oracle {
 /// terminate on some inputs (long, thin triangles; huge coordinates).
 bool run_with_time_limit(double seconds, const std::function<void()>& f);
 
+/// How a guarded call ended.
+enum class Guarded { returned, timed_out, aborted };
+/// As run_with_time_limit, and also abandons f when it calls abort() (a failed assert() inside
+/// FCL's libccd code, e.g. doSimplex2's "A is not in region 1"), with the same caveats.
+Guarded run_guarded(double seconds, const std::function<void()>& f);
+
 /// The limit used for libccd calls: they take microseconds when they return at all.
 inline constexpr double kLibccdTimeLimit = 0.02;
 

@@ -84,7 +84,9 @@ constexpr std::array<std::uint64_t, 256> kMaskBytes = [] {
 // check that follows any candidate hit. (GCC 12's AVX-512 header trips
 // -Wmaybe-uninitialized inside _mm512_min_pd and _mm512_max_pd: a known false positive.)
 #pragma GCC diagnostic push
+#if !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+#endif
 template <int P>
 [[gnu::target("avx512f,avx512dq")]] std::size_t run_avx512(const PreparedRay& r, const AabbSoa& b, std::uint8_t* hits) {
   const double* lo[3] = {b.lo_x.data(), b.lo_y.data(), b.lo_z.data()};

@@ -91,7 +91,8 @@ Tally run_library(const harness::LibraryBvh& library, const std::vector<Pose>& p
       t.query_us.push_back(1e3 * ms_since(q));
       t.pairs += r.pairs.size();
       t.n_v += r.counters.bv_tests, t.n_p += r.counters.primitive_tests, t.n_u += r.counters.bv_updates;
-      harness::Answer answer{!r.pairs.empty(), {}, {}};
+      harness::Answer answer;
+      answer.hit = !r.pairs.empty();
       for (const auto& [fa, fb] : r.pairs) answer.pairs.emplace_back(fa, fb);
       t.stand(harness::classify(harness::QueryKind::mesh_mesh, answer, p.exact, {}).parties[0].standing);
       if (library.update == BvUpdate::approximate && library.bv != harness::BvType::obb) {

@@ -1,5 +1,8 @@
 #include "tool/cases.h"
 
+#include <sys/wait.h>
+#include <unistd.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -19,6 +22,23 @@ Evaluation evaluate_with_oracles(const Input& input) {
   static const exact::ExactRationalReference exact;
   static const fcl_oracle::FclSecondOpinion second;
   return evaluate(input, exact, &second);
+}
+
+Evaluation evaluate_surviving_crashes(const Input& input) {
+  std::fflush(nullptr);
+  const pid_t child = ::fork();
+  if (child == 0) {
+    evaluate_with_oracles(input);
+    std::_Exit(0);
+  }
+  int status = 0;
+  if (child > 0 && ::waitpid(child, &status, 0) == child && WIFEXITED(status) && WEXITSTATUS(status) == 0) {
+    return evaluate_with_oracles(input);
+  }
+  Evaluation e;
+  e.verdict.cls = CaseClass::oracle_crash;
+  e.verdict.parties = {{"library", Standing::not_applicable, "an oracle crashed on this input (in a child process)"}};
+  return e;
 }
 
 Case case_of(const Input& input, const Evaluation& e, Provenance provenance, std::string note) {

@@ -13,13 +13,15 @@ struct ShrinkArgs {
   std::string file;
   std::string out;
   int attempts = 4000;
+  double seconds = 60;
 };
 
 int run(const ShrinkArgs& args) {
   const auto c = read_case_or_report(args.file);
   if (!c) return kExitBadInput;
   const harness::Evaluation start = evaluate_with_oracles(c->input);
-  const harness::ShrinkResult r = harness::shrink(c->input, start, evaluate_with_oracles, args.attempts, 60,
+  // Candidates run in a child first: one that crashes an oracle is rejected, not fatal.
+  const harness::ShrinkResult r = harness::shrink(c->input, start, evaluate_surviving_crashes, args.attempts, args.seconds,
                                                      std::filesystem::path(args.file).parent_path());
   std::printf("%s: %s\n  %d values not small integers or halves before, %d after; %d of %d attempts kept\n",
               args.file.c_str(), harness::signature_of(harness::kind_of(c->input), start).c_str(),
@@ -52,6 +54,7 @@ void add_shrink_command(CLI::App& app, int& exit_code) {
   cmd->add_option("-o,--out", args->out,
                   "A file, or a directory (ending in /) for a file named by the shrunk case's hash (default: beside it)");
   cmd->add_option("--attempts", args->attempts, "Evaluations to try at most")->capture_default_str();
+  cmd->add_option("--seconds", args->seconds, "Time to spend at most")->capture_default_str();
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 
