@@ -64,32 +64,6 @@ std::string party_of(const std::string& manager) {
                                             : "fcl." + manager + "CollisionManager";
 }
 
-}  // namespace
-
-std::vector<std::string> fcl_broadphase_parties() {
-  std::vector<std::string> parties;
-  for (const std::string& name : fcl_manager_names()) parties.push_back(party_of(name));
-  return parties;
-}
-
-namespace {
-
-Opinion run_manager(const std::string& manager, const harness::BroadphaseInput& in);
-
-}  // namespace
-
-Opinion fcl_broadphase(const std::string& manager, const harness::BroadphaseInput& in) {
-  // IntervalTree's unregisterObject can loop for ever in deleteNode: every manager runs under a
-  // time limit (far above the milliseconds a case takes), and what it leaves behind is leaked.
-  Opinion o;
-  if (!run_with_time_limit(1.0, [&] { o = run_manager(manager, in); })) {
-    return failed(party_of(manager), "did not return within 1 s of CPU time");
-  }
-  return o;
-}
-
-namespace {
-
 Opinion run_manager(const std::string& manager, const harness::BroadphaseInput& in) {
   for (const auto& frame : in.frames) {
     for (const auto& box : frame) {
@@ -97,7 +71,7 @@ Opinion run_manager(const std::string& manager, const harness::BroadphaseInput& 
         // FCL's managers assume lo <= hi (SaP's update crashes on an inverted box).
         if (!(box->lo[k] <= box->hi[k])) return not_applicable(party_of(manager), "a box with lo > hi or NaN");
         // FCL 0.7's SaP crashes (SIGSEGV in SaPCollisionManager::update_) when a box flat on an
-        // axis moves, e.g. one segment box over two frames; README, "FCL findings".
+        // axis moves, e.g. one segment box over two frames (a case in corpora/broadphase).
         if (manager == "SaP" && box->lo[k] == box->hi[k] && in.frames.size() > 1) {
           return not_applicable(party_of(manager), "a box of zero extent moves: SaP's update crashes on it");
         }
@@ -139,5 +113,22 @@ Opinion run_manager(const std::string& manager, const harness::BroadphaseInput& 
 }
 
 }  // namespace
+
+std::vector<std::string> fcl_broadphase_parties() {
+  std::vector<std::string> parties;
+  for (const std::string& name : fcl_manager_names()) parties.push_back(party_of(name));
+  return parties;
+}
+
+Opinion fcl_broadphase(const std::string& manager, const harness::BroadphaseInput& in) {
+  // IntervalTree's unregisterObject can loop for ever in deleteNode: every manager runs under a
+  // time limit (far above the milliseconds a case takes), and what it leaves behind is leaked.
+  Opinion o;
+  if (!run_with_time_limit(1.0, [&] { o = run_manager(manager, in); })) {
+    return failed(party_of(manager), "did not return within 1 s of CPU time");
+  }
+  return o;
+}
+
 
 }  // namespace cc::fcl_oracle
