@@ -1,6 +1,7 @@
 // Generator for ray_aabb: rays parallel to a slab with the origin on, inside or just outside
-// it; rays aimed exactly at a corner, an edge or a face; rays starting inside; segments ending
-// on the boundary; tmax = 0; empty parameter ranges; lines (tmin = -inf); zero directions.
+// it; rays aimed at a corner, an edge or a face (exactly, or up to rounding); rays starting
+// inside; segments ending on the boundary; tmax = 0; empty parameter ranges; lines (tmin =
+// -inf); zero directions.
 #include <cmath>
 #include <limits>
 
@@ -55,9 +56,13 @@ RayAabbInput generate_ray_aabb(ValueSource& v, const GenerateOptions& options) {
       break;
     }
     case 2: {  // aimed at a boundary point; a segment may end exactly there
+      // Simple values make o + t d exact, so the segment ends on the boundary exactly and the
+      // slab parameters are often exact too; generic ones make it end there up to the rounding
+      // of the origin, with slab parameters that round either way of tmax.
       const Vec3 target = draw_boundary_point(v, in.box);
-      r.dir = simple_direction(v);
-      const double t = std::ldexp(1.0, v.small_int(4));
+      const bool generic = v.choices().chance(30);
+      r.dir = generic ? v.point() : simple_direction(v);
+      const double t = generic ? v.length() : std::ldexp(1.0, v.small_int(4));
       r.origin = target - t * r.dir;
       if (v.choices().chance(40)) r.tmax = v.choices().chance(70) ? t : v.nudge(t);
       break;

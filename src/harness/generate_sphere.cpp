@@ -1,6 +1,6 @@
 // Generator for sphere_sphere: balls touching by construction (centres apart by a Pythagorean
 // quadruple times a power of two, radii summing exactly to its length), a few ULPs from
-// touching, concentric, and points (radius 0).
+// touching, concentric, and points (radius 0); out of contract, a negative radius on either.
 #include <cmath>
 
 #include "harness/generate_detail.h"
@@ -44,6 +44,12 @@ SphereSphereInput generate_sphere_sphere(ValueSource& v, const GenerateOptions& 
     }
     default:  // concentric, or the same point
       in.b = {in.a.center, v.choices().chance(50) ? v.length() : in.a.radius};
+  }
+  // Out of contract also where the balls touch or nest by construction: a negative radius on
+  // either ball, where a test that checks the sign of only one radius answers true.
+  if (options.out_of_contract && v.choices().chance(30)) {
+    Sphere& s = v.choices().chance(50) ? in.a : in.b;
+    s.radius = s.radius > 0 ? -s.radius : -1.0;
   }
   return in;
 }

@@ -1,6 +1,7 @@
 // Generators for tri_aabb, tri_obb and tri_tri: a vertex exactly on a corner, edge or face of
 // the box; triangles in the plane of a face; shared vertices; a vertex on the other triangle's
-// edge; coplanar triangles; degenerate triangles (segments, points); and ULP-sized offsets.
+// edge; coplanar triangles; degenerate triangles (segments, points); point and segment boxes in
+// a triangle's plane; and ULP-sized offsets.
 #include <cmath>
 #include <utility>
 
@@ -57,6 +58,29 @@ Triangle triangle_near_box(ValueSource& v, const Aabb& box) {
   }
 }
 
+// The box collapsed to a point (its lo corner) or to a segment along axis k: zero extent on
+// every axis but k. (In an Obb's frame: the half extents set to 0 likewise.)
+int collapse(ValueSource& v, Aabb& box) {
+  const int k = v.choices().chance(50) ? static_cast<int>(v.choices().draw(3)) : -1;
+  for (int j = 0; j < 3; ++j) {
+    if (j != k) box.hi[j] = box.lo[j];
+  }
+  return k;
+}
+
+// A triangle in a tilted plane through a point or segment box (axis k, or -1 for a point):
+// vertices box.lo + a u + b w for small integers a, b, with u along the segment. The box lies
+// inside the triangle, on its boundary or outside it, in its plane (up to the rounding of the
+// vertices), where the Minkowski difference is flat and the 13 usual axes cannot separate.
+Triangle triangle_through_flat_box(ValueSource& v, const Aabb& box, int k) {
+  const auto small = [&v] { return static_cast<double>(v.small_int(3)); };
+  Vec3 u{small(), small(), small()}, w{small(), small(), small()};
+  if (k >= 0) u = Vec3{}, u[k] = 1;
+  Triangle t;
+  for (Vec3& p : t.v) p = box.lo + small() * u + small() * w;
+  return t;
+}
+
 }  // namespace
 
 Triangle draw_triangle(ValueSource& v) {
@@ -75,6 +99,11 @@ Triangle draw_triangle(ValueSource& v) {
 TriAabbInput generate_tri_aabb(ValueSource& v, const GenerateOptions& options) {
   TriAabbInput in;
   in.box = draw_aabb(v, options);
+  if (v.choices().chance(15)) {  // a flat configuration: a point or segment box in the triangle's plane
+    const int k = collapse(v, in.box);
+    in.tri = triangle_through_flat_box(v, in.box, k);
+    return in;
+  }
   in.tri = triangle_near_box(v, in.box);
   return in;
 }
@@ -84,7 +113,18 @@ TriObbInput generate_tri_obb(ValueSource& v, const GenerateOptions& options) {
   in.box = draw_obb(v, options);
   // Built in the box's frame, then taken to the world: exact for exactly orthonormal axes and
   // simple values, otherwise within a few ULPs of the constructed contact.
-  const Triangle local = triangle_near_box(v, Aabb{-in.box.half, in.box.half});
+  Triangle local;
+  if (v.choices().chance(15)) {  // a flat configuration, as for tri_aabb
+    Aabb flat{-in.box.half, in.box.half};
+    const int k = collapse(v, flat);
+    for (int j = 0; j < 3; ++j) {
+      if (j != k) in.box.half[j] = 0;
+    }
+    flat = Aabb{-in.box.half, in.box.half};
+    local = triangle_through_flat_box(v, flat, k);
+  } else {
+    local = triangle_near_box(v, Aabb{-in.box.half, in.box.half});
+  }
   for (int i = 0; i < 3; ++i) in.tri.v[i] = in.box.center + in.box.axes * local.v[i];
   return in;
 }

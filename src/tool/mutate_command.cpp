@@ -1,0 +1,554 @@
+// crosscheck mutate: the harness checks itself. Each mutant of the catalogue (a small plausible
+// bug planted in the library) is applied to a scratch copy of the tree, built incrementally, and
+// put to ctest's labels (stop on the first failure; a timeout counts as caught) and then to a
+// short campaign on its query kind. The report says which check caught each mutant and after how
+// long, or that it survived, and the score.
+#include <algorithm>
+#include <atomic>
+#include <condition_variable>
+#include <cstdio>
+#include <ctime>
+#include <fstream>
+#include <mutex>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "tool/child_process.h"
+#include "tool/commands.h"
+#include "tool/mutant_catalogue.h"
+#include "tool/mutation_report.h"
+#include "tool/scratch_tree.h"
+
+namespace cc::tool {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct MutateArgs {
+  std::string catalogue = "tests/mutation/mutants.json";
+  std::string source = ".";
+  std::string work = "build/mutate";
+  int jobs = 1;
+  int build_jobs = 1;
+  double budget_minutes = 60;
+  double campaign_seconds = 60;
+  unsigned campaign_seed = 1;
+  int campaign_workers = 1;
+  double test_timeout = 120;
+  std::vector<std::string> labels = {"corpus", "fuzz", "unit", "property"};
+  std::vector<std::string> only;
+  std::string exclude_tests;
+  bool check_only = false;
+  bool no_baseline = false;
+  std::string report;
+  std::string json;
+};
+
+// A scratch copy of the tree with its own build directory.
+struct Worker {
+  int index = 0;
+  fs::path root, tree, build, logs;
+  std::vector<std::vector<std::string>> label_targets;  // per label, the ninja targets its tests run
+};
+
+std::string utc_now() {
+  const std::time_t now = std::time(nullptr);
+  std::tm tm{};
+  gmtime_r(&now, &tm);
+  char buf[32];
+  std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M", &tm);
+  return buf;
+}
+
+std::string tail_of(const fs::path& log, std::size_t lines) {
+  std::ifstream in(log);
+  std::vector<std::string> all;
+  for (std::string line; std::getline(in, line);) all.push_back(line);
+  std::string out;
+  for (std::size_t i = all.size() > lines ? all.size() - lines : 0; i < all.size(); ++i) out += all[i] + "\n";
+  return out;
+}
+
+// Runs a setup step; throws naming the log when it fails.
+void must(const std::vector<std::string>& argv, const fs::path& cwd, const fs::path& log, const std::string& what) {
+  fs::remove(log);
+  const ChildResult r = run_child(argv, cwd, log, 0);
+  if (r.exit_status != 0) {
+    throw std::runtime_error(what + " failed (see " + log.string() + "):\n" + tail_of(log, 15));
+  }
+}
+
+// The ninja targets (paths relative to the build directory) of the executables the tests of a
+// label run: every argument word naming a file inside the build directory.
+std::vector<std::string> targets_of_label(const Worker& w, const std::string& label) {
+  const fs::path out = w.logs / ("list-" + label + ".json"), err = w.logs / ("list-" + label + ".err");
+  fs::remove(out), fs::remove(err);
+  const ChildResult r =
+      run_child({"ctest", "--test-dir", w.build.string(), "-N", "-L", "^" + label + "$", "--show-only=json-v1"}, {},
+                out, 600, err);
+  if (r.exit_status != 0) throw std::runtime_error("listing the tests of label " + label + " failed (see " + err.string() + ")");
+  const auto json = nlohmann::json::parse(read_text(out), nullptr, false);
+  if (json.is_discarded()) throw std::runtime_error(out.string() + ": ctest's test list does not parse");
+  std::set<std::string> targets;
+  const std::string prefix = fs::weakly_canonical(w.build).string() + "/";
+  const std::regex word(R"([^\s"'()$;=]+)");
+  for (const auto& test : json.value("tests", nlohmann::json::array())) {
+    for (const auto& arg : test.value("command", nlohmann::json::array())) {
+      const std::string text = arg.get<std::string>();
+      for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
+        const std::string path = it->str();
+        if (path.rfind(prefix, 0) == 0 && fs::is_regular_file(path)) targets.insert(path.substr(prefix.size()));
+      }
+    }
+  }
+  return {targets.begin(), targets.end()};
+}
+
+void set_up(Worker& w, const MutateArgs& args) {
+  fs::create_directories(w.logs);
+  const SyncCounts c = sync_tree(args.source, w.tree);
+  std::printf("worker %d: %s: %d files copied, %d updated, %d removed\n", w.index, w.tree.string().c_str(), c.created,
+              c.updated, c.removed);
+  std::fflush(stdout);
+  if (!fs::exists(w.build / "build.ninja")) {
+    // Test discovery at test time: a relinked test binary is not run at build time too.
+    must({"cmake", "-S", w.tree.string(), "-B", w.build.string(), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
+          "-DCMAKE_CXX_COMPILER=g++", "-DCMAKE_GTEST_DISCOVER_TESTS_DISCOVERY_MODE=PRE_TEST"},
+         {}, w.logs / "configure.log", "configuring " + w.build.string());
+  }
+  must({"ninja", "-C", w.build.string(), "-j", std::to_string(args.build_jobs)}, {}, w.logs / "setup-build.log",
+       "building the unmutated tree in " + w.build.string());
+  for (const std::string& label : args.labels) w.label_targets.push_back(targets_of_label(w, label));
+}
+
+// The failing tests in a ctest log ("Test #12: name ....***Failed"): their names, and how
+// each failed.
+std::vector<std::pair<std::string, std::string>> failures(const fs::path& log) {
+  static const std::regex failed(R"(Test +#[0-9]+: (\S+) .*\*\*\*([A-Za-z]+))");
+  std::vector<std::pair<std::string, std::string>> out;
+  std::ifstream in(log);
+  for (std::string line; std::getline(in, line);) {
+    std::smatch m;
+    if (std::regex_search(line, m, failed)) out.emplace_back(m[1].str(), m[2].str());
+  }
+  return out;
+}
+
+// A ctest -E pattern matching exactly these test names.
+std::string exact_names_pattern(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& name : names) {
+    out += out.empty() ? "^(" : "|";
+    for (char c : name) {
+      if (std::string_view("\\^$.|?*+()[]{}").find(c) != std::string_view::npos) out += '\\';
+      out += c;
+    }
+  }
+  return out.empty() ? out : out + ")$";
+}
+
+// The longest time a test took in a ctest log ("... Passed   62.55 sec").
+double slowest_test(const fs::path& log) {
+  static const std::regex passed(R"(Test +#[0-9]+: \S+ .*Passed +([0-9.]+) sec)");
+  double out = 0;
+  std::ifstream in(log);
+  for (std::string line; std::getline(in, line);) {
+    std::smatch m;
+    if (std::regex_search(line, m, passed)) out = std::max(out, std::stod(m[1].str()));
+  }
+  return out;
+}
+
+struct CtestOutcome {
+  bool failed = false;
+  std::string test;  // the first failing test, and how it failed
+  std::vector<std::string> failed_tests;
+  std::string problem;  // the run itself went wrong
+  double seconds = 0;
+};
+
+// Runs the tests of a label, leaving out those matching `exclude` (a regex; empty: none).
+CtestOutcome run_ctest(const Worker& w, const std::string& label, double timeout, const fs::path& log,
+                       bool stop_on_failure, const std::string& exclude) {
+  fs::remove(log);
+  std::vector<std::string> argv = {"ctest",     "--test-dir", w.build.string(), "-L", "^" + label + "$", "--timeout",
+                                   std::to_string(timeout), "--output-on-failure", "-j1"};
+  if (stop_on_failure) argv.push_back("--stop-on-failure");
+  if (!exclude.empty()) argv.insert(argv.end(), {"-E", exclude});
+  const ChildResult r = run_child(argv, {}, log, 4 * 3600);
+  CtestOutcome out;
+  out.seconds = r.seconds;
+  if (interrupted()) {
+    out.problem = "interrupted";
+  } else if (r.exit_status != 0) {
+    const auto failed = failures(log);
+    if (failed.empty()) {
+      out.problem = "ctest failed without a failing test (see " + log.string() + ")";
+    } else {
+      out.failed = true;
+      out.test = failed.front().first + " (" + failed.front().second + ")";
+      for (const auto& f : failed) out.failed_tests.push_back(f.first);
+    }
+  }
+  return out;
+}
+
+bool build(const Worker& w, const std::vector<std::string>& targets, const MutateArgs& args, const fs::path& log,
+           double& seconds) {
+  std::vector<std::string> argv = {"ninja", "-C", w.build.string(), "-j", std::to_string(args.build_jobs)};
+  argv.insert(argv.end(), targets.begin(), targets.end());
+  const ChildResult r = run_child(argv, {}, log, 3600);
+  seconds += r.seconds;
+  return r.exit_status == 0;
+}
+
+// The first line of a log holding `needle` (with `at_start`, beginning with it).
+std::string line_with(const fs::path& log, const std::string& needle, bool at_start = false) {
+  std::ifstream in(log);
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t at = line.find(needle);
+    if (at == std::string::npos || (at_start && at != 0)) continue;
+    return line.size() > 200 ? line.substr(0, 200) + "..." : line;
+  }
+  return {};
+}
+
+// Applies one mutant in a worker's tree, runs the checks, reverts it.
+void run_mutant(const Worker& w, const MutateArgs& args, const std::string& exclude, double test_timeout,
+                MutantResult& result) {
+  const Mutant& m = result.mutant;
+  const fs::path file = w.tree / m.file;
+  const double start = monotonic_seconds();
+  result.worker = w.index;
+  const std::string original = read_text(file);
+  if (const auto why = staleness(m, original)) {
+    result.status = MutantStatus::stale;
+    result.note = *why;
+    return;
+  }
+  write_text(file, mutated(m, original));
+  struct Revert {
+    const fs::path& file;
+    const std::string& text;
+    ~Revert() {  // a new modification time: rebuilt at the next build
+      try {
+        write_text(file, text);
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "crosscheck mutate: cannot revert %s: %s\n", file.string().c_str(), e.what());
+      }
+    }
+  } revert{file, original};
+
+  const std::string stem = (w.logs / m.id).string();
+  result.status = MutantStatus::survived;
+  for (std::size_t i = 0; i < args.labels.size(); ++i) {
+    const std::string& label = args.labels[i];
+    const fs::path build_log = stem + ".build.log";
+    if (!build(w, w.label_targets[i], args, build_log, result.build_seconds)) {
+      result.status = interrupted() ? MutantStatus::not_run : MutantStatus::build_failed;
+      result.note = "see " + build_log.string();
+      result.seconds = monotonic_seconds() - start;
+      return;
+    }
+    const CtestOutcome c = run_ctest(w, label, test_timeout, stem + "." + label + ".log", true, exclude);
+    if (!c.problem.empty()) {
+      result.status = interrupted() ? MutantStatus::not_run : MutantStatus::error;
+      result.note = c.problem;
+      result.seconds = monotonic_seconds() - start;
+      return;
+    }
+    if (c.failed) {
+      result.status = MutantStatus::caught_by_ctest;
+      result.check = label;
+      result.test = c.test;
+      result.seconds_to_catch = monotonic_seconds() - start;
+      result.seconds = result.seconds_to_catch;
+      return;
+    }
+  }
+  if (args.campaign_seconds > 0) {
+    const fs::path build_log = stem + ".build.log";
+    if (!build(w, {"crosscheck"}, args, build_log, result.build_seconds)) {
+      result.status = MutantStatus::build_failed;
+      result.note = "see " + build_log.string();
+      result.seconds = monotonic_seconds() - start;
+      return;
+    }
+    const fs::path log = stem + ".campaign.log";
+    fs::remove(log);
+    char seconds[32];
+    std::snprintf(seconds, sizeof seconds, "%g", args.campaign_seconds);
+    const ChildResult r = run_child({(w.build / "crosscheck").string(), "campaign", "--query", m.query, "--seconds",
+                                     seconds, "--seed", std::to_string(args.campaign_seed), "--workers",
+                                     std::to_string(args.campaign_workers), "--max-new", "0", "--out",
+                                     (w.root / "campaign-new").string(), "--json", stem + ".campaign.json"},
+                                    w.tree, log, args.campaign_seconds + 300);
+    if (interrupted()) {
+      result.status = MutantStatus::not_run;
+    } else if (r.timed_out) {
+      result.status = MutantStatus::caught_by_campaign;
+      result.check = "campaign";
+      result.test = "did not finish within its time plus 300 s";
+      result.seconds_to_catch = monotonic_seconds() - start;
+    } else if (r.exit_status == 1) {
+      result.status = MutantStatus::caught_by_campaign;
+      result.check = "campaign";
+      result.test = line_with(log, "impl_bug ", true);  // the first finding, not a progress line
+      result.seconds_to_catch = monotonic_seconds() - start;
+    } else if (r.exit_status == 2) {
+      result.note = "campaign not run: " + line_with(log, m.query) + " (query kind not in this harness?)";
+    } else if (r.exit_status != 0) {
+      result.status = MutantStatus::error;
+      result.note = "campaign exit status " + std::to_string(r.exit_status) + " (see " + log.string() + ")";
+    }
+  } else {
+    result.note = "no campaign (--campaign-seconds 0)";
+  }
+  result.seconds = monotonic_seconds() - start;
+}
+
+std::string command_line(const MutateArgs& a) {
+  std::ostringstream s;
+  s << "crosscheck mutate --catalogue " << a.catalogue << " --jobs " << a.jobs << " --budget " << a.budget_minutes
+    << " --campaign-seconds " << a.campaign_seconds;
+  if (a.campaign_seed != 1) s << " --campaign-seed " << a.campaign_seed;
+  for (const std::string& id : a.only) s << " --only " << id;
+  return s.str();
+}
+
+int run(const MutateArgs& args) {
+  const double start = monotonic_seconds();
+  std::vector<Mutant> catalogue;
+  try {
+    catalogue = read_catalogue(args.catalogue);
+  } catch (const CatalogueError& e) {
+    std::fprintf(stderr, "crosscheck mutate: %s\n", e.what());
+    return kExitBadInput;
+  }
+  for (const std::string& id : args.only) {
+    if (std::none_of(catalogue.begin(), catalogue.end(), [&](const Mutant& m) { return m.id == id; })) {
+      std::fprintf(stderr, "crosscheck mutate: --only %s: no such mutant in %s\n", id.c_str(), args.catalogue.c_str());
+      return kExitBadInput;
+    }
+  }
+  MutationRun run;
+  run.date = utc_now();
+  run.command = command_line(args);
+  run.catalogue = args.catalogue;
+  run.jobs = args.jobs;
+  run.budget_minutes = args.budget_minutes;
+  run.campaign_seconds = args.campaign_seconds;
+  run.campaign_seed = args.campaign_seed;
+  run.labels = args.labels;
+
+  // Staleness against the source tree, before anything is built.
+  std::vector<std::size_t> queue;
+  int stale = 0;
+  for (const Mutant& m : catalogue) {
+    if (!args.only.empty() && std::find(args.only.begin(), args.only.end(), m.id) == args.only.end()) continue;
+    MutantResult r;
+    r.mutant = m;
+    const fs::path file = fs::path(args.source) / m.file;
+    std::optional<std::string> why;
+    if (!fs::is_regular_file(file)) {
+      why = "no such file " + file.string();
+    } else {
+      why = staleness(m, read_text(file));
+    }
+    if (why) {
+      r.status = MutantStatus::stale;
+      r.note = *why;
+      ++stale;
+      std::printf("STALE %s: %s\n", m.id.c_str(), why->c_str());
+    } else if (!m.equivalent.empty()) {
+      r.status = MutantStatus::equivalent;
+    } else {
+      queue.push_back(run.results.size());
+    }
+    run.results.push_back(std::move(r));
+  }
+  std::printf("%zu mutants: %zu to run, %d stale, %zu equivalent\n", run.results.size(), queue.size(), stale,
+              run.results.size() - queue.size() - stale);
+  if (args.check_only) return stale ? kExitFound : 0;
+
+  // Mutants of one file run one after the other (fewer files to recompile), headers last (a
+  // header recompiles much of the tree).
+  std::stable_sort(queue.begin(), queue.end(), [&](std::size_t a, std::size_t b) {
+    const Mutant &x = run.results[a].mutant, &y = run.results[b].mutant;
+    const bool hx = fs::path(x.file).extension() == ".h", hy = fs::path(y.file).extension() == ".h";
+    return std::tie(hx, x.file) < std::tie(hy, y.file);
+  });
+
+  interrupt_children_on_signal();
+  const double deadline = start + 60 * args.budget_minutes;
+  std::vector<Worker> workers(static_cast<std::size_t>(std::max(1, args.jobs)));
+  std::mutex lock;
+  std::size_t next = 0, done = 0;
+  double finished_seconds = 0;
+  std::atomic<bool> failed_setup = false;
+  std::string setup_error;
+
+  // Tests that fail on the unmutated tree (say, work in progress) are left out of every mutant's
+  // run, and listed in the report; --exclude-tests adds a pattern of the user's.
+  std::condition_variable baseline_cv;
+  bool baseline_done = args.no_baseline;
+  std::string exclude = args.exclude_tests;
+  double test_timeout = args.test_timeout;
+  run.test_timeout = test_timeout;
+
+  const auto work = [&](Worker& w) {
+    try {
+      set_up(w, args);
+      if (w.index == 0 && !args.no_baseline) {
+        std::vector<std::string> failing;
+        double slowest = 0;
+        for (const std::string& label : args.labels) {
+          const fs::path log = w.logs / ("baseline." + label + ".log");
+          const CtestOutcome c = run_ctest(w, label, 4 * 3600, log, false, args.exclude_tests);
+          slowest = std::max(slowest, slowest_test(log));
+          if (!c.problem.empty()) throw std::runtime_error("the unmutated tree: label " + label + ": " + c.problem);
+          failing.insert(failing.end(), c.failed_tests.begin(), c.failed_tests.end());
+          std::lock_guard<std::mutex> g(lock);
+          run.baseline.emplace_back(label, c.seconds);
+          std::printf("baseline: label %s: %zu tests fail on the unmutated tree (see %s), %.0f s\n", label.c_str(),
+                      c.failed_tests.size(), log.string().c_str(), c.seconds);
+          for (const std::string& t : c.failed_tests) std::printf("  left out of the mutant runs: %s\n", t.c_str());
+          std::fflush(stdout);
+        }
+        std::lock_guard<std::mutex> g(lock);
+        run.excluded_tests = failing;
+        // A test counts as hanging only well past its time on the unmutated tree: the machine
+        // may be shared, and a loaded machine must not make a mutant look caught.
+        test_timeout = std::max(args.test_timeout, 5 * slowest);
+        run.test_timeout = test_timeout;
+        std::printf("a test times out after %.0f s (5 times the slowest on the unmutated tree, at least %g s)\n",
+                    test_timeout, args.test_timeout);
+        if (!failing.empty()) exclude += (exclude.empty() ? "" : "|") + exact_names_pattern(failing);
+        baseline_done = true;
+        baseline_cv.notify_all();
+      }
+    } catch (const std::exception& e) {
+      std::lock_guard<std::mutex> g(lock);
+      failed_setup = true;
+      setup_error = e.what();
+      baseline_done = true;
+      baseline_cv.notify_all();
+      return;
+    }
+    {
+      std::unique_lock<std::mutex> g(lock);
+      baseline_cv.wait(g, [&] { return baseline_done; });
+      run.setup_seconds = std::max(run.setup_seconds, monotonic_seconds() - start);
+    }
+    for (;;) {
+      std::size_t index;
+      {
+        std::lock_guard<std::mutex> g(lock);
+        if (failed_setup || interrupted() || next == queue.size()) return;
+        // Stop starting mutants when one more (at the mean cost so far) would pass the budget.
+        const double estimate = done ? finished_seconds / static_cast<double>(done) : 120.0;
+        if (monotonic_seconds() + estimate > deadline) return;
+        index = queue[next++];
+      }
+      MutantResult& r = run.results[index];
+      try {
+        run_mutant(w, args, exclude, test_timeout, r);
+      } catch (const std::exception& e) {
+        r.status = MutantStatus::error;
+        r.note = e.what();
+      }
+      std::lock_guard<std::mutex> g(lock);
+      ++done;
+      finished_seconds += r.seconds;
+      const bool caught = r.status == MutantStatus::caught_by_ctest || r.status == MutantStatus::caught_by_campaign;
+      std::printf("[%zu/%zu] %-18s %-44s %s%s%s %.0f s\n", done, queue.size(), std::string(to_string(r.status)).c_str(),
+                  r.mutant.id.c_str(), caught ? (r.check + ": " + r.test).c_str() : r.note.c_str(), caught ? "," : "",
+                  caught ? " after" : "", caught ? r.seconds_to_catch : r.seconds);
+      std::fflush(stdout);
+    }
+  };
+  std::vector<std::thread> threads;
+  for (std::size_t i = 0; i < workers.size(); ++i) {
+    workers[i].index = static_cast<int>(i);
+    // Absolute: the campaign runs inside the tree, and finds its binary and its output from there.
+    workers[i].root = fs::absolute(args.work) / ("worker-" + std::to_string(i));
+    workers[i].tree = workers[i].root / "tree";
+    workers[i].build = workers[i].root / "build";
+    workers[i].logs = workers[i].root / "logs";
+    threads.emplace_back(work, std::ref(workers[i]));
+  }
+  for (std::thread& t : threads) t.join();
+  if (failed_setup) {
+    std::fprintf(stderr, "crosscheck mutate: %s\n", setup_error.c_str());
+    return kExitFound;
+  }
+  run.seconds = monotonic_seconds() - start;
+  for (MutantResult& r : run.results) {
+    if (r.status == MutantStatus::not_run && r.note.empty()) {
+      r.note = interrupted() ? "interrupted (SIGINT or SIGTERM)" : "the budget would have been exceeded";
+    }
+  }
+
+  const fs::path report = args.report.empty() ? fs::path(args.work) / "report.md" : fs::path(args.report);
+  const fs::path json = args.json.empty() ? fs::path(args.work) / "report.json" : fs::path(args.json);
+  write_text(report, markdown_report(run));
+  write_text(json, json_report(run));
+  const Score s = score_of(run);
+  int survived = 0, not_run = 0, errors = 0;
+  for (const MutantResult& r : run.results) {
+    survived += r.status == MutantStatus::survived;
+    not_run += r.status == MutantStatus::not_run;
+    errors += r.status == MutantStatus::error;
+    if (r.status == MutantStatus::survived) std::printf("SURVIVED %s: %s\n", r.mutant.id.c_str(), r.mutant.description.c_str());
+    if (r.status == MutantStatus::not_run) std::printf("not run %s: %s\n", r.mutant.id.c_str(), r.note.c_str());
+  }
+  std::printf("score: ctest alone %d/%d, ctest + campaign %d/%d; %d stale, %d not run, %d errors\n", s.by_ctest,
+              s.counted, s.by_either, s.counted, stale, not_run, errors);
+  std::printf("report: %s, %s\n", report.string().c_str(), json.string().c_str());
+  if (interrupted()) return kExitFound;
+  return survived || stale || errors ? kExitFound : 0;
+}
+
+}  // namespace
+
+void add_mutate_command(CLI::App& app, int& exit_code) {
+  auto args = std::make_shared<MutateArgs>();
+  auto* cmd = app.add_subcommand("mutate", "Plant each mutant of a catalogue in a scratch copy and see what catches it");
+  cmd->add_option("--catalogue", args->catalogue, "The mutant catalogue (JSON)")->capture_default_str();
+  cmd->add_option("--source", args->source, "The source tree to copy")->capture_default_str();
+  cmd->add_option("--work", args->work, "Where the scratch copies (worker-N/tree, worker-N/build) and logs go")
+      ->capture_default_str();
+  cmd->add_option("--jobs", args->jobs, "Mutants run in parallel, each in its own scratch copy")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 64));
+  cmd->add_option("--build-jobs", args->build_jobs, "ninja -j for each build")->capture_default_str()->check(CLI::Range(1, 64));
+  cmd->add_option("--budget", args->budget_minutes,
+                  "Minutes: no mutant is started that would end past it (at the mean cost so far)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--campaign-seconds", args->campaign_seconds, "Campaign on the mutant's query kind (0: none)")
+      ->capture_default_str()
+      ->check(CLI::NonNegativeNumber);
+  cmd->add_option("--campaign-seed", args->campaign_seed, "Seed of the campaign")->capture_default_str();
+  cmd->add_option("--campaign-workers", args->campaign_workers, "Worker processes of each campaign")
+      ->capture_default_str()
+      ->check(CLI::Range(1, 64));
+  cmd->add_option("--test-timeout", args->test_timeout,
+                  "Seconds after which a test counts as failed (caught); at least 5 times the slowest test of the baseline")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
+  cmd->add_option("--labels", args->labels, "ctest labels in the order they run")->capture_default_str()->delimiter(',');
+  cmd->add_option("--only", args->only, "Run only this mutant (repeatable)");
+  cmd->add_flag("--check", args->check_only, "Only read the catalogue and report stale mutants (exit 1 if any)");
+  cmd->add_option("--exclude-tests", args->exclude_tests, "Leave out the tests matching this regex (ctest -E)");
+  cmd->add_flag("--no-baseline", args->no_baseline,
+                "Skip running ctest on the unmutated tree (whose failing tests are otherwise left out)");
+  cmd->add_option("--report", args->report, "Markdown report (default WORK/report.md)");
+  cmd->add_option("--json", args->json, "JSON report (default WORK/report.json)");
+  cmd->callback([args, &exit_code] { exit_code = run(*args); });
+}
+
+}  // namespace cc::tool

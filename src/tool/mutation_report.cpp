@@ -1,0 +1,156 @@
+#include "tool/mutation_report.h"
+
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+namespace cc::tool {
+namespace {
+
+std::string seconds_text(double s) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.0f s", s);
+  return buf;
+}
+
+std::string percent(int part, int whole) {
+  if (whole == 0) return "-";
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f%%", 100.0 * part / whole);
+  return buf;
+}
+
+// Table cells hold no pipes or newlines.
+std::string cell(std::string s) {
+  for (char& c : s) {
+    if (c == '|') c = '/';
+    if (c == '\n') c = ' ';
+  }
+  return s;
+}
+
+}  // namespace
+
+std::string_view to_string(MutantStatus s) {
+  switch (s) {
+    case MutantStatus::caught_by_ctest: return "caught by ctest";
+    case MutantStatus::caught_by_campaign: return "caught by campaign";
+    case MutantStatus::survived: return "SURVIVED";
+    case MutantStatus::equivalent: return "equivalent";
+    case MutantStatus::stale: return "STALE";
+    case MutantStatus::build_failed: return "does not build";
+    case MutantStatus::not_run: return "not run";
+    case MutantStatus::error: return "ERROR";
+  }
+  return "?";
+}
+
+Score score_of(const MutationRun& run) {
+  Score s;
+  for (const MutantResult& r : run.results) {
+    if (r.status == MutantStatus::caught_by_ctest) ++s.counted, ++s.by_ctest, ++s.by_either;
+    if (r.status == MutantStatus::caught_by_campaign) ++s.counted, ++s.by_either;
+    if (r.status == MutantStatus::survived) ++s.counted;
+  }
+  return s;
+}
+
+std::string markdown_report(const MutationRun& run) {
+  const Score s = score_of(run);
+  std::string out;
+  out += "# Mutation score\n\n";
+  out += "Run " + run.date + " UTC: `" + run.command + "`\n\n";
+  out += "Catalogue `" + run.catalogue + "`, " + std::to_string(run.results.size()) + " mutants; " +
+         std::to_string(run.jobs) + " worker(s); checks in order: ctest labels ";
+  for (std::size_t i = 0; i < run.labels.size(); ++i) out += (i ? ", " : "") + run.labels[i];
+  char line[256];
+  std::snprintf(line, sizeof line, " (stop on the first failure; a test running past %.0f s counts as failed), then `crosscheck campaign --query KIND --seconds %g --seed %u`.\n\n",
+                run.test_timeout, run.campaign_seconds, run.campaign_seed);
+  out += line;
+  out += "| score | caught | of | |\n|---|---|---|---|\n";
+  out += "| ctest alone | " + std::to_string(s.by_ctest) + " | " + std::to_string(s.counted) + " | " +
+         percent(s.by_ctest, s.counted) + " |\n";
+  out += "| ctest + campaign | " + std::to_string(s.by_either) + " | " + std::to_string(s.counted) + " | " +
+         percent(s.by_either, s.counted) + " |\n\n";
+  int equivalent = 0, stale = 0, not_run = 0, build_failed = 0, errors = 0;
+  for (const MutantResult& r : run.results) {
+    equivalent += r.status == MutantStatus::equivalent;
+    stale += r.status == MutantStatus::stale;
+    not_run += r.status == MutantStatus::not_run;
+    build_failed += r.status == MutantStatus::build_failed;
+    errors += r.status == MutantStatus::error;
+  }
+  out += "Left out of the score: " + std::to_string(equivalent) + " equivalent, " + std::to_string(stale) + " stale, " +
+         std::to_string(build_failed) + " not building, " + std::to_string(not_run) + " not run (budget or interrupted), " +
+         std::to_string(errors) + " runner errors.\n\n";
+  std::snprintf(line, sizeof line, "Setup (sync, configure, build, baseline) %.0f s; whole run %.0f s (budget %g min).\n\n",
+                run.setup_seconds, run.seconds, run.budget_minutes);
+  out += line;
+  if (!run.baseline.empty()) {
+    out += "Unmutated tree:";
+    for (const auto& [label, secs] : run.baseline) out += " " + label + " " + seconds_text(secs) + ";";
+    out += "\n\n";
+  }
+  if (!run.excluded_tests.empty()) {
+    out += "Tests failing on the unmutated tree, left out of the mutant runs:";
+    for (const std::string& t : run.excluded_tests) out += " `" + t + "`";
+    out += "\n\n";
+  }
+  out += "| mutant | query | file | result | caught by | after | build | note |\n";
+  out += "|---|---|---|---|---|---|---|---|\n";
+  for (const MutantResult& r : run.results) {
+    const bool caught = r.status == MutantStatus::caught_by_ctest || r.status == MutantStatus::caught_by_campaign;
+    const bool ran = caught || r.status == MutantStatus::survived || r.status == MutantStatus::build_failed ||
+                     r.status == MutantStatus::error;
+    std::string by = caught ? r.check + ": " + r.test : "";
+    std::string note = r.note;
+    if (r.status == MutantStatus::equivalent) note = r.mutant.equivalent;
+    if (note.empty()) note = r.mutant.description;
+    out += "| `" + r.mutant.id + "` | " + r.mutant.query + " | " + r.mutant.file + " | " +
+           std::string(to_string(r.status)) + " | " + cell(by) + " | " + (caught ? seconds_text(r.seconds_to_catch) : "") +
+           " | " + (ran ? seconds_text(r.build_seconds) : "") + " | " + cell(note) + " |\n";
+  }
+  return out;
+}
+
+std::string json_report(const MutationRun& run) {
+  using Json = nlohmann::ordered_json;
+  const Score s = score_of(run);
+  Json j;
+  j["date"] = run.date;
+  j["command"] = run.command;
+  j["catalogue"] = run.catalogue;
+  j["jobs"] = run.jobs;
+  j["budget_minutes"] = run.budget_minutes;
+  j["campaign_seconds"] = run.campaign_seconds;
+  j["campaign_seed"] = run.campaign_seed;
+  j["labels"] = run.labels;
+  j["baseline_seconds"] = Json::object();
+  for (const auto& [label, secs] : run.baseline) j["baseline_seconds"][label] = secs;
+  j["excluded_tests"] = run.excluded_tests;
+  j["test_timeout_seconds"] = run.test_timeout;
+  j["setup_seconds"] = run.setup_seconds;
+  j["seconds"] = run.seconds;
+  j["score"] = {{"counted", s.counted},
+                {"caught_by_ctest", s.by_ctest},
+                {"caught_by_ctest_or_campaign", s.by_either},
+                {"ctest_fraction", s.counted ? double(s.by_ctest) / s.counted : 0.0},
+                {"ctest_or_campaign_fraction", s.counted ? double(s.by_either) / s.counted : 0.0}};
+  j["mutants"] = Json::array();
+  for (const MutantResult& r : run.results) {
+    j["mutants"].push_back({{"id", r.mutant.id},
+                            {"query", r.mutant.query},
+                            {"file", r.mutant.file},
+                            {"description", r.mutant.description},
+                            {"status", std::string(to_string(r.status))},
+                            {"check", r.check},
+                            {"test", r.test},
+                            {"note", r.status == MutantStatus::equivalent ? r.mutant.equivalent : r.note},
+                            {"seconds_to_catch", r.seconds_to_catch},
+                            {"build_seconds", r.build_seconds},
+                            {"seconds", r.seconds},
+                            {"worker", r.worker}});
+  }
+  return j.dump(2) + "\n";
+}
+
+}  // namespace cc::tool

@@ -1,0 +1,68 @@
+// The outcome of a mutation run: per mutant which check caught it and when, the scores, and the
+// Markdown and JSON reports.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "tool/mutant_catalogue.h"
+
+namespace cc::tool {
+
+enum class MutantStatus {
+  caught_by_ctest,     // a test of one of the ctest labels failed or timed out
+  caught_by_campaign,  // ctest passed; the campaign on the mutant's query kind found an impl_bug
+  survived,            // every check passed (the campaign may have been unavailable: see note)
+  equivalent,          // declared equivalent in the catalogue: not run, left out of the score
+  stale,               // its original text is not in the file exactly once: not run
+  build_failed,        // the mutated tree does not build: not a valid mutant, left out of the score
+  not_run,             // the budget ran out before it could start
+  error,               // the runner could not run a check (see note)
+};
+
+std::string_view to_string(MutantStatus s);
+
+struct MutantResult {
+  Mutant mutant;
+  MutantStatus status = MutantStatus::not_run;
+  std::string check;           // the ctest label or "campaign" that caught it
+  std::string test;            // the failing test, or the campaign's first impl_bug line
+  std::string note;            // staleness, build log, campaign unavailable, ...
+  double seconds_to_catch = 0;  // from the start of the mutant (build included) to the catch
+  double build_seconds = 0;     // incremental builds, all stages
+  double seconds = 0;           // the mutant's whole run
+  int worker = -1;
+};
+
+struct MutationRun {
+  std::string date;  // UTC, YYYY-MM-DD HH:MM
+  std::string command;
+  std::string catalogue;
+  int jobs = 1;
+  double budget_minutes = 0;
+  double campaign_seconds = 0;
+  unsigned campaign_seed = 1;
+  std::vector<std::string> labels;
+  std::vector<std::pair<std::string, double>> baseline;  // label -> seconds of the unmutated tree
+  std::vector<std::string> excluded_tests;  // failing on the unmutated tree: left out of the mutant runs
+  double test_timeout = 0;  // seconds after which a test counted as failed
+  double setup_seconds = 0;
+  double seconds = 0;
+  std::vector<MutantResult> results;  // in catalogue order
+};
+
+/// Mutants that count (run, built, not equivalent), caught by ctest, and caught by ctest or the
+/// campaign.
+struct Score {
+  int counted = 0, by_ctest = 0, by_either = 0;
+};
+Score score_of(const MutationRun& run);
+
+/// The report as Markdown: the scores, then one table row per mutant.
+std::string markdown_report(const MutationRun& run);
+
+/// The report as JSON text.
+std::string json_report(const MutationRun& run);
+
+}  // namespace cc::tool
