@@ -73,9 +73,8 @@ ExactVerdict judge(const harness::MovingObbInput& in) {
   const ExactWindow window = exact_sweep(axes);
   ExactVerdict v;
   v.answer.hit = window.hit();
-  v.margin = std::min(closest_approach_margin(axes, scale), 0.0);
-  if (!v.answer.hit) {
-    v.margin = std::min(v.margin, -std::numeric_limits<double>::denorm_min());
+  if (!v.answer.hit) {  // apart at every time: the closest approach, below 0
+    v.margin = std::min(closest_approach_margin(axes, scale), -std::numeric_limits<double>::denorm_min());
     return v;
   }
   v.answer.params = {to_double(window.first), to_double(window.last)};

@@ -163,35 +163,24 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
     return true;
   };
 
-  // Meshes lose faces first; the result is kept only if it is small enough to read as triangles.
-  if (const MeshPair* meshes = meshes_of(input)) {
-    const ShrinkResult before = r;
-    const Json before_doc = current;
-    if (shrink_faces(kind, current, *meshes, start, attempt)) {
-      const MeshPair& now = *meshes_of(r.input);
-      if (now.a.mesh->size() + now.b.mesh->size() > kMaxWrittenFaces) {
-        const int attempts = r.attempts;
-        r = before;
-        r.attempts = attempts;
-        current = before_doc;
-      }
-    }
-  }
-
-  // Boxes and frames (broadphase), the mesh's faces (ray_mesh), when the result is small
-  // enough to read.
-  if (kind == QueryKind::broadphase || kind == QueryKind::ray_mesh) {
-    const ShrinkResult before = r;
-    const Json before_doc = current;
-    if (shrink_lists(kind, current, input, attempt)) {
-      const auto* ray = std::get_if<RayMeshInput>(&r.input);
-      if (ray != nullptr && ray->mesh.mesh->size() > kMaxWrittenFaces) {
-        const int attempts = r.attempts;
-        r = before;
-        r.attempts = attempts;
-        current = before_doc;
-      }
-    }
+  // Structure before values: meshes lose faces, broadphase cases boxes and frames, a ray_mesh's
+  // mesh faces. A mesh written out as triangles is kept only if it is small enough to read.
+  const auto written_faces = [](const Input& in) {
+    std::size_t n = 0;
+    if (const MeshPair* m = meshes_of(in)) n = m->a.mesh->size() + m->b.mesh->size();
+    if (const auto* ray = std::get_if<RayMeshInput>(&in)) n = ray->mesh.mesh->size();
+    return n;
+  };
+  const ShrinkResult before = r;
+  const Json before_doc = current;
+  const MeshPair* meshes = meshes_of(input);
+  const bool dropped = meshes != nullptr ? shrink_faces(kind, current, *meshes, start, attempt)
+                                         : shrink_lists(current, input, attempt);
+  if (dropped && written_faces(r.input) > kMaxWrittenFaces) {
+    const int attempts = r.attempts;
+    r = before;
+    r.attempts = attempts;
+    current = before_doc;
   }
 
   for (bool progress = true; progress && r.attempts < max_attempts && std::chrono::steady_clock::now() < deadline;) {

@@ -37,7 +37,7 @@ std::vector<std::size_t> indices(std::size_t n) {
 
 }  // namespace
 
-bool shrink_lists(QueryKind kind, const Json& current, const Input& input, const Attempt& attempt) {
+bool shrink_lists(const Json& current, const Input& input, const Attempt& attempt) {
   if (const auto* in = std::get_if<BroadphaseInput>(&input)) {
     if (in->frames.empty()) return false;
     Json base = current;
@@ -79,7 +79,6 @@ bool shrink_lists(QueryKind kind, const Json& current, const Input& input, const
       return doc;
     }, attempt);
   }
-  (void)kind;
   return false;
 }
 

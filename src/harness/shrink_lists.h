@@ -10,6 +10,6 @@ namespace cc::harness {
 
 /// Drops what it can through `attempt` (which updates the caller's current document to the
 /// candidate it accepts). True if anything was dropped. Other kinds: nothing.
-bool shrink_lists(QueryKind kind, const Json& current, const Input& input, const Attempt& attempt);
+bool shrink_lists(const Json& current, const Input& input, const Attempt& attempt);
 
 }  // namespace cc::harness
