@@ -2,8 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <stdexcept>
 #include <string>
+
+#include "collide/box_pairs.h"
 
 namespace cc {
 namespace {
@@ -13,6 +16,9 @@ std::uint64_t key_of(ObjectId a, ObjectId b) {
   return (std::uint64_t{a} << 32) | b;
 }
 ObjectPair pair_of(std::uint64_t key) { return {static_cast<ObjectId>(key >> 32), static_cast<ObjectId>(key & 0xffffffffu)}; }
+
+// The settled box of an object added since the last update: it overlaps nothing.
+constexpr Aabb kNoBox{{NAN, NAN, NAN}, {NAN, NAN, NAN}};
 
 void check(const Aabb& box, const char* what, ObjectId id) {
   for (int k = 0; k < 3; ++k) {
@@ -36,10 +42,12 @@ ObjectId SweepAndPrune::add(const Aabb& box) {
   const auto id = static_cast<ObjectId>(boxes_.size());
   check(box, "add", id);
   boxes_.push_back(box);
+  settled_.push_back(kNoBox);
   alive_.push_back(true);
   ++live_;
-  // Both endpoints go to the end of each list at +inf, beyond every other box (no overlaps),
-  // and reach their places at the next update(), flipping overlaps as they pass others.
+  ++added_since_update_;
+  // Both endpoints go to the end of each list at +inf, after every other endpoint, and reach
+  // their places at the next update(), testing the boxes whose upper endpoints they pass.
   for (auto& list : axes_) {
     list.push_back({INFINITY, id, false});
     list.push_back({INFINITY, id, true});
@@ -55,22 +63,15 @@ void SweepAndPrune::move(ObjectId id, const Aabb& box) {
 
 void SweepAndPrune::remove(ObjectId id) {
   if (id >= boxes_.size() || !alive_[id]) throw std::invalid_argument("SweepAndPrune::remove: no object " + std::to_string(id));
-  // The object's endpoints move past every other one to the end of each list (upper first),
-  // which clears its overlaps swap by swap, and are then dropped.
-  for (int axis = 0; axis < 3; ++axis) {
-    auto& list = axes_[axis];
-    for (const bool upper : {true, false}) {
-      const std::size_t end = list.size() - (upper ? 1 : 2);
-      std::size_t i = 0;
-      while (list[i].id != id || list[i].upper != upper) ++i;
-      for (; i < end; ++i) {
-        flip(axis, list[i + 1], list[i]);
-        std::swap(list[i], list[i + 1]);
-        ++swaps_;
-      }
-    }
+  for (auto& list : axes_) {  // its two endpoints to the end of each list, then dropped
+    std::stable_partition(list.begin(), list.end(), [id](const Endpoint& e) { return e.id != id; });
     list.resize(list.size() - 2);
   }
+  std::vector<std::uint64_t> gone;
+  for (std::uint64_t key : overlapping_) {
+    if (pair_of(key).first == id || pair_of(key).second == id) gone.push_back(key);
+  }
+  for (std::uint64_t key : gone) set_overlap(key, false);
   alive_[id] = false;
   --live_;
 }
@@ -84,21 +85,17 @@ void SweepAndPrune::set_overlap(std::uint64_t key, bool overlapping) {
   }
 }
 
-// `moving_left` now sorts before `moved_right`, which sorted before it.
-void SweepAndPrune::flip(int axis, const Endpoint& moving_left, const Endpoint& moved_right) {
+// `moving_left` now sorts before `moved_right`, which sorted before it. Each pair of endpoints
+// swaps at most once in a re-sort, and only if their order changed: a pair whose lower endpoint
+// passed an upper one overlaps on this axis now, one whose upper endpoint passed a lower one
+// does not.
+void SweepAndPrune::flip(const Endpoint& moving_left, const Endpoint& moved_right) {
   if (moving_left.upper == moved_right.upper || moving_left.id == moved_right.id) return;
-  const std::uint64_t key = key_of(moving_left.id, moved_right.id);
-  const auto bit = static_cast<std::uint8_t>(1u << axis);
-  if (!moving_left.upper) {  // a lower endpoint passes an upper one: the intervals now overlap
-    std::uint8_t& bits = axis_bits_[key];
-    bits |= bit;
-    if (bits == 7) set_overlap(key, true);
-  } else {  // an upper endpoint passes a lower one: they no longer overlap
-    auto it = axis_bits_.find(key);
-    if (it == axis_bits_.end()) return;  // cannot happen: the pair overlapped on this axis
-    if (it->second == 7) set_overlap(key, false);
-    it->second &= static_cast<std::uint8_t>(~bit);
-    if (it->second == 0) axis_bits_.erase(it);
+  const ObjectId a = moving_left.id, b = moved_right.id;
+  if (!moving_left.upper) {  // they may start to overlap: the current boxes decide
+    if (test_aabb_aabb(boxes_[a], boxes_[b])) set_overlap(key_of(a, b), true);
+  } else if (test_aabb_aabb(settled_[a], settled_[b])) {  // they overlapped and no longer do
+    set_overlap(key_of(a, b), false);
   }
 }
 
@@ -106,18 +103,42 @@ void SweepAndPrune::resort(int axis) {
   auto& list = axes_[axis];
   for (std::size_t i = 1; i < list.size(); ++i) {
     for (std::size_t j = i; j > 0 && before(list[j], list[j - 1]); --j) {
-      flip(axis, list[j], list[j - 1]);
+      flip(list[j], list[j - 1]);
       std::swap(list[j], list[j - 1]);
       ++swaps_;
     }
   }
 }
 
+// Many new boxes would each travel far through the lists: sort them from scratch instead and
+// take the pairs from a sweep, recording how they differ from the last update's.
+void SweepAndPrune::rebuild() {
+  for (auto& list : axes_) std::sort(list.begin(), list.end(), before);
+  std::vector<Aabb> present(boxes_.size(), kNoBox);
+  for (ObjectId id = 0; id < boxes_.size(); ++id) {
+    if (alive_[id]) present[id] = boxes_[id];
+  }
+  std::vector<std::uint64_t> now, was(overlapping_.begin(), overlapping_.end());
+  for (const auto& [a, b] : sort_and_sweep(present)) now.push_back(key_of(a, b));
+  std::sort(was.begin(), was.end());
+  std::vector<std::uint64_t> started, stopped;
+  std::set_difference(now.begin(), now.end(), was.begin(), was.end(), std::back_inserter(started));
+  std::set_difference(was.begin(), was.end(), now.begin(), now.end(), std::back_inserter(stopped));
+  for (std::uint64_t key : started) set_overlap(key, true);
+  for (std::uint64_t key : stopped) set_overlap(key, false);
+}
+
 PairChanges SweepAndPrune::update() {
   for (int axis = 0; axis < 3; ++axis) {
     for (Endpoint& e : axes_[axis]) e.value = e.upper ? boxes_[e.id].hi[axis] : boxes_[e.id].lo[axis];
-    resort(axis);
   }
+  if (added_since_update_ >= kBulkAdditions) {
+    rebuild();
+  } else {
+    for (int axis = 0; axis < 3; ++axis) resort(axis);
+  }
+  added_since_update_ = 0;
+  settled_ = boxes_;
   PairChanges changes;
   for (const auto& [key, was] : changed_) {
     const bool now = overlapping_.count(key) > 0;

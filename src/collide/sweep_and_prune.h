@@ -24,10 +24,13 @@ struct PairChanges {
 
 /// The overlapping pairs of a set of boxes that move a little from frame to frame. Per axis a
 /// list of the boxes' endpoints is kept sorted; update() re-sorts it by insertion sort, which
-/// costs O(n + swaps) on coherent motion, and every swap of one box's lower endpoint with
-/// another box's upper endpoint flips that pair's overlap on that axis (one bit per pair and
-/// axis); a pair whose three bits are set overlaps. A frame costs O(n + k + swaps), k the
-/// number of pairs overlapping on at least one axis.
+/// costs O(n + swaps) on coherent motion. A swap that puts one box's lower endpoint before
+/// another's upper endpoint may start an overlap: the two current boxes are tested on all three
+/// axes and the pair is kept if they meet. A swap that puts an upper endpoint before a lower one
+/// parts the pair on that axis: the pair is dropped if it overlapped at the last update. Only
+/// overlapping pairs are stored, so a frame costs O(n + k + swaps), k the number of pairs that
+/// overlap or change. After many additions (kBulkAdditions or more since the last update) the
+/// lists are sorted from scratch and the pairs found by sort_and_sweep instead.
 ///  - Closed boxes: boxes that touch (equal endpoints) overlap, as test_aabb_aabb says; at equal
 ///    values lower endpoints sort before upper ones. Zero-extent boxes take part.
 ///  - Exact: only comparisons of the given bounds; the pairs are always those of
@@ -58,18 +61,21 @@ class SweepAndPrune {
     ObjectId id;
     bool upper;
   };
+  static constexpr std::size_t kBulkAdditions = 32;
   static bool before(const Endpoint& a, const Endpoint& b);
   void resort(int axis);
-  void flip(int axis, const Endpoint& moving_left, const Endpoint& moved_right);
+  void rebuild();
+  void flip(const Endpoint& moving_left, const Endpoint& moved_right);
   void set_overlap(std::uint64_t key, bool overlapping);
 
   std::vector<Aabb> boxes_;
+  std::vector<Aabb> settled_;  // the boxes at the last update; NaN for objects added since
   std::vector<bool> alive_;
   std::size_t live_ = 0;
+  std::size_t added_since_update_ = 0;
   std::vector<Endpoint> axes_[3];
-  std::unordered_map<std::uint64_t, std::uint8_t> axis_bits_;  // pairs overlapping on some axis
-  std::unordered_set<std::uint64_t> overlapping_;               // pairs overlapping on all three
-  std::unordered_map<std::uint64_t, bool> changed_;             // pair -> overlapping at the last update
+  std::unordered_set<std::uint64_t> overlapping_;  // pairs overlapping (as of the last update)
+  std::unordered_map<std::uint64_t, bool> changed_;  // pair -> overlapping at the last update
   std::uint64_t swaps_ = 0;
 };
 

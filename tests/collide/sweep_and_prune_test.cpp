@@ -96,7 +96,8 @@ TEST(SweepAndPrune, RefusesNanAndInvertedBoxes) {
 }
 
 // Coherent random motion with insertions and removals: the same pairs as brute force every
-// frame, and far fewer swaps than a full sort would make.
+// frame, and far fewer swaps than a full sort would make. The first frame and frame 30 (40
+// arrivals at once) take the bulk path, the others the insertion sort.
 TEST(SweepAndPrune, AgreesWithBruteForceUnderCoherentMotion) {
   std::mt19937_64 random(7);
   std::uniform_real_distribution<double> unit(0, 1);
@@ -119,6 +120,16 @@ TEST(SweepAndPrune, AgreesWithBruteForceUnderCoherentMotion) {
       sap.remove(ids[frame % ids.size()]);
       boxes[frame % ids.size()] = cube(10, 10, 10);
       ids[frame % ids.size()] = sap.add(boxes[frame % ids.size()]);
+    }
+    if (frame == 30) {  // a crowd arrives while one more leaves
+      sap.remove(ids[7]);
+      boxes[7] = cube(-50, -50, -50);
+      ids[7] = sap.add(boxes[7]);
+      for (int i = 0; i < 40; ++i) {
+        boxes.push_back(cube(20 * unit(random), 20 * unit(random), 20 * unit(random), 0.2 + unit(random)));
+        velocity.push_back({unit(random) - 0.5, unit(random) - 0.5, unit(random) - 0.5});
+        ids.push_back(sap.add(boxes.back()));
+      }
     }
     const std::vector<ObjectPair> before = sap.pairs();
     const PairChanges changes = sap.update();
