@@ -76,7 +76,7 @@ void ray_rows(const Results& r, std::vector<Row>& rows) {
     row.target = text;
     row.met = m->ns_per_item <= at_most;
     row.note = "hits " + percent(counter(*m, "hit_fraction")) +
-               (std::string(kind) == "scalar" ? "; intersect_ray_aabb (with t_enter, t_exit)" : "; test_ray_aabbs, 512 boxes per call");
+               (std::string(kind) == "scalar" ? "; intersect_ray_aabb on a PreparedRay (with t_enter, t_exit)" : "; test_ray_aabbs, 512 boxes per call");
     rows.push_back(row);
   }
 }

@@ -14,76 +14,89 @@ namespace {
 double lower(double t) { return (t > 0 ? t * (1 - 8 * fp::u) : t * (1 + 8 * fp::u)) - fp::subnormal_slack; }
 double upper(double t) { return (t > 0 ? t * (1 + 8 * fp::u) : t * (1 - 8 * fp::u)) + fp::subnormal_slack; }
 
-bool in_contract(const Ray& ray, const Aabb& box) {
-  return finite(ray.origin) && finite(ray.dir) && finite(box.lo) && finite(box.hi) &&
-         ray.tmin < INFINITY && ray.tmax > -INFINITY &&  // also false for NaN
-         box.lo.x <= box.hi.x && box.lo.y <= box.hi.y && box.lo.z <= box.hi.z;
+bool box_in_contract(const Aabb& box) {
+  return finite(box.lo) && finite(box.hi) && box.lo.x <= box.hi.x && box.lo.y <= box.hi.y && box.lo.z <= box.hi.z;
+}
+
+// The entry and exit parameters of slab i (not parallel), in the scaled units.
+std::pair<double, double> slab(const PreparedRay& r, const Aabb& box, int i) {
+  const double lo = box.lo[i] - r.ray.origin[i], hi = box.hi[i] - r.ray.origin[i];
+  double near, far;
+  if (!((r.subnormal >> i) & 1)) {
+    near = lo * r.inv_scaled[i], far = hi * r.inv_scaled[i];
+  } else {
+    // A component so much smaller than the largest that, scaled, it is subnormal (rounded,
+    // or with a reciprocal that overflows): computed in the caller's units in long double.
+    const long double to_scaled = std::ldexp(1.0L, r.exponent);
+    near = static_cast<double>((static_cast<long double>(box.lo[i]) - r.ray.origin[i]) / r.ray.dir[i] * to_scaled);
+    far = static_cast<double>((static_cast<long double>(box.hi[i]) - r.ray.origin[i]) / r.ray.dir[i] * to_scaled);
+  }
+  if (r.negative[i]) std::swap(near, far);
+  return {near, far};
 }
 
 }  // namespace
 
-RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box) {
-  // The direction scaled by a power of two to a largest component in [1, 2), and the parameters
-  // with it: then a unit of t is about a unit of space, and a slab parameter that underflows
-  // errs by a negligible distance however long or short the direction. Exact; undone on return.
-  // (Not when every component is parallel: the parameters then only pass through.)
-  const double m = max_abs(ray.dir);
-  const int e = (m > 0x1p-1024 && std::isfinite(m)) ? fp::exponent_of(m) : 0;
-  const Vec3 dir{fp::scale2(ray.dir.x, -e), fp::scale2(ray.dir.y, -e), fp::scale2(ray.dir.z, -e)};
-  const double tmin = fp::scale2(ray.tmin, e), tmax = fp::scale2(ray.tmax, e);
+// The direction scaled by a power of two to a largest component in [1, 2), and the parameters
+// with it: then a unit of t is about a unit of space, and a slab parameter that underflows errs
+// by a negligible distance however long or short the direction. Exact; undone on return. (Not
+// when every component is parallel: the parameters then only pass through.)
+PreparedRay::PreparedRay(const Ray& given) : ray(given) {
   // tmin and tmax compared as given: scaled, both may underflow to the same value. (Elsewhere an
   // underflowed tmin or tmax errs by less than the padding of the slabs it meets.)
-  if (!(ray.tmin <= ray.tmax)) return {};
-
-  // Parallel by contract: 1/d overflows exactly when |d| <= 2^-1024 (0 and -0 included).
-  const auto parallel = [&ray](int i) { return std::fabs(ray.dir[i]) <= 0x1p-1024; };
-  // The entry and exit parameters of slab i, in the scaled units.
-  const auto slab = [&](int i) {
-    const double lo = box.lo[i] - ray.origin[i], hi = box.hi[i] - ray.origin[i];
-    double near, far;
-    if (std::fabs(dir[i]) >= DBL_MIN) {
-      const double inv = 1.0 / dir[i];
-      near = lo * inv, far = hi * inv;
-    } else {
-      // A component so much smaller than the largest that, scaled, it is subnormal (rounded,
-      // or with a reciprocal that overflows): computed in the caller's units in long double.
-      const long double to_scaled = std::ldexp(1.0L, e);
-      near = static_cast<double>((static_cast<long double>(box.lo[i]) - ray.origin[i]) / ray.dir[i] * to_scaled);
-      far = static_cast<double>((static_cast<long double>(box.hi[i]) - ray.origin[i]) / ray.dir[i] * to_scaled);
-    }
-    if (ray.dir[i] < 0) std::swap(near, far);
-    return std::pair{near, far};
-  };
-
-  double enter = -INFINITY, exit = INFINITY;  // over the slabs, as computed
-  double enter_low = tmin, exit_high = tmax;  // with tmin and tmax, widened by the rounding bound
-  double nears[3] = {0, 0, 0}, fars[3] = {0, 0, 0};  // kept for the hit path
+  in_contract = ray.tmin <= ray.tmax && finite(ray.origin) && finite(ray.dir) &&  //
+                ray.tmin < INFINITY && ray.tmax > -INFINITY;                      // also false for NaN
+  const double m = max_abs(ray.dir);
+  exponent = (m > 0x1p-1024 && std::isfinite(m)) ? fp::exponent_of(m) : 0;
+  tmin = fp::scale2(ray.tmin, exponent), tmax = fp::scale2(ray.tmax, exponent);
   for (int i = 0; i < 3; ++i) {
-    if (parallel(i)) {  // the origin decides, exactly
-      if (ray.origin[i] < box.lo[i] || ray.origin[i] > box.hi[i]) return {};
+    negative[i] = ray.dir[i] < 0;
+    // Parallel by contract: 1/d overflows exactly when |d| <= 2^-1024 (0 and -0 included).
+    if (std::fabs(ray.dir[i]) <= 0x1p-1024) {
+      parallel |= 1 << i;
       continue;
     }
-    const auto [near, far] = slab(i);
+    const double d = fp::scale2(ray.dir[i], -exponent);
+    if (std::fabs(d) >= DBL_MIN) {
+      inv_scaled[i] = 1.0 / d;
+    } else {
+      subnormal |= 1 << i;
+    }
+    inv[i] = 1.0 / ray.dir[i];
+  }
+}
+
+RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box) { return intersect_ray_aabb(PreparedRay(ray), box); }
+
+RayHit intersect_ray_aabb(const PreparedRay& r, const Aabb& box) {
+  if (!r.in_contract) return {};
+  double enter = -INFINITY, exit = INFINITY;  // over the slabs, as computed
+  double nears[3] = {0, 0, 0}, fars[3] = {0, 0, 0};  // kept for the hit path
+  for (int i = 0; i < 3; ++i) {
+    if ((r.parallel >> i) & 1) {  // the origin decides, exactly
+      if (r.ray.origin[i] < box.lo[i] || r.ray.origin[i] > box.hi[i]) return {};
+      continue;
+    }
+    const auto [near, far] = slab(r, box, i);
     nears[i] = near, fars[i] = far;
     enter = std::max(enter, near);
     exit = std::min(exit, far);
-    enter_low = std::max(enter_low, lower(near));
-    exit_high = std::min(exit_high, upper(far));
   }
+  // With tmin and tmax, widened by the rounding bound. lower() and upper() are monotone, so
+  // widening the largest entry is widening every entry and taking the largest, bit for bit.
+  const double enter_low = std::max(r.tmin, lower(enter)), exit_high = std::min(r.tmax, upper(exit));
   if (!(enter_low <= exit_high)) return {};
-  if (!in_contract(ray, box)) return {};  // checked on the hit path only
+  if (!box_in_contract(box)) return {};  // checked on the hit path only
   // The parameters reported in the caller's units: tmin and tmax as given, against the slabs
   // that bind recomputed in those units (in the scaled units a parameter, or tmin and tmax
   // themselves, may have lost bits to underflow). Among slabs that tie, the largest entry and
   // the smallest exit, so the choice does not depend on the order of the axes.
-  double t_enter = ray.tmin, t_exit = ray.tmax;
+  double t_enter = r.ray.tmin, t_exit = r.ray.tmax;
   for (int i = 0; i < 3; ++i) {
-    if (parallel(i) || (nears[i] != enter && fars[i] != exit)) continue;
-    const double near = nears[i], far = fars[i];
-    const double inv = 1.0 / ray.dir[i];
-    const double lo = (box.lo[i] - ray.origin[i]) * inv, hi = (box.hi[i] - ray.origin[i]) * inv;
-    if (near == enter) t_enter = std::max(t_enter, std::min(lo, hi));
-    if (far == exit) t_exit = std::min(t_exit, std::max(lo, hi));
+    if (((r.parallel >> i) & 1) || (nears[i] != enter && fars[i] != exit)) continue;
+    const double lo = (box.lo[i] - r.ray.origin[i]) * r.inv[i], hi = (box.hi[i] - r.ray.origin[i]) * r.inv[i];
+    if (nears[i] == enter) t_enter = std::max(t_enter, std::min(lo, hi));
+    if (fars[i] == exit) t_exit = std::min(t_exit, std::max(lo, hi));
   }
   return {true, t_enter, t_exit};
 }

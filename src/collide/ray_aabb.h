@@ -37,4 +37,25 @@ struct RayHit {
 ///    inverted box (lo > hi) give no hit.
 RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box);
 
+/// A ray made ready to meet many boxes: the scaling of its direction, the reciprocals and the
+/// checks that concern the ray alone, done once (the fields are read by the batched test).
+/// intersect_ray_aabb(PreparedRay(ray), box) returns what intersect_ray_aabb(ray, box)
+/// returns, bit for bit, in and out of the contract.
+struct PreparedRay {
+  explicit PreparedRay(const Ray& ray);
+
+  Ray ray;                    // as given
+  bool in_contract = false;   // the ray's half of the contract, and tmin <= tmax
+  int exponent = 0;           // the direction is scaled by 2^-exponent
+  double tmin = 0, tmax = 0;  // scaled
+  int parallel = 0;           // bit i: |dir[i]| <= 2^-1024, the origin decides
+  int subnormal = 0;          // bit i: scaled, dir[i] is subnormal (its slab in long double)
+  bool negative[3] = {false, false, false};  // dir[i] < 0: the slab's near bound is its upper one
+  double inv_scaled[3] = {0, 0, 0};          // 1 / scaled dir[i]
+  double inv[3] = {0, 0, 0};                 // 1 / dir[i], for the parameters reported
+};
+
+/// The same answer as intersect_ray_aabb(ray.ray, box), with the ray's work done once.
+RayHit intersect_ray_aabb(const PreparedRay& ray, const Aabb& box);
+
 }  // namespace cc

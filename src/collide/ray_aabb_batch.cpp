@@ -19,20 +19,10 @@ void AabbSoa::push_back(const Aabb& box) {
 
 namespace {
 
-// The ray's part of intersect_ray_aabb, computed once: the same scaled direction, reciprocals
-// and scaled tmin, tmax (see ray_aabb.cpp, whose steps this mirrors one for one).
-struct PreparedRay {
-  double origin[3];
-  double inv[3];            // 1 / scaled direction, for the slabs that are not parallel
-  bool negative[3];         // dir < 0: the near bound of the slab is its upper bound
-  double tmin, tmax;        // scaled
-  int parallel = 0;         // bit i: |dir[i]| <= 2^-1024
-};
-
 // The widening of ray_aabb.cpp's lower() and upper(): lower(t) = t (1 -+ 8u) - slack for t > 0
 // (t <= 0). Rounding is monotone, so t (1 - 8u) <= t (1 + 8u) exactly when t >= 0, and lower(t)
-// is min(t A, t B) - slack; upper(t) = max(t A, t B) + slack. And as x -> fl(x - slack) is
-// monotone too, the max over the slabs of lower() is (the max of min(t A, t B)) - slack.
+// is min(t A, t B) - slack; upper(t) = max(t A, t B) + slack. Both are applied, as there, to
+// the largest entry and the smallest exit over the slabs.
 constexpr double kA = 1 - 8 * fp::u, kB = 1 + 8 * fp::u;
 
 // Box i is in the scalar test's contract: no NaN or infinite bound and lo <= hi on every axis.
@@ -45,20 +35,18 @@ template <int P>
 inline bool one_box(const PreparedRay& r, const AabbSoa& b, std::size_t i) {
   const double lo[3] = {b.lo_x[i], b.lo_y[i], b.lo_z[i]}, hi[3] = {b.hi_x[i], b.hi_y[i], b.hi_z[i]};
   bool ok = true;
-  double low = -INFINITY, high = INFINITY;
+  double enter = -INFINITY, exit = INFINITY;
   for (int a = 0; a < 3; ++a) {
     ok &= box_in_contract(lo[a], hi[a]);
     if ((P >> a) & 1) {
-      ok &= (r.origin[a] >= lo[a]) & (r.origin[a] <= hi[a]);
+      ok &= (r.ray.origin[a] >= lo[a]) & (r.ray.origin[a] <= hi[a]);
       continue;
     }
-    const double tn = ((r.negative[a] ? hi[a] : lo[a]) - r.origin[a]) * r.inv[a];
-    const double tf = ((r.negative[a] ? lo[a] : hi[a]) - r.origin[a]) * r.inv[a];
-    low = std::max(low, std::min(tn * kA, tn * kB));
-    high = std::min(high, std::max(tf * kA, tf * kB));
+    enter = std::max(enter, ((r.negative[a] ? hi[a] : lo[a]) - r.ray.origin[a]) * r.inv_scaled[a]);
+    exit = std::min(exit, ((r.negative[a] ? lo[a] : hi[a]) - r.ray.origin[a]) * r.inv_scaled[a]);
   }
-  const double enter_low = std::max(r.tmin, low - fp::subnormal_slack);
-  const double exit_high = std::min(r.tmax, high + fp::subnormal_slack);
+  const double enter_low = std::max(r.tmin, std::min(enter * kA, enter * kB) - fp::subnormal_slack);
+  const double exit_high = std::min(r.tmax, std::max(exit * kA, exit * kB) + fp::subnormal_slack);
   return ok & (enter_low <= exit_high);
 }
 
@@ -97,20 +85,20 @@ template <int P>
   std::size_t count = 0, i = 0;
   for (; i + 8 <= b.size(); i += 8) {
     __mmask8 ok = 0xFF;
-    __m512d low = minus_inf, high = plus_inf;
+    __m512d enter = minus_inf, exit = plus_inf;
     for (int a = 0; a < 3; ++a) {
       const __m512d l = _mm512_loadu_pd(lo[a] + i), h = _mm512_loadu_pd(hi[a] + i);
-      const __m512d o = _mm512_set1_pd(r.origin[a]);
+      const __m512d o = _mm512_set1_pd(r.ray.origin[a]);
       if ((P >> a) & 1) {
         ok = static_cast<__mmask8>(ok & _mm512_cmp_pd_mask(o, l, _CMP_GE_OQ) & _mm512_cmp_pd_mask(o, h, _CMP_LE_OQ));
         continue;
       }
-      const __m512d inv = _mm512_set1_pd(r.inv[a]);
-      const __m512d tn = _mm512_mul_pd(_mm512_sub_pd(r.negative[a] ? h : l, o), inv);
-      const __m512d tf = _mm512_mul_pd(_mm512_sub_pd(r.negative[a] ? l : h, o), inv);
-      low = _mm512_max_pd(low, _mm512_min_pd(_mm512_mul_pd(tn, ka), _mm512_mul_pd(tn, kb)));
-      high = _mm512_min_pd(high, _mm512_max_pd(_mm512_mul_pd(tf, ka), _mm512_mul_pd(tf, kb)));
+      const __m512d inv = _mm512_set1_pd(r.inv_scaled[a]);
+      enter = _mm512_max_pd(enter, _mm512_mul_pd(_mm512_sub_pd(r.negative[a] ? h : l, o), inv));
+      exit = _mm512_min_pd(exit, _mm512_mul_pd(_mm512_sub_pd(r.negative[a] ? l : h, o), inv));
     }
+    const __m512d low = _mm512_min_pd(_mm512_mul_pd(enter, ka), _mm512_mul_pd(enter, kb));
+    const __m512d high = _mm512_max_pd(_mm512_mul_pd(exit, ka), _mm512_mul_pd(exit, kb));
     const __m512d enter_low = _mm512_max_pd(tmin, _mm512_sub_pd(low, slack));
     const __m512d exit_high = _mm512_min_pd(tmax, _mm512_add_pd(high, slack));
     ok = static_cast<__mmask8>(ok & _mm512_cmp_pd_mask(enter_low, exit_high, _CMP_LE_OQ));
@@ -137,20 +125,20 @@ template <int P>
   std::size_t count = 0, i = 0;
   for (; i + 4 <= b.size(); i += 4) {
     __m256d ok = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-    __m256d low = minus_inf, high = plus_inf;
+    __m256d enter = minus_inf, exit = plus_inf;
     for (int a = 0; a < 3; ++a) {
       const __m256d l = _mm256_loadu_pd(lo[a] + i), h = _mm256_loadu_pd(hi[a] + i);
-      const __m256d o = _mm256_set1_pd(r.origin[a]);
+      const __m256d o = _mm256_set1_pd(r.ray.origin[a]);
       if ((P >> a) & 1) {
         ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(o, l, _CMP_GE_OQ), _mm256_cmp_pd(o, h, _CMP_LE_OQ)));
         continue;
       }
-      const __m256d inv = _mm256_set1_pd(r.inv[a]);
-      const __m256d tn = _mm256_mul_pd(_mm256_sub_pd(r.negative[a] ? h : l, o), inv);
-      const __m256d tf = _mm256_mul_pd(_mm256_sub_pd(r.negative[a] ? l : h, o), inv);
-      low = _mm256_max_pd(low, _mm256_min_pd(_mm256_mul_pd(tn, ka), _mm256_mul_pd(tn, kb)));
-      high = _mm256_min_pd(high, _mm256_max_pd(_mm256_mul_pd(tf, ka), _mm256_mul_pd(tf, kb)));
+      const __m256d inv = _mm256_set1_pd(r.inv_scaled[a]);
+      enter = _mm256_max_pd(enter, _mm256_mul_pd(_mm256_sub_pd(r.negative[a] ? h : l, o), inv));
+      exit = _mm256_min_pd(exit, _mm256_mul_pd(_mm256_sub_pd(r.negative[a] ? l : h, o), inv));
     }
+    const __m256d low = _mm256_min_pd(_mm256_mul_pd(enter, ka), _mm256_mul_pd(enter, kb));
+    const __m256d high = _mm256_max_pd(_mm256_mul_pd(exit, ka), _mm256_mul_pd(exit, kb));
     const __m256d enter_low = _mm256_max_pd(tmin, _mm256_sub_pd(low, slack));
     const __m256d exit_high = _mm256_min_pd(tmax, _mm256_add_pd(high, slack));
     ok = _mm256_and_pd(ok, _mm256_cmp_pd(enter_low, exit_high, _CMP_LE_OQ));
@@ -188,36 +176,17 @@ std::array<Kernel, 8> kernels(std::integer_sequence<int, P...>) {
 std::size_t test_ray_aabbs(const Ray& ray, const AabbSoa& boxes, std::span<std::uint8_t> hits) {
   const std::size_t n = boxes.size();
   if (hits.size() < n) throw std::invalid_argument("test_ray_aabbs: fewer hit slots than boxes");
-  const auto none = [&] {
+  const PreparedRay r(ray);
+  if (!r.in_contract) {
     std::fill(hits.begin(), hits.begin() + static_cast<std::ptrdiff_t>(n), std::uint8_t{0});
-    return std::size_t{0};
-  };
-  // The ray's own checks of intersect_ray_aabb: tmin > tmax, and the ray's half of in_contract.
-  if (!(ray.tmin <= ray.tmax)) return none();
-  if (!(finite(ray.origin) && finite(ray.dir) && ray.tmin < INFINITY && ray.tmax > -INFINITY)) return none();
-
-  // The scaling of intersect_ray_aabb: largest direction component into [1, 2).
-  const double m = max_abs(ray.dir);
-  const int e = (m > 0x1p-1024 && std::isfinite(m)) ? fp::exponent_of(m) : 0;
-  PreparedRay r;
-  r.tmin = fp::scale2(ray.tmin, e), r.tmax = fp::scale2(ray.tmax, e);
-  for (int i = 0; i < 3; ++i) {
-    r.origin[i] = ray.origin[i];
-    r.negative[i] = ray.dir[i] < 0;
-    r.inv[i] = 0;
-    if (std::fabs(ray.dir[i]) <= 0x1p-1024) {
-      r.parallel |= 1 << i;
-      continue;
-    }
-    const double d = fp::scale2(ray.dir[i], -e);
-    if (!(std::fabs(d) >= DBL_MIN)) {
-      // A component that is subnormal once scaled: the scalar test computes its slab in long
-      // double, a path too rare to vectorise. Box by box, then.
-      std::size_t count = 0;
-      for (std::size_t b = 0; b < n; ++b) count += hits[b] = intersect_ray_aabb(ray, boxes[b]).hit;
-      return count;
-    }
-    r.inv[i] = 1.0 / d;
+    return 0;
+  }
+  if (r.subnormal != 0) {
+    // A component that is subnormal once scaled: the scalar test computes its slab in long
+    // double, a path too rare to vectorise. Box by box, then.
+    std::size_t count = 0;
+    for (std::size_t b = 0; b < n; ++b) count += hits[b] = intersect_ray_aabb(r, boxes[b]).hit;
+    return count;
   }
   static const std::array<Kernel, 8> kernel = kernels(std::make_integer_sequence<int, 8>{});
   return kernel[static_cast<std::size_t>(r.parallel)](r, boxes, hits.data());

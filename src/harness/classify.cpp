@@ -239,14 +239,14 @@ Verdict classify(QueryKind kind, const Answer& library, const ExactVerdict& exac
       (is_library_party(o.party) ? library_wrong : any_failed) = true;  // the library's own failure is a bug
       continue;
     }
-    const bool library = is_library_party(o.party);
-    Band band = library ? library_band(kind) : party_band(o.party);
-    if (!library) band.param_width = 0;  // second opinions give no parameters
+    const bool own = is_library_party(o.party);
+    Band band = own ? library_band(kind) : party_band(o.party);
+    if (!own) band.param_width = 0;  // second opinions give no parameters
     Answer said = o.answer;
-    if (!library) said.params.clear();
+    if (!own) said.params.clear();
     v.parties.push_back(judge_party(o.party, band, said, exact, kind));
     const bool wrong = v.parties.back().standing == Standing::wrong;
-    (library ? library_wrong : any_wrong) |= wrong;
+    (own ? library_wrong : any_wrong) |= wrong;
     any_band |= v.parties.back().standing == Standing::within_band;
   }
   if (v.parties[0].standing == Standing::wrong || library_wrong) {
