@@ -34,7 +34,7 @@ Evaluation planted(const Input& in) {
   e.library = ask_library(in);
   e.exact = exact.judge(in);
   const auto& s = std::get<SphereSphereInput>(in);
-  e.opinions = {{"fcl.collide(Sphere,Sphere)", Opinion::Status::answered, {s.a.radius + s.b.radius > 1, {}, {}}, ""}};
+  e.opinions = {{"fcl.collide(Sphere,Sphere)", Opinion::Status::answered, {s.a.radius + s.b.radius > 1, {}, {}, {}}, ""}};
   e.verdict = classify(QueryKind::sphere_sphere, e.library, e.exact, e.opinions);
   return e;
 }

@@ -10,7 +10,7 @@ Evaluation with(bool exact_hit, bool library_hit, bool fcl_hit) {
   e.exact.answer.hit = exact_hit;
   e.exact.margin = exact_hit ? 0.25 : -0.25;
   e.library.hit = library_hit;
-  e.opinions = {{"fcl.Intersect::intersect_Triangle", Opinion::Status::answered, {fcl_hit, {}, {}}, ""}};
+  e.opinions = {{"fcl.Intersect::intersect_Triangle", Opinion::Status::answered, {fcl_hit, {}, {}, {}}, ""}};
   e.verdict = classify(QueryKind::tri_tri, e.library, e.exact, e.opinions);
   return e;
 }
