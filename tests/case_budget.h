@@ -5,12 +5,17 @@
 
 namespace cc::test {
 
-/// The cases for `kind` out of `primitive_cases`, the count a primitive query gets (a few
-/// microseconds each): a mesh case (or a ray against a mesh) builds hierarchies and judges its
-/// near pairs exactly, about 30 ms, and gets a fifth as many.
-inline int case_budget(harness::QueryKind kind, int primitive_cases) {
+/// The cases for `kind`: `primitive_cases` for a primitive query (a few microseconds each), or
+/// `hierarchy_cases` for a mesh query or a ray against a mesh, which builds hierarchies and
+/// judges its near pairs exactly (about 30 ms each).
+inline int case_budget(harness::QueryKind kind, int primitive_cases, int hierarchy_cases) {
   const bool builds_hierarchies = harness::is_mesh_query(kind) || kind == harness::QueryKind::ray_mesh;
-  return builds_hierarchies ? primitive_cases / 5 : primitive_cases;
+  return builds_hierarchies ? hierarchy_cases : primitive_cases;
+}
+
+/// The same with a fifth as many cases for the queries that build hierarchies.
+inline int case_budget(harness::QueryKind kind, int primitive_cases) {
+  return case_budget(kind, primitive_cases, primitive_cases / 5);
 }
 
 }  // namespace cc::test

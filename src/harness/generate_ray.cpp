@@ -1,8 +1,12 @@
 // Generator for ray_aabb: rays parallel to a slab with the origin on, inside or just outside
 // it; rays aimed at a corner, an edge or a face (exactly, or up to rounding); rays starting
-// inside; segments ending on the boundary; tmax = 0; empty parameter ranges; lines (tmin =
-// -inf); zero directions.
+// inside; segments ending or starting on the boundary, with simple values or with generic ones
+// where the slab parameter rounds either way of the segment's end; tmax = 0; empty parameter
+// ranges; lines (tmin = -inf); zero directions.
+#include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "harness/generate_detail.h"
@@ -26,6 +30,39 @@ Vec3 simple_direction(ValueSource& v) {
   Vec3 d;
   for (int k = 0; k < 3; ++k) d[k] = v.choices().chance(70) ? v.small_int(3) : std::ldexp(1.0, v.small_int(6));
   return d;
+}
+
+// A generic positive value with a significand of `bits` bits and an exponent in [-limit,
+// limit]; the simplest is 1.
+double generic_value(ValueSource& v, int bits, int limit) {
+  const auto fraction = v.choices().draw(std::uint64_t{1} << (bits - 1));
+  return std::ldexp(1 + std::ldexp(static_cast<double>(fraction), 1 - bits), v.small_int(limit));
+}
+
+// An odd integer below 2^26 (the product of two is exact); the simplest is 1.
+double odd_factor(ValueSource& v) { return static_cast<double>(2 * v.choices().draw(std::uint64_t{1} << 25) + 1); }
+
+// The value of the lowest set bit of x (finite, nonzero): x is an odd multiple of it.
+double lowest_bit(double x) {
+  int e = 0;
+  const double m = std::frexp(std::fabs(x), &e);  // |x| = m 2^e, m in [1/2, 1)
+  return std::ldexp(1.0, e - 53 + std::countr_zero(static_cast<std::uint64_t>(std::ldexp(m, 53))));
+}
+
+// A direction component d near 2^c for a segment of length t = A 2^a (A odd, below 2^26) from
+// a face at f: d = B h 2^-a with B odd and below 2^26 and h a power of two on whose grid f lies
+// (f = F h) with F below 2^52 or odd, so that t d = A B h and f -+ A B h are exact (F -+ A B
+// is below 2^53, or even and below 2^54). The simplest is 1 for t = 1.
+double exact_component(ValueSource& v, double f, int a, int c) {
+  const double b = odd_factor(v);
+  double h = std::ldexp(1.0, c + a - std::ilogb(b));
+  if (f != 0) {
+    int e = 0;
+    std::frexp(f, &e);  // |f| < 2^e
+    const double lowest = lowest_bit(f);
+    h = std::clamp(h, std::min(std::ldexp(1.0, e - 52), lowest), lowest);
+  }
+  return std::ldexp(b * h, -a);
 }
 
 }  // namespace
@@ -55,16 +92,39 @@ RayAabbInput generate_ray_aabb(ValueSource& v, const GenerateOptions& options) {
       }
       break;
     }
-    case 2: {  // aimed at a boundary point; a segment may end exactly there
-      // Simple values make o + t d exact, so the segment ends on the boundary exactly and the
-      // slab parameters are often exact too; generic ones make it end there up to the rounding
-      // of the origin, with slab parameters that round either way of tmax.
+    case 2: {  // aimed at a boundary point; a segment may end or start there
       const Vec3 target = draw_boundary_point(v, in.box);
-      const bool generic = v.choices().chance(30);
-      r.dir = generic ? v.point() : simple_direction(v);
-      const double t = generic ? v.length() : std::ldexp(1.0, v.small_int(4));
+      if (v.choices().chance(40)) {
+        // Simple values make o + t d exact, so the segment ends on the boundary exactly and the
+        // slab parameters are often exact too.
+        r.dir = simple_direction(v);
+        const double t = std::ldexp(1.0, v.small_int(4));
+        r.origin = target - t * r.dir;
+        if (v.choices().chance(40)) r.tmax = v.choices().chance(70) ? t : v.nudge(t);
+        break;
+      }
+      // Generic values that keep the segment's end on the boundary exactly: on the axes where
+      // the target lies on a face, t and the direction's component come from exact_component,
+      // so that o = target - t d and t d are exact, and the slab parameter (f - o) (1/d)
+      // computed in floating point rounds either way of t. The direction enters the box through
+      // the target's faces where the segment ends there, and leaves through them where it
+      // starts there. One case in five has generic directions of 53 bits instead: o + t d misses
+      // the target by the rounding of o, inside or outside.
+      const bool rounded = v.choices().chance(20);
+      const auto end = v.choices().draw(3);  // 0: a ray, 1: a segment ending there, 2: starting there
+      const double odd = odd_factor(v);
+      const int a = v.small_int(4) - std::ilogb(odd);  // t = odd 2^a in [1, 2) 2^small_int
+      const double t = std::ldexp(odd, a);
+      for (int k = 0; k < 3; ++k) {
+        const bool on_lo = target[k] == in.box.lo[k], on_hi = target[k] == in.box.hi[k];
+        const bool negative = (on_lo || on_hi) && end != 0 ? (end == 1 ? on_hi : on_lo) : v.choices().chance(50);
+        const double size = (on_lo || on_hi) && !rounded ? exact_component(v, target[k], a, v.small_int(8))
+                                                         : generic_value(v, rounded ? 53 : 26, 8);
+        r.dir[k] = negative ? -size : size;
+      }
       r.origin = target - t * r.dir;
-      if (v.choices().chance(40)) r.tmax = v.choices().chance(70) ? t : v.nudge(t);
+      if (end == 1) r.tmax = t;
+      if (end == 2) r.tmin = t;
       break;
     }
     case 3:  // starting inside, or on the boundary

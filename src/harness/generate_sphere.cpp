@@ -1,6 +1,8 @@
 // Generator for sphere_sphere: balls touching by construction (centres apart by a Pythagorean
-// quadruple times a power of two, radii summing exactly to its length), a few ULPs from
-// touching, concentric, and points (radius 0); out of contract, a negative radius on either.
+// quadruple times a scale, radii summing exactly to its length), a few ULPs from touching,
+// concentric, and points (radius 0); out of contract, a negative radius on either. The scale is
+// a power of two (every square exact too) or a generic double whose squares round, either way
+// of each other, while the offset, the reach and the radii stay exact.
 #include <cmath>
 
 #include "harness/generate_detail.h"
@@ -34,9 +36,20 @@ SphereSphereInput generate_sphere_sphere(ValueSource& v, const GenerateOptions& 
       Vec3 offset{static_cast<double>(q.a), static_cast<double>(q.b), static_cast<double>(q.c)};
       for (int i = 2; i > 0; --i) std::swap(offset[i], offset[static_cast<int>(v.choices().draw(i + 1))]);
       for (int k = 0; k < 3; ++k) offset[k] *= v.choices().chance(50) ? -1 : 1;
-      const double scale = std::ldexp(1.0, v.small_int(8));
+      double scale = std::ldexp(1.0, v.small_int(8));
+      if (v.choices().chance(50)) {
+        // A generic scale of 46 bits: times the quadruple's numbers (4 bits) and the centres'
+        // grid (6 bits) it stays exact, its squares do not.
+        scale *= 1 + static_cast<double>(v.choices().draw(std::uint64_t{1} << 45)) * 0x1p-45;
+        in.a.center = scale * Vec3{static_cast<double>(v.small_int(32)), static_cast<double>(v.small_int(32)),
+                                   static_cast<double>(v.small_int(32))};
+      }
       const double reach = scale * q.d;
       in.a.radius = reach * static_cast<double>(v.choices().draw(5)) / 4;  // 0, 1/4, ..., 1 of the reach
+      if (v.choices().chance(50)) {
+        // A generic radius in [reach/2, reach]: the other, reach minus it, is exact (Sterbenz).
+        in.a.radius = reach * (0.5 + static_cast<double>(v.choices().draw(std::uint64_t{1} << 40)) * 0x1p-41);
+      }
       in.b.center = in.a.center + scale * offset;
       in.b.radius = reach - in.a.radius;
       if (mode == 2) in.b.radius = std::fabs(v.nudge(in.b.radius));

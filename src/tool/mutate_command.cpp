@@ -170,12 +170,17 @@ struct CtestOutcome {
   double seconds = 0;
 };
 
-// Runs the tests of a label, leaving out those matching `exclude` (a regex; empty: none).
+// Tests with this label check the catalogue against the tree (tests/CMakeLists.txt): a planted
+// mutant makes its own entry stale on purpose, so they are left out of every run here.
+constexpr const char* kCatalogueLabel = "^catalogue$";
+
+// Runs the tests of a label, leaving out those matching `exclude` (a regex; empty: none) and
+// those of kCatalogueLabel.
 CtestOutcome run_ctest(const Worker& w, const std::string& label, double timeout, const fs::path& log,
                        bool stop_on_failure, const std::string& exclude) {
   fs::remove(log);
   std::vector<std::string> argv = {"ctest",     "--test-dir", w.build.string(), "-L", "^" + label + "$", "--timeout",
-                                   std::to_string(timeout), "--output-on-failure", "-j1"};
+                                   std::to_string(timeout), "-LE", kCatalogueLabel, "--output-on-failure", "-j1"};
   if (stop_on_failure) argv.push_back("--stop-on-failure");
   if (!exclude.empty()) argv.insert(argv.end(), {"-E", exclude});
   const ChildResult r = run_child(argv, {}, log, 4 * 3600);

@@ -63,9 +63,15 @@ std::string markdown_report(const MutationRun& run) {
          std::to_string(run.jobs) + " worker(s); checks in order: ctest labels ";
   for (std::size_t i = 0; i < run.labels.size(); ++i) out += (i ? ", " : "") + run.labels[i];
   char line[256];
-  std::snprintf(line, sizeof line, " (stop on the first failure; a test running past %.0f s counts as failed), then `crosscheck campaign --query KIND --seconds %g --seed %u`.\n\n",
-                run.test_timeout, run.campaign_seconds, run.campaign_seed);
+  std::snprintf(line, sizeof line, " (stop on the first failure; a test running past %.0f s counts as failed)",
+                run.test_timeout);
   out += line;
+  if (run.campaign_seconds > 0) {
+    std::snprintf(line, sizeof line, ", then `crosscheck campaign --query KIND --seconds %g --seed %u`",
+                  run.campaign_seconds, run.campaign_seed);
+    out += line;
+  }
+  out += ".\n\n";
   out += "| score | caught | of | |\n|---|---|---|---|\n";
   out += "| ctest alone | " + std::to_string(s.by_ctest) + " | " + std::to_string(s.counted) + " | " +
          percent(s.by_ctest, s.counted) + " |\n";

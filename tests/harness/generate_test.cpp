@@ -1,8 +1,12 @@
 // The generators meet the boundary: touching (exact margin 0), parallel and degenerate
-// configurations for every kind, and inputs outside the domain when asked.
+// configurations for every kind, touching rays and balls at generic values where floating point
+// rounds either way of the boundary, and inputs outside the domain when asked.
 #include "harness/generate.h"
 
 #include <gtest/gtest.h>
+
+#include <cfloat>
+#include <cmath>
 
 #include "harness/features.h"
 #include "harness/input_json.h"
@@ -54,6 +58,51 @@ TEST(Generate, MeetsTouchingParallelAndDegenerateCases) {
     EXPECT_GT(hits, n / 10) << name(kind);
     EXPECT_GT(misses, n / 10) << name(kind);
   }
+}
+
+// Exact hits (in contract) of generated cases of `kind` for which `rounds_apart` holds, out of n.
+template <typename In, typename Pred>
+int exact_hits_where(QueryKind kind, int n, Pred rounds_apart) {
+  const exact::ExactRationalReference exact;
+  int count = 0;
+  for (int i = 0; i < n; ++i) {
+    RandomChoices c(static_cast<std::uint64_t>(i));
+    const Input input = generate(kind, c, kOptions);
+    const ExactVerdict v = exact.judge(input);
+    count += v.contract == Contract::in && v.decided && v.answer.hit && rounds_apart(std::get<In>(input));
+  }
+  return count;
+}
+
+// Segments that hit, though an end of theirs lies past a slab parameter as computed in
+// floating point without a rounding bound: the end within an ULP of the boundary, where the
+// parameter rounds either way of it.
+TEST(Generate, RayAabbMeetsSegmentEndsWhereTheSlabParameterRoundsPastThem) {
+  const int n = 4000;
+  const int count = exact_hits_where<RayAabbInput>(QueryKind::ray_aabb, n, [](const RayAabbInput& in) {
+    const Ray& r = in.ray;
+    for (int k = 0; k < 3; ++k) {
+      if (!(std::fabs(r.dir[k]) >= DBL_MIN)) continue;
+      const double inv = 1.0 / r.dir[k];
+      const double near = ((r.dir[k] > 0 ? in.box.lo[k] : in.box.hi[k]) - r.origin[k]) * inv;
+      const double far = ((r.dir[k] > 0 ? in.box.hi[k] : in.box.lo[k]) - r.origin[k]) * inv;
+      if (near > r.tmax || far < r.tmin) return true;
+    }
+    return false;
+  });
+  EXPECT_GT(count, n / 400);
+}
+
+// Touching or overlapping balls whose squared distance, as computed, exceeds their squared
+// reach: generic scales, where the squares round either way of each other.
+TEST(Generate, SphereSphereMeetsTouchingBallsWhoseSquaresRoundApart) {
+  const int n = 2000;
+  const int count = exact_hits_where<SphereSphereInput>(QueryKind::sphere_sphere, n, [](const SphereSphereInput& in) {
+    const Vec3 d = in.a.center - in.b.center;
+    const double reach = in.a.radius + in.b.radius;
+    return d.x * d.x + d.y * d.y + d.z * d.z > reach * reach;
+  });
+  EXPECT_GT(count, n / 100);
 }
 
 TEST(Generate, OutOfContractCasesLeaveTheDomain) {

@@ -6,12 +6,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
-#include <unistd.h>
-
 #include "harness/obj_file.h"
+#include "temp_folder.h"
 
 namespace cc::harness {
 namespace {
@@ -23,30 +21,8 @@ const std::filesystem::path kBadMeshes = kSource / "tests" / "data" / "bad_meshe
 constexpr const char* kTriangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
 
 // A fresh folder for this test, removed with it.
-class TempDir {
- public:
-  TempDir()
-      : path_(std::filesystem::temp_directory_path() /
-              ("crosscheck_mesh_files_test_" + std::to_string(::getpid()) + "_" +
-               ::testing::UnitTest::GetInstance()->current_test_info()->name())) {
-    std::filesystem::remove_all(path_);
-    std::filesystem::create_directories(path_);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path_, ec);
-  }
-  const std::filesystem::path& path() const { return path_; }
-  // Writes `text` to path()/relative, making the folders it needs.
-  std::filesystem::path write(const std::filesystem::path& relative, const std::string& text) const {
-    const auto file = path_ / relative;
-    std::filesystem::create_directories(file.parent_path());
-    std::ofstream(file, std::ios::binary) << text;
-    return file;
-  }
-
- private:
-  std::filesystem::path path_;
+struct TempDir : test::TempFolder {
+  TempDir() : TempFolder("crosscheck_mesh_files_test") {}
 };
 
 TEST(MeshFiles, FindsCorporaMeshesFromAQueryFolderByWalkingUp) {

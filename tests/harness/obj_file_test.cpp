@@ -16,7 +16,7 @@
 #include <string>
 #include <vector>
 
-#include <unistd.h>
+#include "temp_folder.h"
 
 namespace cc::harness {
 namespace {
@@ -50,25 +50,16 @@ std::vector<std::vector<std::string>> lines_starting(const std::filesystem::path
 
 std::uint64_t bits(double x) { return std::bit_cast<std::uint64_t>(x); }
 
-// A file in a fresh folder for this test, removed with it.
+// A file in a fresh folder of its own (named for the test and the file), removed with it.
 class TempObj {
  public:
   TempObj(const std::string& name, const std::string& text)
-      : dir_(std::filesystem::temp_directory_path() /
-             ("crosscheck_obj_file_test_" + std::to_string(::getpid()) + "_" +
-              ::testing::UnitTest::GetInstance()->current_test_info()->name())) {
-    std::filesystem::create_directories(dir_);
-    std::ofstream(dir_ / name, std::ios::binary) << text;
-    path_ = dir_ / name;
-  }
-  ~TempObj() {
-    std::error_code ec;
-    std::filesystem::remove_all(dir_, ec);
-  }
+      : folder_("crosscheck_obj_file_test_" + name), path_(folder_.write(name, text)) {}
   const std::filesystem::path& path() const { return path_; }
 
  private:
-  std::filesystem::path dir_, path_;
+  test::TempFolder folder_;
+  std::filesystem::path path_;
 };
 
 // The message of the MeshFileError that reading `path` throws ("" if none is thrown).

@@ -22,7 +22,10 @@ TEST_P(Differential, TheLibraryIsNeverAnImplBug) {
   const exact::ExactRationalReference exact;
   const std::string property = std::string(name(kind)) + " is never an impl_bug";
   Met met;
-  const int cases = case_budget(kind, 1500);
+  // A primitive case costs about 0.1 ms with the exact reference: thousands of them find the
+  // rare boundary that only a few generated cases sit on (a segment ending exactly on a face
+  // where its slab parameter rounds past it, touching balls whose squares round apart).
+  const int cases = case_budget(kind, 4000, 300);
   const bool passed = check_property(property, kind, 10, cases, met, [&](const Input& input) {
     const Evaluation e = evaluate(input, exact, nullptr);
     met.count(features_of(input, e.exact));

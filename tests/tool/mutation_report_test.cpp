@@ -1,0 +1,157 @@
+// The outcome of a mutation run: the score counts only the mutants that ran and built and are
+// not equivalent, ctest alone apart from ctest plus the campaign; the Markdown and JSON reports
+// carry those figures and one entry per mutant.
+#include "tool/mutation_report.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <string>
+
+namespace cc::tool {
+namespace {
+
+MutantResult result(const std::string& id, MutantStatus status) {
+  MutantResult r;
+  r.mutant.id = id;
+  r.mutant.query = "ray_aabb";
+  r.mutant.file = "src/collide/ray_aabb.cpp";
+  r.mutant.description = "the bug of " + id;
+  r.status = status;
+  return r;
+}
+
+MutantResult caught(const std::string& id, MutantStatus status, const std::string& check, const std::string& test,
+                    double seconds) {
+  MutantResult r = result(id, status);
+  r.check = check;
+  r.test = test;
+  r.seconds_to_catch = seconds;
+  return r;
+}
+
+// Two caught by ctest, one by the campaign, one survivor, and one of each kind left out.
+MutationRun sample_run() {
+  MutationRun run;
+  run.date = "2026-11-21 10:00";
+  run.command = "crosscheck mutate --jobs 2";
+  run.catalogue = "tests/mutation/mutants.json";
+  run.jobs = 2;
+  run.budget_minutes = 60;
+  run.campaign_seconds = 60;
+  run.labels = {"corpus", "fuzz", "unit", "property"};
+  run.baseline = {{"unit", 42}, {"property", 300}};
+  run.excluded_tests = {"Broken.Test"};
+  run.test_timeout = 1500;
+
+  MutantResult equivalent = result("e.equivalent", MutantStatus::equivalent);
+  equivalent.mutant.equivalent = "both branches give the same double";
+  MutantResult stale = result("f.stale", MutantStatus::stale);
+  stale.note = "the original text is not found in src/collide/ray_aabb.cpp";
+  MutantResult not_building = result("g.not_building", MutantStatus::build_failed);
+  not_building.note = "see build.log | with a pipe\nand a newline";
+  run.results = {caught("a.by_unit", MutantStatus::caught_by_ctest, "unit", "RayAabb.Grazes (Failed)", 73),
+                 caught("b.by_property", MutantStatus::caught_by_ctest, "property",
+                        "Differential.TheLibraryIsNeverAnImplBug/ray_aabb (Failed)", 210),
+                 caught("c.by_campaign", MutantStatus::caught_by_campaign, "campaign",
+                        "impl_bug ray_aabb seed 1 case 77", 400),
+                 result("d.survivor", MutantStatus::survived),
+                 equivalent,
+                 stale,
+                 not_building,
+                 result("h.not_run", MutantStatus::not_run),
+                 result("i.error", MutantStatus::error)};
+  return run;
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(MutationReport, TheScoreCountsOnlyMutantsThatRanBuiltAndAreNotEquivalent) {
+  const Score s = score_of(sample_run());
+  EXPECT_EQ(s.counted, 4);    // two by ctest, one by the campaign, one survivor
+  EXPECT_EQ(s.by_ctest, 2);   // the campaign's catch is not ctest's
+  EXPECT_EQ(s.by_either, 3);  // the survivor is in neither
+}
+
+TEST(MutationReport, AnEmptyRunScoresNothing) {
+  const Score s = score_of(MutationRun{});
+  EXPECT_EQ(s.counted, 0);
+  EXPECT_EQ(s.by_ctest, 0);
+  EXPECT_EQ(s.by_either, 0);
+  EXPECT_TRUE(contains(markdown_report(MutationRun{}), "| ctest alone | 0 | 0 | - |"));
+}
+
+TEST(MutationReport, EveryStatusHasItsOwnName) {
+  std::set<std::string> names;
+  for (MutantStatus s : {MutantStatus::caught_by_ctest, MutantStatus::caught_by_campaign, MutantStatus::survived,
+                         MutantStatus::equivalent, MutantStatus::stale, MutantStatus::build_failed,
+                         MutantStatus::not_run, MutantStatus::error}) {
+    names.insert(std::string(to_string(s)));
+  }
+  EXPECT_EQ(names.size(), 8u);
+}
+
+TEST(MutationReport, MarkdownHasTheScoresAndWhatWasLeftOut) {
+  const std::string md = markdown_report(sample_run());
+  EXPECT_TRUE(contains(md, "| ctest alone | 2 | 4 | 50.0% |")) << md;
+  EXPECT_TRUE(contains(md, "| ctest + campaign | 3 | 4 | 75.0% |")) << md;
+  EXPECT_TRUE(contains(md, "1 equivalent, 1 stale, 1 not building, 1 not run (budget or interrupted), 1 runner errors"))
+      << md;
+  EXPECT_TRUE(contains(md, "corpus, fuzz, unit, property")) << md;
+  EXPECT_TRUE(contains(md, "unit 42 s; property 300 s;")) << md;
+  EXPECT_TRUE(contains(md, "`Broken.Test`")) << md;
+}
+
+TEST(MutationReport, MarkdownHasOneRowPerMutantWithWhatCaughtItAndWhen) {
+  const MutationRun run = sample_run();
+  const std::string md = markdown_report(run);
+  for (const MutantResult& r : run.results) EXPECT_TRUE(contains(md, "| `" + r.mutant.id + "` |")) << r.mutant.id;
+  EXPECT_TRUE(contains(md, "| caught by ctest | unit: RayAabb.Grazes (Failed) | 73 s |")) << md;
+  EXPECT_TRUE(contains(md, "| caught by campaign | campaign: impl_bug ray_aabb seed 1 case 77 | 400 s |")) << md;
+  EXPECT_TRUE(contains(md, "both branches give the same double")) << md;  // why equivalent
+  EXPECT_TRUE(contains(md, "the bug of d.survivor")) << md;               // a survivor's description
+}
+
+TEST(MutationReport, MarkdownCellsHoldNoPipeOrNewline) {
+  const std::string md = markdown_report(sample_run());
+  const auto at = md.find("| `g.not_building` |");
+  ASSERT_NE(at, std::string::npos);
+  const std::string row = md.substr(at, md.find('\n', at) - at);
+  EXPECT_EQ(std::count(row.begin(), row.end(), '|'), 9) << row;  // eight columns
+  EXPECT_TRUE(contains(row, "see build.log / with a pipe and a newline")) << row;
+}
+
+TEST(MutationReport, JsonHasTheScoresAndEveryMutant) {
+  const MutationRun run = sample_run();
+  const auto j = nlohmann::json::parse(json_report(run));
+  EXPECT_EQ(j["score"]["counted"], 4);
+  EXPECT_EQ(j["score"]["caught_by_ctest"], 2);
+  EXPECT_EQ(j["score"]["caught_by_ctest_or_campaign"], 3);
+  EXPECT_DOUBLE_EQ(j["score"]["ctest_fraction"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(j["score"]["ctest_or_campaign_fraction"].get<double>(), 0.75);
+  EXPECT_EQ(j["catalogue"], "tests/mutation/mutants.json");
+  EXPECT_EQ(j["baseline_seconds"]["property"], 300);
+  EXPECT_EQ(j["excluded_tests"], nlohmann::json::array({"Broken.Test"}));
+  ASSERT_EQ(j["mutants"].size(), run.results.size());
+  const auto& by_property = j["mutants"][1];
+  EXPECT_EQ(by_property["id"], "b.by_property");
+  EXPECT_EQ(by_property["status"], "caught by ctest");
+  EXPECT_EQ(by_property["check"], "property");
+  EXPECT_EQ(by_property["seconds_to_catch"], 210);
+  EXPECT_EQ(j["mutants"][4]["status"], "equivalent");
+  EXPECT_EQ(j["mutants"][4]["note"], "both branches give the same double");
+  EXPECT_EQ(j["mutants"][5]["status"], "STALE");
+  EXPECT_EQ(j["mutants"][5]["note"], "the original text is not found in src/collide/ray_aabb.cpp");
+}
+
+TEST(MutationReport, JsonOfAnEmptyRunHasZeroFractions) {
+  const auto j = nlohmann::json::parse(json_report(MutationRun{}));
+  EXPECT_EQ(j["score"]["counted"], 0);
+  EXPECT_EQ(j["score"]["ctest_fraction"], 0.0);
+  EXPECT_TRUE(j["mutants"].empty());
+}
+
+}  // namespace
+}  // namespace cc::tool
