@@ -5,6 +5,7 @@
 
 #include "oracle/fcl/fcl_managers.h"
 #include "oracle/fcl/parties.h"
+#include "oracle/fcl/time_limit.h"
 
 namespace cc::fcl_oracle {
 namespace {
@@ -100,5 +101,7 @@ std::vector<std::string> FclSecondOpinion::parties(QueryKind kind) const {
   }
   return {};
 }
+
+int FclSecondOpinion::abandoned_calls() const { return fcl_oracle::abandoned_calls(); }
 
 }  // namespace cc::fcl_oracle

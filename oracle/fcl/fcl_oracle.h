@@ -30,6 +30,9 @@ class FclSecondOpinion final : public harness::SecondOpinion {
   FclSecondOpinion();  // checks that FCL's collision matrix has the pairs used
   std::vector<harness::Opinion> opinions(const harness::Input& input) const override;
   std::vector<std::string> parties(harness::QueryKind kind) const override;
+  /// The libccd, broadphase and continuous-collision calls abandoned by their time limit or
+  /// abort guard so far (time_limit.h).
+  int abandoned_calls() const override;
 };
 
 }  // namespace cc::fcl_oracle

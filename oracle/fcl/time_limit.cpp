@@ -9,6 +9,7 @@ namespace {
 
 sigjmp_buf g_escape;
 volatile sig_atomic_t g_armed = 0;
+int g_abandoned = 0;
 
 void on_alarm(int) {
   if (g_armed) siglongjmp(g_escape, 1);
@@ -43,6 +44,7 @@ Guarded run_guarded(double seconds, const std::function<void()>& f) {
     f();
   } else {
     outcome = jumped == 1 ? Guarded::timed_out : Guarded::aborted;
+    ++g_abandoned;
   }
   g_armed = 0;
   set_timer(0);
@@ -50,6 +52,8 @@ Guarded run_guarded(double seconds, const std::function<void()>& f) {
   sigaction(SIGVTALRM, &previous_alarm, nullptr);
   return outcome;
 }
+
+int abandoned_calls() { return g_abandoned; }
 
 bool run_with_time_limit(double seconds, const std::function<void()>& f) {
   return run_guarded(seconds, f) == Guarded::returned;

@@ -18,6 +18,9 @@ enum class Guarded { returned, timed_out, aborted };
 /// FCL's libccd code, e.g. doSimplex2's "A is not in region 1"), with the same caveats.
 Guarded run_guarded(double seconds, const std::function<void()>& f);
 
+/// How many guarded calls this process has abandoned (timed out or aborted) so far.
+int abandoned_calls();
+
 /// The limit used for libccd calls: they take microseconds when they return at all.
 inline constexpr double kLibccdTimeLimit = 0.02;
 

@@ -76,12 +76,17 @@ bool is_finding(CaseClass c) {
          c == CaseClass::undecided;
 }
 
+// A worker's exit status when it stops early because its second opinion abandoned a call (see
+// SecondOpinion::abandoned_calls): it is replaced, and nothing is recorded against its last case.
+constexpr int kRetired = 3;
+
 // The worker: runs cases until the deadline, reporting tallies and findings on `out`.
 [[noreturn]] void run_worker(int worker, const CampaignOptions& options, const Oracles& oracles, Slot& slot, int out,
                              std::int64_t deadline_ns) {
   signal(SIGINT, on_interrupt);
   const auto exact = oracles.exact();
   const auto second = oracles.second();
+  const int abandoned_before = second->abandoned_calls();  // inherited: a fresh worker cannot undo it
   while (!g_stop && now_ns() < deadline_ns) {
     // Equal time for every kind: the one this worker has spent least time on goes next.
     QueryKind kind = options.kinds.front();
@@ -113,6 +118,10 @@ bool is_finding(CaseClass c) {
     slot.counts[kind_number][static_cast<std::size_t>(e.verdict.cls)] += 1;
     if (is_finding(e.verdict.cls)) {
       write_line(out, "F " + std::to_string(static_cast<int>(kind)) + " " + std::to_string(index));
+    }
+    if (second->abandoned_calls() > abandoned_before) {  // later cases must not pay for it
+      ::close(out);
+      std::_Exit(kRetired);
     }
   }
   ::close(out);
@@ -261,7 +270,12 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       int status = 0;
       waitpid(w.pid, &status, 0);
       Slot& slot = slots[i];
-      const bool died = !(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+      const bool retired = WIFEXITED(status) && WEXITSTATUS(status) == kRetired;
+      const bool died = !(WIFEXITED(status) && WEXITSTATUS(status) == 0) && !retired;
+      if (retired && !g_stop && now_ns() < deadline_ns) {
+        spawn(static_cast<int>(i));
+        continue;
+      }
       if (died) {
         std::string what = WIFSIGNALED(status) ? "killed by signal " + std::to_string(WTERMSIG(status)) + " (" +
                                                      strsignal(WTERMSIG(status)) + ")"

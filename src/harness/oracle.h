@@ -65,6 +65,10 @@ class SecondOpinion {
   virtual std::vector<Opinion> opinions(const Input& input) const = 0;
   /// The parties that answer this kind of query, in the order of opinions().
   virtual std::vector<std::string> parties(QueryKind kind) const = 0;
+  /// How many opinions this process has cut short by a jump out of a party's code (a time
+  /// limit, or an abort() caught). What that code held is leaked and the heap may be left
+  /// inconsistent: a process that goes on to other cases after one should be replaced.
+  virtual int abandoned_calls() const { return 0; }
 };
 
 }  // namespace cc::harness

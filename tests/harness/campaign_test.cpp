@@ -1,5 +1,6 @@
 // The campaign's supervision: a second opinion that crashes or hangs on some cases costs the
-// campaign a worker, not the run; each such case is recorded as a finding and can be rebuilt.
+// campaign a worker, not the run; each such case is recorded as a finding and can be rebuilt. A
+// worker whose second opinion abandoned a call is replaced before its next case.
 #include "harness/campaign.h"
 
 #include <gtest/gtest.h>
@@ -62,6 +63,49 @@ TEST(Campaign, SurvivesCrashesAndHangsInAnOracle) {
   EXPECT_GT(t.cases, 10000u);
   EXPECT_EQ(t.count(CaseClass::oracle_crash), static_cast<std::uint64_t>(crashes + hangs));
   EXPECT_EQ(t.count(CaseClass::impl_bug), 0u);
+}
+
+bool abandoned_on(const Input& in) { return fingerprint(in) % 997 == 3; }
+
+// Answers like FCL's AABB test, but on a few inputs a call is abandoned (a failed opinion), after
+// which every answer of the same process is wrong, as a damaged heap could make it.
+class DamagedAfterAbandoning final : public SecondOpinion {
+ public:
+  std::vector<Opinion> opinions(const Input& in) const override {
+    if (abandoned_on(in)) {
+      ++abandoned_;
+      return {{"fcl.AABBd::overlap", Opinion::Status::failed, {}, "did not return within the time limit"}};
+    }
+    Answer a = ask_library(in);
+    if (abandoned_ > 0) a.hit = !a.hit;
+    return {{"fcl.AABBd::overlap", Opinion::Status::answered, a, ""}};
+  }
+  std::vector<std::string> parties(QueryKind) const override { return {"fcl.AABBd::overlap"}; }
+  int abandoned_calls() const override { return abandoned_; }
+
+ private:
+  mutable int abandoned_ = 0;
+};
+
+TEST(Campaign, ReplacesAWorkerAfterAnAbandonedCall) {
+  CampaignOptions options;
+  options.kinds = {QueryKind::aabb_aabb};
+  options.seconds = 2;
+  options.seed = 9;
+  options.workers = 2;
+  options.out_of_contract_percent = 0;
+  const Oracles oracles{[] { return std::make_unique<exact::ExactRationalReference>(); },
+                        [] { return std::make_unique<DamagedAfterAbandoning>(); }};
+  const CampaignResult r = run_campaign(options, oracles);
+  // Only the abandoned cases are findings: no case ran in a worker after its abandoned call.
+  int abandoned = 0;
+  for (const Finding& f : r.findings) {
+    EXPECT_TRUE(f.crash.empty()) << f.crash;
+    EXPECT_TRUE(abandoned_on(f.input)) << "case " << f.case_index << " ran in a damaged worker";
+    abandoned += abandoned_on(f.input);
+  }
+  EXPECT_GT(abandoned, 1);  // so workers were replaced and the campaign went on
+  EXPECT_GT(r.tallies.at(QueryKind::aabb_aabb).cases, 5000u);
 }
 
 }  // namespace
