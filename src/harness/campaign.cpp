@@ -7,11 +7,14 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <sstream>
 
+#include "harness/case_file.h"
 #include "harness/generate.h"
 #include "harness/library.h"
 
@@ -62,6 +65,46 @@ void write_line(int fd, const std::string& line) {
     const ssize_t n = ::write(fd, s.data() + done, s.size() - done);
     if (n <= 0) return;
     done += static_cast<std::size_t>(n);
+  }
+}
+
+// The second opinions on a finding's input, asked again in a child process: they crashed, hung
+// or were cut short on it (or on a case before it) in a worker, and the campaign's own process
+// must not be damaged by them. Returns nothing if the child did not answer.
+std::optional<std::vector<Opinion>> opinions_in_child(const Input& input, const SecondOpinion& second) {
+  int fds[2];
+  if (pipe(fds) != 0) return std::nullopt;
+  std::fflush(nullptr);
+  const pid_t pid = fork();
+  if (pid < 0) {
+    ::close(fds[0]), ::close(fds[1]);
+    return std::nullopt;
+  }
+  if (pid == 0) {
+    ::close(fds[0]);
+    std::vector<Opinion> opinions = library_alternatives(input);
+    for (Opinion& o : second.opinions(input)) opinions.push_back(std::move(o));
+    write_line(fds[1], opinions_to_json(opinions).dump());  // as case files store them, exactly
+    ::close(fds[1]);
+    std::_Exit(0);
+  }
+  ::close(fds[1]);
+  std::string text;
+  char chunk[65536];
+  for (ssize_t n; (n = ::read(fds[0], chunk, sizeof chunk)) != 0;) {
+    if (n < 0 && errno == EINTR) continue;
+    if (n < 0) break;
+    text.append(chunk, static_cast<std::size_t>(n));
+  }
+  ::close(fds[0]);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return std::nullopt;
+  try {
+    return opinions_from_json(Json::parse(text), "");
+  } catch (const std::exception&) {
+    return std::nullopt;
   }
 }
 
@@ -194,21 +237,30 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
     f.case_index = index;
     f.input = campaign_case(options.seed, kind, index, options.out_of_contract_percent, options.mesh_folder);
     f.crash = crash;
-    if (crash.empty()) {
-      f.evaluation = evaluate(f.input, *exact, second.get());  // it returned in the worker
-    } else {
+    if (crash.empty()) {  // it returned in the worker: the same again, FCL in a child
+      if (auto opinions = opinions_in_child(f.input, *second)) {
+        f.evaluation.library = ask_library(f.input);
+        f.evaluation.exact = exact->judge(f.input);
+        f.evaluation.opinions = std::move(*opinions);
+        f.evaluation.verdict = classify(kind, f.evaluation.library, f.evaluation.exact, f.evaluation.opinions);
+      } else {
+        f.crash = "the second opinion (FCL/libccd) failed when asked again in a child process";
+        phase = in_second_opinion;
+      }
+    }
+    if (!f.crash.empty()) {
       // Rebuild what can be rebuilt without the party that died.
       if (phase != in_library) f.evaluation.library = ask_library(f.input);
       if (phase != in_exact && phase != in_library) f.evaluation.exact = exact->judge(f.input);
       if (phase == in_second_opinion) {
         for (const std::string& party : second->parties(kind)) {
-          f.evaluation.opinions.push_back({party, Opinion::Status::failed, {}, crash});
+          f.evaluation.opinions.push_back({party, Opinion::Status::failed, {}, f.crash});
         }
         f.evaluation.verdict = classify(kind, f.evaluation.library, f.evaluation.exact, f.evaluation.opinions);
         if (f.evaluation.verdict.cls != CaseClass::impl_bug) f.evaluation.verdict.cls = CaseClass::oracle_crash;
       } else {
         f.evaluation.verdict.cls = phase == in_library ? CaseClass::impl_bug : CaseClass::undecided;
-        f.evaluation.verdict.parties = {{"library", phase == in_library ? Standing::wrong : Standing::not_applicable, crash}};
+        f.evaluation.verdict.parties = {{"library", phase == in_library ? Standing::wrong : Standing::not_applicable, f.crash}};
       }
     }
     if (!crash.empty()) {

@@ -143,14 +143,43 @@ CaseFileError::CaseFileError(std::string file, std::string place, const std::str
       file_(std::move(file)),
       place_(std::move(place)) {}
 
-Json case_to_json(const Case& c) {
-  Json opinions = Json::array();
-  for (const Opinion& o : c.opinions) {
+Json opinions_to_json(const std::vector<Opinion>& opinions) {
+  Json out = Json::array();
+  for (const Opinion& o : opinions) {
     Json j = {{"party", o.party}, {"status", status_name(o.status)}};
     if (o.status == Opinion::Status::answered) write_answer(o.answer, j);
     if (!o.detail.empty()) j["detail"] = o.detail;
-    opinions.push_back(j);
+    out.push_back(j);
   }
+  return out;
+}
+
+std::vector<Opinion> opinions_from_json(const Json& opinions, const std::string& place) {
+  if (!opinions.is_array()) throw FormatError(place, "expected an array");
+  std::vector<Opinion> out;
+  for (std::size_t i = 0; i < opinions.size(); ++i) {
+    const std::string p = place + "/" + std::to_string(i);
+    Opinion o;
+    o.party = text(member(opinions[i], p, "party"), p + "/party");
+    const std::string status = text(member(opinions[i], p, "status"), p + "/status");
+    if (status == "answered") {
+      o.status = Opinion::Status::answered;
+      read_answer(opinions[i], p, o.answer);
+    } else if (status == "n/a") {
+      o.status = Opinion::Status::not_applicable;
+    } else if (status == "failed") {
+      o.status = Opinion::Status::failed;
+    } else {
+      throw FormatError(p + "/status", "expected \"answered\", \"n/a\" or \"failed\"");
+    }
+    o.detail = opinions[i].contains("detail") ? text(opinions[i]["detail"], p + "/detail") : "";
+    out.push_back(o);
+  }
+  return out;
+}
+
+Json case_to_json(const Case& c) {
+  const Json opinions = opinions_to_json(c.opinions);
   Json exact = answer_json(c.exact.answer);
   exact["contract"] = contract_name(c.exact.contract);
   exact["decided"] = c.exact.decided;
@@ -208,26 +237,7 @@ Case case_from_json(const Json& json, const std::filesystem::path& case_dir) {
   }
   c.exact.decided = exact.contains("decided") ? boolean(exact["decided"], "/answers/exact/decided") : true;
   c.exact.note = exact.contains("note") ? text(exact["note"], "/answers/exact/note") : "";
-  const Json& opinions = member(answers, "/answers", "oracles");
-  if (!opinions.is_array()) throw FormatError("/answers/oracles", "expected an array");
-  for (std::size_t i = 0; i < opinions.size(); ++i) {
-    const std::string p = "/answers/oracles/" + std::to_string(i);
-    Opinion o;
-    o.party = text(member(opinions[i], p, "party"), p + "/party");
-    const std::string status = text(member(opinions[i], p, "status"), p + "/status");
-    if (status == "answered") {
-      o.status = Opinion::Status::answered;
-      read_answer(opinions[i], p, o.answer);
-    } else if (status == "n/a") {
-      o.status = Opinion::Status::not_applicable;
-    } else if (status == "failed") {
-      o.status = Opinion::Status::failed;
-    } else {
-      throw FormatError(p + "/status", "expected \"answered\", \"n/a\" or \"failed\"");
-    }
-    o.detail = opinions[i].contains("detail") ? text(opinions[i]["detail"], p + "/detail") : "";
-    c.opinions.push_back(o);
-  }
+  c.opinions = opinions_from_json(member(answers, "/answers", "oracles"), "/answers/oracles");
   if (json.contains("provenance")) {
     const Json& p = json["provenance"];
     c.provenance.source = text(member(p, "/provenance", "source"), "/provenance/source");

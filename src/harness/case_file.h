@@ -49,6 +49,10 @@ class CaseFileError : public std::runtime_error {
 };
 
 Json case_to_json(const Case& c);
+/// The opinions as a case file stores them ("answers"/"oracles"), doubles exactly.
+Json opinions_to_json(const std::vector<Opinion>& opinions);
+/// Reads them back; throws FormatError naming the place (`place` is the array's JSON pointer).
+std::vector<Opinion> opinions_from_json(const Json& opinions, const std::string& place);
 /// Throws FormatError (with a JSON pointer) for a document that is not a valid case. Mesh files
 /// are looked for from case_dir (see find_mesh_file).
 Case case_from_json(const Json& json, const std::filesystem::path& case_dir = {});

@@ -1,6 +1,7 @@
 // The campaign's supervision: a second opinion that crashes or hangs on some cases costs the
 // campaign a worker, not the run; each such case is recorded as a finding and can be rebuilt. A
-// worker whose second opinion abandoned a call is replaced before its next case.
+// worker whose second opinion abandoned a call is replaced before its next case, and a finding's
+// second opinions are asked again in a child process, not in the campaign's own.
 #include "harness/campaign.h"
 
 #include <gtest/gtest.h>
@@ -106,6 +107,46 @@ TEST(Campaign, ReplacesAWorkerAfterAnAbandonedCall) {
   }
   EXPECT_GT(abandoned, 1);  // so workers were replaced and the campaign went on
   EXPECT_GT(r.tallies.at(QueryKind::aabb_aabb).cases, 5000u);
+}
+
+bool disagrees_on(const Input& in) { return fingerprint(in) % 499 == 5; }
+
+// Disagrees with the library on a few inputs, and crashes whenever it is asked in the process
+// that runs the campaign (the test's own).
+class CrashesInTheCampaignProcess final : public SecondOpinion {
+ public:
+  explicit CrashesInTheCampaignProcess(pid_t campaign) : campaign_(campaign) {}
+  std::vector<Opinion> opinions(const Input& in) const override {
+    if (::getpid() == campaign_) std::raise(SIGSEGV);
+    Answer a = ask_library(in);
+    if (disagrees_on(in)) a.hit = !a.hit;
+    return {{"fcl.AABBd::overlap", Opinion::Status::answered, a, ""}};
+  }
+  std::vector<std::string> parties(QueryKind) const override { return {"fcl.AABBd::overlap"}; }
+
+ private:
+  pid_t campaign_;
+};
+
+TEST(Campaign, AsksAFindingsSecondOpinionsAgainInAChildProcess) {
+  CampaignOptions options;
+  options.kinds = {QueryKind::aabb_aabb};
+  options.seconds = 1;
+  options.seed = 11;
+  options.workers = 2;
+  options.out_of_contract_percent = 0;
+  const pid_t self = ::getpid();
+  const Oracles oracles{[] { return std::make_unique<exact::ExactRationalReference>(); },
+                        [self] { return std::make_unique<CrashesInTheCampaignProcess>(self); }};
+  const CampaignResult r = run_campaign(options, oracles);
+  ASSERT_GT(r.findings.size(), 0u);
+  for (const Finding& f : r.findings) {
+    EXPECT_TRUE(f.crash.empty()) << f.crash;
+    EXPECT_TRUE(disagrees_on(f.input));
+    EXPECT_EQ(f.evaluation.verdict.cls, CaseClass::oracle_defect);
+    ASSERT_EQ(f.evaluation.opinions.size(), 1u);
+    EXPECT_NE(f.evaluation.opinions[0].answer.hit, f.evaluation.library.hit);  // as the child answered
+  }
 }
 
 }  // namespace
