@@ -7,14 +7,11 @@
 #include <unistd.h>
 
 #include <atomic>
-#include <cerrno>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
-#include <optional>
 #include <sstream>
 
-#include "harness/case_file.h"
 #include "harness/generate.h"
 #include "harness/library.h"
 
@@ -65,46 +62,6 @@ void write_line(int fd, const std::string& line) {
     const ssize_t n = ::write(fd, s.data() + done, s.size() - done);
     if (n <= 0) return;
     done += static_cast<std::size_t>(n);
-  }
-}
-
-// The second opinions on a finding's input, asked again in a child process: they crashed, hung
-// or were cut short on it (or on a case before it) in a worker, and the campaign's own process
-// must not be damaged by them. Returns nothing if the child did not answer.
-std::optional<std::vector<Opinion>> opinions_in_child(const Input& input, const SecondOpinion& second) {
-  int fds[2];
-  if (pipe(fds) != 0) return std::nullopt;
-  std::fflush(nullptr);
-  const pid_t pid = fork();
-  if (pid < 0) {
-    ::close(fds[0]), ::close(fds[1]);
-    return std::nullopt;
-  }
-  if (pid == 0) {
-    ::close(fds[0]);
-    std::vector<Opinion> opinions = library_alternatives(input);
-    for (Opinion& o : second.opinions(input)) opinions.push_back(std::move(o));
-    write_line(fds[1], opinions_to_json(opinions).dump());  // as case files store them, exactly
-    ::close(fds[1]);
-    std::_Exit(0);
-  }
-  ::close(fds[1]);
-  std::string text;
-  char chunk[65536];
-  for (ssize_t n; (n = ::read(fds[0], chunk, sizeof chunk)) != 0;) {
-    if (n < 0 && errno == EINTR) continue;
-    if (n < 0) break;
-    text.append(chunk, static_cast<std::size_t>(n));
-  }
-  ::close(fds[0]);
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) return std::nullopt;
-  try {
-    return opinions_from_json(Json::parse(text), "");
-  } catch (const std::exception&) {
-    return std::nullopt;
   }
 }
 
@@ -237,12 +194,9 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
     f.case_index = index;
     f.input = campaign_case(options.seed, kind, index, options.out_of_contract_percent, options.mesh_folder);
     f.crash = crash;
-    if (crash.empty()) {  // it returned in the worker: the same again, FCL in a child
-      if (auto opinions = opinions_in_child(f.input, *second)) {
-        f.evaluation.library = ask_library(f.input);
-        f.evaluation.exact = exact->judge(f.input);
-        f.evaluation.opinions = std::move(*opinions);
-        f.evaluation.verdict = classify(kind, f.evaluation.library, f.evaluation.exact, f.evaluation.opinions);
+    if (crash.empty()) {  // it returned in the worker: the same again, first in a child
+      if (auto e = evaluate_in_child(f.input, *exact, *second)) {
+        f.evaluation = std::move(*e);
       } else {
         f.crash = "the second opinion (FCL/libccd) failed when asked again in a child process";
         phase = in_second_opinion;

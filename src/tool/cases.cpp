@@ -1,8 +1,5 @@
 #include "tool/cases.h"
 
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -18,23 +15,24 @@ namespace cc::tool {
 
 using namespace harness;
 
-Evaluation evaluate_with_oracles(const Input& input) {
-  static const exact::ExactRationalReference exact;
-  static const fcl_oracle::FclSecondOpinion second;
-  return evaluate(input, exact, &second);
+namespace {
+
+const exact::ExactRationalReference& exact_reference() {
+  static const exact::ExactRationalReference reference;
+  return reference;
 }
 
+const fcl_oracle::FclSecondOpinion& fcl_opinions() {
+  static const fcl_oracle::FclSecondOpinion opinions;
+  return opinions;
+}
+
+}  // namespace
+
+Evaluation evaluate_with_oracles(const Input& input) { return evaluate(input, exact_reference(), &fcl_opinions()); }
+
 Evaluation evaluate_surviving_crashes(const Input& input) {
-  std::fflush(nullptr);
-  const pid_t child = ::fork();
-  if (child == 0) {
-    evaluate_with_oracles(input);
-    std::_Exit(0);
-  }
-  int status = 0;
-  if (child > 0 && ::waitpid(child, &status, 0) == child && WIFEXITED(status) && WEXITSTATUS(status) == 0) {
-    return evaluate_with_oracles(input);
-  }
+  if (auto e = evaluate_in_child(input, exact_reference(), fcl_opinions())) return *e;
   Evaluation e;
   e.verdict.cls = CaseClass::oracle_crash;
   e.verdict.parties = {{"library", Standing::not_applicable, "an oracle crashed on this input (in a child process)"}};

@@ -15,8 +15,9 @@ namespace cc::tool {
 
 /// The three answers to an input, from the library, the exact reference and FCL/libccd.
 harness::Evaluation evaluate_with_oracles(const harness::Input& input);
-/// The same, first run in a child process: an input on which an oracle crashes (FCL's managers
-/// and libccd can) evaluates to an oracle_crash instead of ending the caller, e.g. a shrink.
+/// The same through harness::evaluate_in_child: an input on which a party crashes or is cut
+/// short (FCL's managers and libccd can) evaluates to an oracle_crash instead of ending or
+/// damaging the caller, e.g. a shrink.
 harness::Evaluation evaluate_surviving_crashes(const harness::Input& input);
 
 /// A case holding an input and its evaluation.

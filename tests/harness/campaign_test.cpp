@@ -21,6 +21,16 @@ std::size_t fingerprint(const Input& in) { return std::hash<std::string>{}(input
 bool crashes_on(const Input& in) { return fingerprint(in) % 3001 == 0; }
 bool hangs_on(const Input& in) { return fingerprint(in) % 4999 == 7; }
 
+// An aabb_aabb campaign on two workers, against the exact reference and `second`.
+template <class Second, class... Args>
+CampaignResult aabb_campaign(CampaignOptions options, Args... args) {
+  options.kinds = {QueryKind::aabb_aabb};
+  options.workers = 2;
+  const Oracles oracles{[] { return std::make_unique<exact::ExactRationalReference>(); },
+                        [=] { return std::make_unique<Second>(args...); }};
+  return run_campaign(options, oracles);
+}
+
 // Answers like FCL's AABB test, but crashes or hangs on a few inputs.
 class Unreliable final : public SecondOpinion {
  public:
@@ -34,14 +44,10 @@ class Unreliable final : public SecondOpinion {
 
 TEST(Campaign, SurvivesCrashesAndHangsInAnOracle) {
   CampaignOptions options;
-  options.kinds = {QueryKind::aabb_aabb};
   options.seconds = 3;
   options.seed = 5;
-  options.workers = 2;
   options.case_timeout_seconds = 0.3;
-  const Oracles oracles{[] { return std::make_unique<exact::ExactRationalReference>(); },
-                        [] { return std::make_unique<Unreliable>(); }};
-  const CampaignResult r = run_campaign(options, oracles);
+  const CampaignResult r = aabb_campaign<Unreliable>(options);
 
   int crashes = 0, hangs = 0;
   for (const Finding& f : r.findings) {
@@ -90,14 +96,10 @@ class DamagedAfterAbandoning final : public SecondOpinion {
 
 TEST(Campaign, ReplacesAWorkerAfterAnAbandonedCall) {
   CampaignOptions options;
-  options.kinds = {QueryKind::aabb_aabb};
   options.seconds = 2;
   options.seed = 9;
-  options.workers = 2;
   options.out_of_contract_percent = 0;
-  const Oracles oracles{[] { return std::make_unique<exact::ExactRationalReference>(); },
-                        [] { return std::make_unique<DamagedAfterAbandoning>(); }};
-  const CampaignResult r = run_campaign(options, oracles);
+  const CampaignResult r = aabb_campaign<DamagedAfterAbandoning>(options);
   // Only the abandoned cases are findings: no case ran in a worker after its abandoned call.
   int abandoned = 0;
   for (const Finding& f : r.findings) {
@@ -130,15 +132,10 @@ class CrashesInTheCampaignProcess final : public SecondOpinion {
 
 TEST(Campaign, AsksAFindingsSecondOpinionsAgainInAChildProcess) {
   CampaignOptions options;
-  options.kinds = {QueryKind::aabb_aabb};
   options.seconds = 1;
   options.seed = 11;
-  options.workers = 2;
   options.out_of_contract_percent = 0;
-  const pid_t self = ::getpid();
-  const Oracles oracles{[] { return std::make_unique<exact::ExactRationalReference>(); },
-                        [self] { return std::make_unique<CrashesInTheCampaignProcess>(self); }};
-  const CampaignResult r = run_campaign(options, oracles);
+  const CampaignResult r = aabb_campaign<CrashesInTheCampaignProcess>(options, ::getpid());
   ASSERT_GT(r.findings.size(), 0u);
   for (const Finding& f : r.findings) {
     EXPECT_TRUE(f.crash.empty()) << f.crash;
