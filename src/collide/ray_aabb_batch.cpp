@@ -39,7 +39,7 @@ inline bool one_box(const PreparedRay& r, const AabbSoa& b, std::size_t i) {
   for (int a = 0; a < 3; ++a) {
     ok &= box_in_contract(lo[a], hi[a]);
     if ((P >> a) & 1) {
-      ok &= (r.ray.origin[a] >= lo[a]) & (r.ray.origin[a] <= hi[a]);
+      ok &= r.ray.origin[a] >= lo[a] && r.ray.origin[a] <= hi[a];
       continue;
     }
     enter = std::max(enter, ((r.negative[a] ? hi[a] : lo[a]) - r.ray.origin[a]) * r.inv_scaled[a]);

@@ -28,7 +28,8 @@ struct Case {
 class Metamorphic : public ::testing::TestWithParam<Case> {};
 
 TEST_P(Metamorphic, TheAnswerIsUnchanged) {
-  const auto [kind, relation] = GetParam();
+  const QueryKind kind = GetParam().kind;
+  const Relation relation = GetParam().relation;  // not a structured binding: the lambda below captures it
   const exact::ExactRationalReference exact;
   const std::string property = std::string(name(kind)) + ": " + std::string(to_string(relation));
   Met met;
