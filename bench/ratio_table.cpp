@@ -125,19 +125,17 @@ void broadphase_rows(const Results& r, std::vector<Row>& rows) {
   const std::size_t sizes[] = {1000, 10000, 100000};
   for (std::size_t n : sizes) {
     const std::string base = "broadphase/" + std::to_string(n) + "/";
-    // Against the incremental sweep where it ran, else against the full re-sort.
-    const char* lib = find(r, base + "lib_incremental") ? "lib_incremental" : "lib_resort";
-    const auto inc = find(r, base + lib);
+    const auto inc = find(r, base + "lib_incremental");
     if (!inc) continue;
     for (const char* other : {"fcl_sap", "fcl_dyntree", "lib_resort"}) {
       const auto o = find(r, base + other);
-      if (!o || std::string(other) == lib) continue;
-      Row row = row_of("broadphase", base + other + " vs " + lib, "ms/frame", inc->ns_per_item / 1e6,
+      if (!o) continue;
+      Row row = row_of("broadphase", base + other + " vs lib_incremental", "ms/frame", inc->ns_per_item / 1e6,
               o->ns_per_item / 1e6);
       row.ratio = row.fcl / row.library;
       row.note = "pairs: " + std::to_string(static_cast<long long>(counter(*inc, "pairs"))) + " / " +
                  std::to_string(static_cast<long long>(counter(*o, "pairs")));
-      if (n == 10000 && std::string(other) == "fcl_sap" && std::string(lib) == "lib_incremental") ratio_target(row, 3);
+      if (n == 10000 && std::string(other) == "fcl_sap") ratio_target(row, 3);
       rows.push_back(row);
     }
   }

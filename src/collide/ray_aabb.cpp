@@ -62,7 +62,6 @@ PreparedRay::PreparedRay(const Ray& given) : ray(given) {
     } else {
       subnormal |= 1 << i;
     }
-    inv[i] = 1.0 / ray.dir[i];
   }
 }
 
@@ -94,7 +93,8 @@ RayHit intersect_ray_aabb(const PreparedRay& r, const Aabb& box) {
   double t_enter = r.ray.tmin, t_exit = r.ray.tmax;
   for (int i = 0; i < 3; ++i) {
     if (((r.parallel >> i) & 1) || (nears[i] != enter && fars[i] != exit)) continue;
-    const double lo = (box.lo[i] - r.ray.origin[i]) * r.inv[i], hi = (box.hi[i] - r.ray.origin[i]) * r.inv[i];
+    const double inv = 1.0 / r.ray.dir[i];  // here only: most boxes miss
+    const double lo = (box.lo[i] - r.ray.origin[i]) * inv, hi = (box.hi[i] - r.ray.origin[i]) * inv;
     if (nears[i] == enter) t_enter = std::max(t_enter, std::min(lo, hi));
     if (fars[i] == exit) t_exit = std::min(t_exit, std::max(lo, hi));
   }

@@ -52,7 +52,6 @@ struct PreparedRay {
   int subnormal = 0;          // bit i: scaled, dir[i] is subnormal (its slab in long double)
   bool negative[3] = {false, false, false};  // dir[i] < 0: the slab's near bound is its upper one
   double inv_scaled[3] = {0, 0, 0};          // 1 / scaled dir[i]
-  double inv[3] = {0, 0, 0};                 // 1 / dir[i], for the parameters reported
 };
 
 /// The same answer as intersect_ray_aabb(ray.ray, box), with the ray's work done once.
