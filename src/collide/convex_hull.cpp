@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <numeric>
 #include <optional>
+#include <tuple>
 
 extern "C" {
 #include <libqhull_r/qhull_ra.h>
@@ -64,13 +65,84 @@ std::optional<ConvexHull> qhull_3d(std::span<const Vec3> points) {
 
 double cross2(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 
-// Points that span at most a plane: the polygon by a monotone chain in the plane, fanned into
-// triangles on both sides; every point counts as a vertex (a superset of the extreme points).
+// Exact arithmetic for the collinear case, on sums of doubles (an error-free product gives a
+// product as two doubles, an error-free sum a sum).
+std::pair<double, double> two_sum(double a, double b) {
+  const double s = a + b, bb = s - a;
+  return {s, (a - (s - bb)) + (b - bb)};
+}
+
+// Whether the exact sum of the terms is 0: the terms are added one by one into an expansion
+// (doubles that do not overlap, by increasing magnitude, whose exact sum is that of the terms
+// so far), which sums to 0 exactly when every one of its doubles is 0.
+bool sums_to_zero(std::span<const double> terms) {
+  std::vector<double> expansion;
+  for (double q : terms) {
+    for (double& e : expansion) std::tie(q, e) = two_sum(q, e);
+    expansion.push_back(q);
+  }
+  return std::all_of(expansion.begin(), expansion.end(), [](double e) { return e == 0; });
+}
+
+// Whether a, b and p lie on one line, exactly: cross(a, b) + cross(b, p) + cross(p, a) = 0 (it
+// is cross(b - a, p - a)). The points come scaled by a power of two so that no product
+// overflows; nothing when a product is too small to be split exactly into two doubles (never
+// when every nonzero coordinate is at least 2^-900 of the largest, scaled to 2^500 or more:
+// every product is then at least 2^-800).
+std::optional<bool> collinear_exactly(const Vec3& a, const Vec3& b, const Vec3& p) {
+  for (int k = 0; k < 3; ++k) {
+    const int i = (k + 1) % 3, j = (k + 2) % 3;
+    const double factors[6][2] = {{a[i], b[j]}, {-a[j], b[i]}, {b[i], p[j]}, {-b[j], p[i]}, {p[i], a[j]}, {-p[j], a[i]}};
+    std::array<double, 12> terms;
+    for (int t = 0; t < 6; ++t) {
+      const double x = factors[t][0], y = factors[t][1], product = x * y;
+      if (x != 0 && y != 0 && !(std::fabs(product) >= 0x1p-960)) return std::nullopt;
+      terms[2 * t] = product, terms[2 * t + 1] = std::fma(x, y, -product);
+    }
+    if (!sums_to_zero(terms)) return false;
+  }
+  return true;
+}
+
+// Coincident points: the first; collinear ones (exactly): the least and the greatest in
+// lexicographic order, which along a line are its two ends. Nothing for other points (or when
+// collinearity cannot be decided exactly).
+std::optional<std::vector<Index>> segment_ends(std::span<const Vec3> points) {
+  const auto before = [&](Index i, Index j) {
+    const Vec3 &p = points[i], &q = points[j];
+    return p.x != q.x ? p.x < q.x : (p.y != q.y ? p.y < q.y : p.z < q.z);
+  };
+  Index least = 0, greatest = 0;
+  double largest = 0;
+  for (Index i = 0; i < points.size(); ++i) {
+    if (before(i, least)) least = i;
+    if (before(greatest, i)) greatest = i;
+    largest = std::max(largest, max_abs(points[i]));
+  }
+  if (!before(least, greatest)) return std::vector<Index>{least};
+  // Scaled so that the largest coordinate lies in [2^500, 2^501): products stay below 2^1002.
+  const int scale = 500 - fp::exponent_of(largest);
+  std::vector<Vec3> scaled;
+  for (const Vec3& p : points) {
+    const Vec3 s{fp::scale2(p.x, scale), fp::scale2(p.y, scale), fp::scale2(p.z, scale)};
+    if (fp::scale2(s.x, -scale) != p.x || fp::scale2(s.y, -scale) != p.y || fp::scale2(s.z, -scale) != p.z) {
+      return std::nullopt;  // scaling down lost a subnormal's bits
+    }
+    scaled.push_back(s);
+  }
+  for (const Vec3& p : scaled) {
+    if (collinear_exactly(scaled[least], scaled[greatest], p) != true) return std::nullopt;
+  }
+  return std::vector<Index>{least, greatest};
+}
+
+// Points that span a plane (not a line): the polygon by a monotone chain in the plane, fanned
+// into triangles on both sides; every point counts as a vertex (a superset of the extreme
+// points).
 ConvexHull planar_hull(std::span<const Vec3> points) {
   ConvexHull hull;
   hull.vertices.resize(points.size());
   std::iota(hull.vertices.begin(), hull.vertices.end(), Index{0});
-  if (points.size() < 3) return hull;
 
   // A frame of the plane: the farthest point from the first, then the normal of largest size
   // that a third point makes with them.
@@ -87,11 +159,7 @@ ConvexHull planar_hull(std::span<const Vec3> points) {
     const Vec3 n = cross(e1, points[i] - p0);
     if (norm1(n) > off) off = norm1(n), normal = n;
   }
-  if (far == 0 || off == 0) {  // coincident or collinear: no area
-    hull.vertices = {0};
-    if (far > 0) hull.vertices.push_back(static_cast<Index>(i1));
-    return hull;
-  }
+  if (far == 0 || off == 0) return hull;  // nearly collinear, too nearly for a frame: no area
   const Vec3 e2 = cross(normal, e1);
   struct Planar {
     double u, v;
@@ -129,9 +197,11 @@ ConvexHull planar_hull(std::span<const Vec3> points) {
 }  // namespace
 
 ConvexHull convex_hull(std::span<const Vec3> points) {
+  if (points.empty()) return {};
   if (points.size() >= 4) {
     if (auto hull = qhull_3d(points)) return *hull;
   }
+  if (auto ends = segment_ends(points)) return {{}, std::move(*ends)};
   return planar_hull(points);
 }
 

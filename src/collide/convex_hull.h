@@ -16,9 +16,14 @@ namespace cc {
 ///    the hull is a polygon; `triangles` covers it twice, once per side, so that area-weighted
 ///    sums over the boundary are those of the polygon counted twice.
 ///  - Collinear or coincident points, or fewer than three: no triangles.
-/// `vertices` holds every point on the hull's boundary at least once (for flat input it may hold
-/// points inside the polygon too); for collinear input, the two extreme points; for coincident
-/// input, one point. Extremes of any linear function over the points are reached at `vertices`.
+/// `vertices` holds every extreme point of the set (every vertex of its exact convex hull) at
+/// least once, so the hull of `vertices` holds every point in exact arithmetic and the extremes
+/// of any linear function over the points are reached at `vertices`. It may hold points on the
+/// boundary or near it too (for flat input, every point). Exactly collinear points give exactly
+/// the two ends (the least and the greatest in lexicographic order), coincident points one
+/// point, no points none. (Points so nearly collinear that no plane through them can be
+/// computed give every point and no triangles; so do collinear points with a nonzero
+/// coordinate below 2^-900 of the largest, where collinearity is not decided exactly.)
 /// Points must be finite.
 struct ConvexHull {
   std::vector<std::array<std::uint32_t, 3>> triangles;

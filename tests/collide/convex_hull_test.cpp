@@ -53,5 +53,32 @@ TEST(ConvexHull, CollinearAndCoincidentPointsHaveNoArea) {
   EXPECT_TRUE(convex_hull(std::vector<Vec3>{}).vertices.empty());
 }
 
+std::vector<std::uint32_t> sorted_vertices(std::span<const Vec3> p) {
+  std::vector<std::uint32_t> v = convex_hull(p).vertices;
+  std::sort(v.begin(), v.end());
+  return v;
+}
+
+TEST(ConvexHull, CollinearPointsGiveTheTwoEndsWhereverTheyAre) {
+  // The first point lies between the ends: they are points 1 and 2, not 0 and the farthest.
+  EXPECT_EQ(sorted_vertices(std::vector<Vec3>{{1, 1, 1}, {0, 0, 0}, {3, 3, 3}}), (std::vector<std::uint32_t>{1, 2}));
+  EXPECT_EQ(sorted_vertices(std::vector<Vec3>{{2, -1, 0}, {1, 0, 0}, {0, 1, 0}, {4, -3, 0}, {3, -2, 0}}),
+            (std::vector<std::uint32_t>{2, 3}));
+  // Along z only, with the ends given last; two coincident points are one.
+  EXPECT_EQ(sorted_vertices(std::vector<Vec3>{{5, 5, 0.5}, {5, 5, 0.25}, {5, 5, -1}, {5, 5, 2}}),
+            (std::vector<std::uint32_t>{2, 3}));
+  EXPECT_EQ(convex_hull(std::vector<Vec3>{{0, 1, 2}, {0, 1, 2}}).vertices.size(), 1u);
+  // Far from the origin, where the differences round: still exactly the ends.
+  const double big = 0x1p60;
+  EXPECT_EQ(sorted_vertices(std::vector<Vec3>{{big + 2048, 1, -big}, {big, 0.5, -big - 1024}, {big + 4096, 1.5, -big + 1024}}),
+            (std::vector<std::uint32_t>{1, 2}));
+}
+
+TEST(ConvexHull, NearlyCollinearPointsKeepThePointOffTheLine) {
+  // The middle point is one ulp off the line: it is a vertex of the (very thin) triangle.
+  const std::vector<Vec3> p = {{0, 0, 0}, {1, 1, std::nextafter(1.0, 2.0)}, {3, 3, 3}};
+  EXPECT_EQ(sorted_vertices(p), (std::vector<std::uint32_t>{0, 1, 2}));
+}
+
 }  // namespace
 }  // namespace cc
