@@ -52,6 +52,21 @@ TEST(Classify, FailedAndInapplicableOpinions) {
   EXPECT_EQ(classify(QueryKind::ray_aabb, {true, {1, 2}, {}, {}}, exact(true, 0.1, {1, 2}), {na}).cls, CaseClass::agree);
 }
 
+TEST(Classify, ALibraryPartyWithoutParametersIsJudgedOnItsHitAlone) {
+  const Opinion batched{"library.test_ray_aabbs", Opinion::Status::answered, {true, {}, {}, {}}, ""};
+  EXPECT_EQ(classify(QueryKind::ray_aabb, {true, {1, 2}, {}, {}}, exact(true, 0.1, {1, 2}), {batched}).cls,
+            CaseClass::agree);
+  const Opinion misses{"library.test_ray_aabbs", Opinion::Status::answered, {false, {}, {}, {}}, ""};
+  EXPECT_EQ(classify(QueryKind::ray_aabb, {true, {1, 2}, {}, {}}, exact(true, 0, {1, 2}), {misses}).cls,
+            CaseClass::impl_bug);
+  const Opinion wrong_t{"library.test_ray_aabbs", Opinion::Status::answered, {true, {1, 2.001}, {}, {}}, ""};
+  EXPECT_EQ(classify(QueryKind::ray_aabb, {true, {1, 2}, {}, {}}, exact(true, 0.1, {1, 2}), {wrong_t}).cls,
+            CaseClass::impl_bug);
+  const Opinion failed{"library.test_ray_aabbs", Opinion::Status::failed, {}, "the avx2 kernel says hit"};
+  EXPECT_EQ(classify(QueryKind::ray_aabb, {true, {1, 2}, {}, {}}, exact(true, 0.1, {1, 2}), {failed}).cls,
+            CaseClass::impl_bug);
+}
+
 TEST(Classify, RayParametersMustBeWithinTheirBand) {
   EXPECT_EQ(classify(QueryKind::ray_aabb, {true, {1, 2}, {}, {}}, exact(true, 0.1, {1, 2 + 0x1p-51}), {}).cls,
             CaseClass::agree);
