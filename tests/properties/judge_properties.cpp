@@ -6,9 +6,8 @@
 //    the exact windows computed here (of the boxes, and of the boxes grown by the band): the
 //    nearest doubles on the allowed side, not one ulp further;
 //  - ray_mesh's t: the range of the exact verdict, whose upper end is the exact first point
-//    rounded up;
-//  - the margins: a hit apart by the band's width is within it, one ulp further it is wrong; a
-//    miss of touching shapes is wrong for a conservative party; a mesh pair the same way.
+//    rounded up.
+// (The margins' bands are checked the same way in tests/harness/classify_test.cpp.)
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
@@ -153,66 +152,6 @@ TEST(Judge, ARayMeshTOneUlpPastItsRangeIsWrong) {
   });
   EXPECT_TRUE(passed);
   EXPECT_GT(checked, 30);
-}
-
-// The margins: for every query kind and every party's band, a disagreement exactly at the band's
-// width is within it and one ulp further is wrong; a conservative party missing touching shapes
-// is wrong. (Exact bands: any disagreement is wrong.)
-TEST(Judge, MarginsOneUlpPastTheBandAreWrong) {
-  int checked = 0;
-  for (const auto& [name_of_band, band] : all_bands()) {
-    const bool library = name_of_band.starts_with("library ");
-    // The library's band on its own kind; a second opinion's on a kind it answers.
-    std::vector<QueryKind> kinds;
-    for (QueryKind kind : kAllQueryKinds) {
-      if (library && name_of_band == "library " + std::string(name(kind))) kinds.push_back(kind);
-    }
-    if (!library) kinds.push_back(name_of_band.starts_with("fcl.BVHModel") ? QueryKind::mesh_mesh : QueryKind::obb_obb);
-    for (QueryKind kind : kinds) {
-      if (kind == QueryKind::broadphase) continue;  // judged by exact comparisons of boxes, not margins
-      ++checked;
-      const bool meshes = is_mesh_query(kind) || kind == QueryKind::ray_mesh;
-      const std::string party = library ? "library" : name_of_band;
-      // The verdict: apart (or, for pairs, a pair apart) at margin m; the party says hit there.
-      const auto standing_at = [&](double m, bool says_hit, bool exact_hit) {
-        ExactVerdict v;
-        v.answer.hit = exact_hit;
-        v.margin = m;
-        Answer said{says_hit, {}, {}, {}};
-        if (meshes) {
-          const FacePair pair{1, 2};
-          v.pair_margins = {{pair, m}};
-          v.unlisted_margin = -1;
-          if (exact_hit) v.answer.pairs = {pair};
-          if (says_hit) said.pairs = {pair};
-        }
-        if (library) return classify(kind, said, v, {}).parties[0].standing;
-        Answer right{exact_hit, {}, v.answer.pairs, {}};
-        return classify(kind, right, v, {{party, Opinion::Status::answered, said, ""}}).parties[1].standing;
-      };
-      const std::string what = party + " on " + std::string(name(kind));
-      const double w = band.width;
-      switch (band.sides) {
-        case BandSides::exact:
-          EXPECT_EQ(standing_at(-0x1p-1074, true, false), Standing::wrong) << what;
-          EXPECT_EQ(standing_at(0, false, true), Standing::wrong) << what;
-          break;
-        case BandSides::conservative:
-          EXPECT_EQ(standing_at(-w, true, false), Standing::within_band) << what;
-          EXPECT_EQ(standing_at(std::nextafter(-w, -1.0), true, false), Standing::wrong) << what;
-          EXPECT_EQ(standing_at(0, false, true), Standing::wrong) << what << ": a miss of touching shapes";
-          EXPECT_EQ(standing_at(-0x1p-1074, false, false), Standing::right) << what;
-          break;
-        case BandSides::two_sided:
-          EXPECT_EQ(standing_at(-w, true, false), Standing::within_band) << what;
-          EXPECT_EQ(standing_at(std::nextafter(-w, -1.0), true, false), Standing::wrong) << what;
-          EXPECT_EQ(standing_at(w, false, true), Standing::within_band) << what;
-          EXPECT_EQ(standing_at(std::nextafter(w, 1.0), false, true), Standing::wrong) << what;
-          break;
-      }
-    }
-  }
-  EXPECT_EQ(checked, static_cast<int>(all_bands().size()) - 1);  // every band but broadphase's
 }
 
 }  // namespace
