@@ -6,7 +6,9 @@
 #include <stdexcept>
 
 #include "collide/box_pairs.h"
+#include "collide/collision_world.h"
 #include "collide/kdop.h"
+#include "collide/ray_aabb_batch.h"
 #include "collide/sweep_and_prune.h"
 #include "collide/triangle_box.h"
 #include "collide/triangle_triangle.h"
@@ -152,6 +154,62 @@ std::optional<Aabb> exact_aabb(const MovingObb& m) {
   return box;
 }
 
+// ray_aabb through the batched test: the case's box at place 3 of 11 (in a vector block of 8
+// or 4) and at place 10 (in the scalar tail: 11 = 8 + 3 = 2 * 4 + 3), the other places holding
+// boxes made from it (moved by its size, inverted, a point at a corner, NaN, unbounded), each
+// answered by every kernel this processor runs. The answer is the hit they all give; a kernel or
+// a place that differs from the scalar test on any box is a failure (an impl_bug).
+Answer batched_ray(const RayAabbInput& in) {
+  const Aabb& box = in.box;
+  const Vec3 size = box.hi - box.lo;
+  const Aabb fillers[9] = {{box.lo + Vec3{size.x, 0, 0}, box.hi + Vec3{size.x, 0, 0}},
+                           {box.lo - Vec3{0, size.y, 0}, box.hi - Vec3{0, size.y, 0}},
+                           {box.hi, box.lo},
+                           {box.lo, box.lo},
+                           {box.hi, box.hi},
+                           {{box.lo.x, NAN, box.lo.z}, box.hi},
+                           {box.lo, {box.hi.x, box.hi.y, INFINITY}},
+                           {box.lo + Vec3{0, 0, size.z}, box.hi + Vec3{0, 0, size.z}},
+                           {{-box.hi.x, box.lo.y, box.lo.z}, {-box.lo.x, box.hi.y, box.hi.z}}};
+  constexpr std::size_t kInBlock = 3, kInTail = 10, kBoxes = 11;
+  AabbSoa boxes;
+  for (std::size_t i = 0, f = 0; i < kBoxes; ++i) boxes.push_back(i == kInBlock || i == kInTail ? box : fillers[f++]);
+  std::vector<std::uint8_t> hits(kBoxes);
+  for (simd::Kernel kernel : simd::supported_kernels()) {
+    test_ray_aabbs(in.ray, boxes, hits, kernel);
+    for (std::size_t i = 0; i < kBoxes; ++i) {
+      const bool scalar = intersect_ray_aabb(in.ray, boxes[i]).hit;
+      if (hits[i] != (scalar ? 1 : 0)) {
+        throw std::logic_error("the " + std::string(simd::to_string(kernel)) + " kernel says " +
+                               (hits[i] ? "hit" : "miss") + " for box " + std::to_string(i) + " of " +
+                               std::to_string(kBoxes) + (i == kInBlock || i == kInTail ? " (the case's)" : "") +
+                               ", intersect_ray_aabb " + (scalar ? "hit" : "miss"));
+      }
+    }
+  }
+  return answer(hits[kInBlock] != 0);
+}
+
+// mesh_mesh through the two-level pipeline: both meshes as objects of a CollisionWorld, boxed
+// by fitted_box (refit) or bounding_cube, sweep-and-prune, then collide() on the candidate; the
+// pairs of the contact, as (face of a, face of b).
+Answer world_pairs(const MeshPair& m, RotationBounds bounds) {
+  const CollideOptions options{CollisionMode::all_pairs, m.library.update, m.library.descent};
+  return with_bv_type(m.library.bv, [&]<class BV>() {
+    CollisionWorld<BV> world(bounds, options);
+    const ObjectId a = world.add(m.a.mesh, cached_bvh<BV>(m.a.mesh, m.library.build), m.pose_a);
+    world.add(m.b.mesh, cached_bvh<BV>(m.b.mesh, m.library.build), m.pose_b);
+    world.broad_phase();
+    Answer out;
+    for (const ObjectContact& c : world.narrow_phase()) {
+      for (const auto& [i, j] : c.triangles) out.pairs.push_back(c.objects.first == a ? FacePair{i, j} : FacePair{j, i});
+    }
+    std::sort(out.pairs.begin(), out.pairs.end());
+    out.hit = !out.pairs.empty();
+    return out;
+  });
+}
+
 template <class F>
 Opinion guarded(std::string party, F f) {
   Opinion o{std::move(party), Opinion::Status::answered, {}, ""};
@@ -176,6 +234,14 @@ std::vector<Opinion> library_alternatives(const Input& input) {
     return {guarded("library.ray_mesh_any",
                     [&] { return ray_answer(library_ray_mesh(in->mesh.mesh, in->library, in->ray, true), false); }),
             guarded("library.ray_mesh_brute_force", [&] { return ray_answer(ray_mesh_brute_force(*in->mesh.mesh, in->ray), true); })};
+  }
+  if (const auto* in = std::get_if<RayAabbInput>(&input)) {
+    return {guarded("library.test_ray_aabbs", [&] { return batched_ray(*in); })};
+  }
+  if (const auto* in = std::get_if<MeshMeshInput>(&input)) {
+    return {guarded("library.collision_world(refit)", [&] { return world_pairs(in->meshes, RotationBounds::refit); }),
+            guarded("library.collision_world(cube)",
+                    [&] { return world_pairs(in->meshes, RotationBounds::bounding_cube); })};
   }
   if (const auto* in = std::get_if<MovingObbInput>(&input)) {
     const auto a = exact_aabb(in->a), b = exact_aabb(in->b);
