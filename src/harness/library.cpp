@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "collide/box_pairs.h"
+#include "collide/column_sweep.h"
 #include "collide/kdop.h"
 #include "collide/sweep_and_prune.h"
 #include "collide/triangle_box.h"
@@ -28,6 +29,7 @@ Answer answer(bool hit) {
 
 Answer ray_answer(const RayMeshHit& h, bool with_t);
 Answer sweep_answer(const SweepHit& h);
+template <class Broadphase>
 Answer incremental(const BroadphaseInput& in);
 
 struct Ask {
@@ -58,7 +60,7 @@ struct Ask {
   Answer operator()(const MeshMeshInput& in) const { return pairs(in.meshes, CollisionMode::all_pairs); }
   Answer operator()(const MeshMeshFirstInput& in) const { return pairs(in.meshes, CollisionMode::first_hit); }
 
-  Answer operator()(const BroadphaseInput& in) const { return incremental(in); }
+  Answer operator()(const BroadphaseInput& in) const { return incremental<ColumnSweep>(in); }
   Answer operator()(const RayMeshInput& in) const { return ray_answer(library_ray_mesh(in.mesh.mesh, in.library, in.ray, false), true); }
   Answer operator()(const MovingObbInput& in) const { return sweep_answer(sweep_obb_obb(in.a, in.b)); }
 
@@ -91,12 +93,14 @@ std::vector<FacePair> slot_pairs(const std::vector<ObjectPair>& pairs, const std
   return out;
 }
 
-// Incremental sweep-and-prune over the frames: boxes added, moved and removed as the slots say.
-// A box outside the domain makes add() or move() throw: the documented answer is then no hit.
+// A broadphase (ColumnSweep, SweepAndPrune) over the frames: boxes added, moved and removed as
+// the slots say. A box outside the domain makes add() or move() throw: the documented answer is
+// then no hit.
+template <class Broadphase>
 Answer incremental(const BroadphaseInput& in) {
   Answer a;
   try {
-    SweepAndPrune sap;
+    Broadphase sap;
     std::map<std::size_t, ObjectId> id_of;   // slot -> id of its box
     std::vector<std::uint32_t> slot_of;      // id -> slot
     for (const auto& frame : in.frames) {
@@ -170,7 +174,8 @@ Answer ask_library(const Input& input) { return std::visit(Ask{}, input); }
 
 std::vector<Opinion> library_alternatives(const Input& input) {
   if (const auto* in = std::get_if<BroadphaseInput>(&input)) {
-    return {guarded("library.sort_and_sweep", [&] { return full_sorts(*in); })};
+    return {guarded("library.sweep_and_prune", [&] { return incremental<SweepAndPrune>(*in); }),
+            guarded("library.sort_and_sweep", [&] { return full_sorts(*in); })};
   }
   if (const auto* in = std::get_if<RayMeshInput>(&input)) {
     return {guarded("library.ray_mesh_any",
