@@ -100,24 +100,24 @@ template <class Broadphase>
 Answer incremental(const BroadphaseInput& in) {
   Answer a;
   try {
-    Broadphase sap;
+    Broadphase broadphase;
     std::map<std::size_t, ObjectId> id_of;   // slot -> id of its box
     std::vector<std::uint32_t> slot_of;      // id -> slot
     for (const auto& frame : in.frames) {
       for (std::size_t i = 0; i < frame.size(); ++i) {
         const auto it = id_of.find(i);
         if (frame[i] && it == id_of.end()) {
-          id_of[i] = sap.add(*frame[i]);
+          id_of[i] = broadphase.add(*frame[i]);
           slot_of.push_back(static_cast<std::uint32_t>(i));
         } else if (frame[i]) {
-          sap.move(it->second, *frame[i]);
+          broadphase.move(it->second, *frame[i]);
         } else if (it != id_of.end()) {
-          sap.remove(it->second);
+          broadphase.remove(it->second);
           id_of.erase(it);
         }
       }
-      sap.update();
-      a.frames.push_back(slot_pairs(sap.pairs(), slot_of));
+      broadphase.update();
+      a.frames.push_back(slot_pairs(broadphase.pairs(), slot_of));
       a.hit |= !a.frames.back().empty();
     }
   } catch (const std::invalid_argument&) {
