@@ -118,10 +118,10 @@ void ColumnSweep::make_fresh() {
 }
 
 // One pass over the array: the entries of boxes leaving their columns are dropped, the others
-// get their current boxes, the fresh entries are merged in, and each entry is sorted into place
-// by insertion (O(entries + swaps)). Kept entries keep their columns and the array was sorted by
-// column, so a column is complete when the pass reaches the next one: it is swept then, while
-// it is in the cache.
+// get their boxes' current lower x bounds, the fresh entries are merged in, and each entry is
+// sorted into place by insertion (O(entries + swaps)). Kept entries keep their columns and the
+// array was sorted by column, so a column is complete when the pass reaches the next one: it is
+// swept then, while it is in the cache.
 void ColumnSweep::resort_and_sweep() {
   found_count_ = 0;
   merged_.resize(entries_.size() + fresh_.size());
