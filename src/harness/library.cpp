@@ -7,6 +7,7 @@
 
 #include "collide/box_pairs.h"
 #include "collide/collision_world.h"
+#include "collide/column_sweep.h"
 #include "collide/kdop.h"
 #include "collide/ray_aabb_batch.h"
 #include "collide/sweep_and_prune.h"
@@ -30,6 +31,7 @@ Answer answer(bool hit) {
 
 Answer ray_answer(const RayMeshHit& h, bool with_t);
 Answer sweep_answer(const SweepHit& h);
+template <class Broadphase>
 Answer incremental(const BroadphaseInput& in);
 
 struct Ask {
@@ -60,7 +62,7 @@ struct Ask {
   Answer operator()(const MeshMeshInput& in) const { return pairs(in.meshes, CollisionMode::all_pairs); }
   Answer operator()(const MeshMeshFirstInput& in) const { return pairs(in.meshes, CollisionMode::first_hit); }
 
-  Answer operator()(const BroadphaseInput& in) const { return incremental(in); }
+  Answer operator()(const BroadphaseInput& in) const { return incremental<ColumnSweep>(in); }
   Answer operator()(const RayMeshInput& in) const { return ray_answer(library_ray_mesh(in.mesh.mesh, in.library, in.ray, false), true); }
   Answer operator()(const MovingObbInput& in) const { return sweep_answer(sweep_obb_obb(in.a, in.b)); }
 
@@ -93,29 +95,31 @@ std::vector<FacePair> slot_pairs(const std::vector<ObjectPair>& pairs, const std
   return out;
 }
 
-// Incremental sweep-and-prune over the frames: boxes added, moved and removed as the slots say.
-// A box outside the domain makes add() or move() throw: the documented answer is then no hit.
+// A broadphase (ColumnSweep, SweepAndPrune) over the frames: boxes added, moved and removed as
+// the slots say. A box outside the domain makes add() or move() throw: the documented answer is
+// then no hit.
+template <class Broadphase>
 Answer incremental(const BroadphaseInput& in) {
   Answer a;
   try {
-    SweepAndPrune sap;
+    Broadphase broadphase;
     std::map<std::size_t, ObjectId> id_of;   // slot -> id of its box
     std::vector<std::uint32_t> slot_of;      // id -> slot
     for (const auto& frame : in.frames) {
       for (std::size_t i = 0; i < frame.size(); ++i) {
         const auto it = id_of.find(i);
         if (frame[i] && it == id_of.end()) {
-          id_of[i] = sap.add(*frame[i]);
+          id_of[i] = broadphase.add(*frame[i]);
           slot_of.push_back(static_cast<std::uint32_t>(i));
         } else if (frame[i]) {
-          sap.move(it->second, *frame[i]);
+          broadphase.move(it->second, *frame[i]);
         } else if (it != id_of.end()) {
-          sap.remove(it->second);
+          broadphase.remove(it->second);
           id_of.erase(it);
         }
       }
-      sap.update();
-      a.frames.push_back(slot_pairs(sap.pairs(), slot_of));
+      broadphase.update();
+      a.frames.push_back(slot_pairs(broadphase.pairs(), slot_of));
       a.hit |= !a.frames.back().empty();
     }
   } catch (const std::invalid_argument&) {
@@ -228,7 +232,8 @@ Answer ask_library(const Input& input) { return std::visit(Ask{}, input); }
 
 std::vector<Opinion> library_alternatives(const Input& input) {
   if (const auto* in = std::get_if<BroadphaseInput>(&input)) {
-    return {guarded("library.sort_and_sweep", [&] { return full_sorts(*in); })};
+    return {guarded("library.sweep_and_prune", [&] { return incremental<SweepAndPrune>(*in); }),
+            guarded("library.sort_and_sweep", [&] { return full_sorts(*in); })};
   }
   if (const auto* in = std::get_if<RayMeshInput>(&input)) {
     return {guarded("library.ray_mesh_any",
