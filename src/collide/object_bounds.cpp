@@ -3,26 +3,38 @@
 #include <algorithm>
 #include <cmath>
 
-namespace cc {
+#include "collide/bound_records.h"
 
-double rotation_radius(const Mesh& mesh) {
+namespace cc {
+namespace {
+
+template <class Records>
+double radius(const Mesh& mesh, Records& records) {
   double r = 0;
-  for (const Vec3& v : mesh.vertices) r = std::max(r, std::sqrt(dot(v, v)));
-  return r * (1 + 0x1p-50);  // dot and sqrt round by less than 2^-51 in all
+  for (const Vec3& v : mesh.vertices) {
+    const double root = std::sqrt(dot(v, v));
+    records.add(bounds::RadiusRoot{v, root, root * (1 + bounds::kRadiusRounding)});
+    r = std::max(r, root);
+  }
+  return r * (1 + bounds::kRadiusRounding);  // dot and sqrt round by less than 2^-51 in all
 }
 
-Aabb bounding_cube(double radius, const RigidTransform& pose) {
-  const double pad = radius * (1 + 0x1p-40) + transform_error_bound(pose, 3 * radius);
+template <class Records>
+Aabb cube(double radius, const RigidTransform& pose, Records& records) {
+  const bounds::TransformBound transform{3 * radius, max_abs(pose.translation)};
+  const double pad = radius * (1 + bounds::kCubeOrthonormality) + transform.total();
   const Vec3 half{pad, pad, pad};
   Aabb box{pose.translation - half, pose.translation + half};
   for (int k = 0; k < 3; ++k) {  // the sums above round to nearest: step outward
     box.lo[k] = std::nextafter(box.lo[k], -INFINITY);
     box.hi[k] = std::nextafter(box.hi[k], INFINITY);
   }
+  records.add(bounds::Cube{radius, pose, transform, box});
   return box;
 }
 
-Aabb fitted_box(const Mesh& mesh, const RigidTransform& pose) {
+template <class Records>
+Aabb fitted(const Mesh& mesh, const RigidTransform& pose, Records& records) {
   if (mesh.vertices.empty()) return {pose.translation, pose.translation};
   Aabb box{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
   double reach = 0;
@@ -31,12 +43,46 @@ Aabb fitted_box(const Mesh& mesh, const RigidTransform& pose) {
     reach = std::max(reach, norm1(v));
     for (int k = 0; k < 3; ++k) box.lo[k] = std::min(box.lo[k], p[k]), box.hi[k] = std::max(box.hi[k], p[k]);
   }
-  const double pad = transform_error_bound(pose, reach) * (1 + 0x1p-50);
+  const bounds::TransformBound transform{reach, max_abs(pose.translation)};
+  if constexpr (std::is_same_v<Records, bounds::Records>) {  // each placement, as apply() computes it
+    for (const Vec3& v : mesh.vertices) {
+      const Vec3 rotated = pose.rotation * v;
+      records.add(bounds::Placement{pose, v, rotated, rotated + pose.translation, transform});
+    }
+  }
+  const double pad = transform.total() * (1 + 0x1p-50);
   for (int k = 0; k < 3; ++k) {
     box.lo[k] = std::nextafter(box.lo[k] - pad, -INFINITY);
     box.hi[k] = std::nextafter(box.hi[k] + pad, INFINITY);
   }
   return box;
+}
+
+}  // namespace
+
+double rotation_radius(const Mesh& mesh) {
+  bounds::NoRecords none;
+  return radius(mesh, none);
+}
+
+double rotation_radius(const Mesh& mesh, bounds::Records& records) { return radius(mesh, records); }
+
+Aabb bounding_cube(double radius, const RigidTransform& pose) {
+  bounds::NoRecords none;
+  return cube(radius, pose, none);
+}
+
+Aabb bounding_cube(double radius, const RigidTransform& pose, bounds::Records& records) {
+  return cube(radius, pose, records);
+}
+
+Aabb fitted_box(const Mesh& mesh, const RigidTransform& pose) {
+  bounds::NoRecords none;
+  return fitted(mesh, pose, none);
+}
+
+Aabb fitted_box(const Mesh& mesh, const RigidTransform& pose, bounds::Records& records) {
+  return fitted(mesh, pose, records);
 }
 
 }  // namespace cc
