@@ -19,7 +19,8 @@ namespace cc::bounds {
 /// upper(t) whenever |t - t*| <= rounding(t), t* being its exact value. Multiplicative, so that
 /// a parameter that overflowed to +-inf stays infinite (an additive pad would give inf - inf).
 struct Widening {
-  double relative;  // of |t|
+  const char* name;  // what t is, e.g. "slab parameter"
+  double relative;   // of |t|
   /// The term: how far t may be from its exact value, outside the subnormal range.
   double rounding(double t) const { return relative * std::fabs(t); }
   double lower(double t) const { return (t > 0 ? t * (1 - relative) : t * (1 + relative)) - fp::subnormal_slack; }
@@ -29,19 +30,19 @@ struct Widening {
 /// intersect_ray_aabb (and test_ray_aabbs, and the box entries of ray_mesh): a slab parameter
 /// (bound - origin) * (1 / dir) carries three roundings, at most 3.000001u relative; 8u also
 /// covers the rounding of the widened value itself.
-inline constexpr Widening kRaySlab{8 * fp::u};
+inline constexpr Widening kRaySlab{"slab parameter", 8 * fp::u};
 
 /// intersect_ray_triangle: a slab bound over a speed, one division.
-inline constexpr Widening kRayTriangleParameter{4 * fp::u};
+inline constexpr Widening kRayTriangleParameter{"triangle parameter", 4 * fp::u};
 
 /// ray_mesh's volume entries: intersect_ray_aabb's 4 ulps, or a subtraction and a division.
-inline constexpr Widening kRayVolumeEntry{16 * fp::u};
+inline constexpr Widening kRayVolumeEntry{"volume entry", 16 * fp::u};
 
 /// sweep_obb_obb: a time (+-reach - projection) / rate, two roundings (2.0001u).
-inline constexpr Widening kSweepObbTime{4 * fp::u};
+inline constexpr Widening kSweepObbTime{"obb time", 4 * fp::u};
 
 /// sweep_aabb_aabb: a time (a.lo - b.hi) / (vb - va), three roundings (3.000001u).
-inline constexpr Widening kSweepAabbTime{8 * fp::u};
+inline constexpr Widening kSweepAabbTime{"aabb time", 8 * fp::u};
 
 /// test_sphere_sphere: dist2 - reach2 (the squared offset and the squared sum of the radii, both
 /// scaled to [1, 4)) is certified against total().
