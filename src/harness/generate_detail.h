@@ -2,6 +2,7 @@
 #pragma once
 
 #include "harness/generate.h"
+#include "harness/margin_bisection.h"
 #include "harness/values.h"
 
 namespace cc::harness::detail {
@@ -33,5 +34,48 @@ Vec3 draw_boundary_point(ValueSource& values, const Aabb& box);
 Obb draw_obb(ValueSource& values, const GenerateOptions& options);
 /// A triangle: generic, or degenerate (a segment, a point).
 Triangle draw_triangle(ValueSource& values);
+
+// The regimes of the certified error bounds, for the bound-reaching constructions
+// (generate_regimes.cpp).
+
+/// A length: 2^k for k in [-20, 20], or a generic multiple of one.
+double draw_size(ValueSource& values);
+/// Half extents with aspect ratios up to 2^40 (size on some axes, down to size 2^-40 on
+/// others), sometimes 0 (flat boxes, segments, points).
+Vec3 draw_aspect_extents(ValueSource& values, double size);
+/// A generic direction, not normalised (components up to 2 in magnitude, some 0).
+Vec3 draw_direction(ValueSource& values);
+/// A translation up to 2^40 times `size` in a generic direction (or none).
+Vec3 draw_far_offset(ValueSource& values, double size);
+/// The rotation with its axes moved off orthonormal by half to three quarters of
+/// kObbOrthonormalTolerance (every entry of the Gram matrix), inside the tolerance.
+Mat3 perturb_to_tolerance(ValueSource& values, const Mat3& rotation);
+/// `base` turned by an angle of 2^-8 to 2^-52 about a generic axis: nearly parallel axes.
+Mat3 nearly_parallel(ValueSource& values, const Mat3& base);
+/// Two boxes with a common centre in the regimes of test_obb_obb's bound: aspect ratios up to
+/// 2^40, sizes up to 2^40 apart, far from the origin, frames at the orthonormality tolerance or
+/// nearly parallel (generate_boxes.cpp).
+ObbObbInput obb_pair_in_regime(ValueSource& values);
+/// A direction to slide b along: a face normal of either box, an edge-edge axis, or any.
+Vec3 slide_direction(ValueSource& values, const Obb& a, const Obb& b);
+/// The half width of the box's projection onto w (w not normalised).
+double reach_along(const Obb& box, const Vec3& w);
+/// The triangle's vertices in one of their six orders.
+void shuffle_vertices(Choices& choices, Triangle& t);
+
+/// Where a bound-reaching construction is placed: an exact margin (ExactVerdict units) and the
+/// side of it. Mostly touching (0, either side), else apart or overlapping by 2^-40 to 2^-53 of
+/// the scale: a small multiple of the library's error bounds, both signs.
+struct MarginTarget {
+  double margin;
+  Side side;
+};
+MarginTarget draw_margin_target(Choices& choices);
+
+/// The parameter of `family` at the target margin, from a case that overlaps (s_overlap) and one
+/// that is apart (s_apart), by exact bisection with options.exact; `fallback` without it or when
+/// no crossing is found.
+double place_at(const Family& family, double s_overlap, double s_apart, const MarginTarget& target,
+                const GenerateOptions& options, double fallback);
 
 }  // namespace cc::harness::detail

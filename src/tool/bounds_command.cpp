@@ -40,6 +40,7 @@ int run(const BoundsArgs& args) {
   const exact::ExactRationalReference exact;
   harness::GenerateOptions options;
   options.mesh_folder = harness::mesh_folder(args.corpora);
+  options.exact = &exact;
   harness::BoundCoverage coverage;
   std::printf("crosscheck bounds: seed %llu, %d cases per primitive query kind (a twentieth for meshes)\n\n",
               static_cast<unsigned long long>(args.seed), args.cases);

@@ -32,7 +32,7 @@ TEST_P(Differential, TheLibraryIsNeverAnImplBug) {
     if (e.verdict.cls == CaseClass::impl_bug) {
       RC_FAIL("impl_bug: " + e.verdict.parties[0].why + "\n  inputs: " + input_to_json(input).dump());
     }
-  });
+  }, &exact);
   EXPECT_TRUE(passed) << property;
   expect_met_the_boundary(property, kind, met);
 }

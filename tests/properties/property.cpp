@@ -44,13 +44,15 @@ void Met::count(const harness::Features& f) {
 }
 
 bool check_property(const std::string& name, harness::QueryKind kind, int out_of_contract_percent, int cases,
-                    Met& met, const std::function<void(const harness::Input&)>& body) {
+                    Met& met, const std::function<void(const harness::Input&)>& body,
+                    const harness::ExactReference* exact) {
   (void)met;
   return run(name, cases, [&] {
     const auto choices = *rc::gen::container<std::vector<std::uint64_t>>(kChoices, rc::gen::arbitrary<std::uint64_t>());
     harness::ReplayChoices replay(choices);
     harness::GenerateOptions options;
     options.mesh_folder = fcl_mesh_folder();
+    options.exact = exact;
     options.out_of_contract = replay.chance(out_of_contract_percent);
     body(harness::generate(kind, replay, options));
   });

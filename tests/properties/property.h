@@ -22,9 +22,11 @@ struct Met {
 
 /// Runs `body` on generated queries of one kind; true if it never failed. `met` collects the
 /// features the body reports. The options are drawn per case: out of contract with the given
-/// percentage.
+/// percentage. With `exact`, the generators place their bound-reaching constructions at exact
+/// margins (GenerateOptions::exact).
 bool check_property(const std::string& name, harness::QueryKind kind, int out_of_contract_percent, int cases,
-                    Met& met, const std::function<void(const harness::Input&)>& body);
+                    Met& met, const std::function<void(const harness::Input&)>& body,
+                    const harness::ExactReference* exact = nullptr);
 
 /// The same for a body that makes its own input from the choices.
 bool check_property_with_choices(const std::string& name, int cases,
