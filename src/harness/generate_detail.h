@@ -34,6 +34,9 @@ Vec3 draw_boundary_point(ValueSource& values, const Aabb& box);
 Obb draw_obb(ValueSource& values, const GenerateOptions& options);
 /// A triangle: generic, or degenerate (a segment, a point).
 Triangle draw_triangle(ValueSource& values);
+/// A triangle touching the box at one vertex (a corner, a point of an edge or of a face) or a few
+/// ULPs off it on one axis, its other vertices outside the box, away from its centre.
+Triangle triangle_touching_at_a_vertex(ValueSource& values, const Aabb& box);
 
 // The regimes of the certified error bounds, for the bound-reaching constructions
 // (generate_regimes.cpp).

@@ -23,18 +23,29 @@ Vec3 outward_from(ValueSource& v, const Aabb& box, const Vec3& p) {
   return q;
 }
 
+}  // namespace
+
+Triangle triangle_touching_at_a_vertex(ValueSource& v, const Aabb& box) {
+  Triangle t;
+  t.v[0] = draw_boundary_point(v, box);
+  t.v[1] = outward_from(v, box, t.v[0]);
+  t.v[2] = v.choices().chance(30) ? t.v[1] : outward_from(v, box, t.v[0]);
+  if (v.choices().chance(30)) {  // a few ULPs off the boundary on one axis
+    const int k = static_cast<int>(v.choices().draw(3));
+    t.v[0][k] = v.nudge(t.v[0][k]);
+  }
+  shuffle_vertices(v.choices(), t);
+  return t;
+}
+
+namespace {
+
 // A triangle against the box [box.lo, box.hi] (in the box's own frame).
 Triangle triangle_near_box(ValueSource& v, const Aabb& box) {
   Triangle t;
   switch (v.choices().draw(5)) {
     case 0: return draw_triangle(v);
-    case 1: {  // touching at a vertex (a corner, or a point of an edge or a face), or just off it
-      t.v[0] = draw_boundary_point(v, box);
-      t.v[1] = outward_from(v, box, t.v[0]);
-      t.v[2] = v.choices().chance(30) ? t.v[1] : outward_from(v, box, t.v[0]);
-      if (v.choices().chance(30)) t.v[0][static_cast<int>(v.choices().draw(3))] = v.nudge(t.v[0][0]);
-      return t;
-    }
+    case 1: return triangle_touching_at_a_vertex(v, box);  // at a corner, an edge, a face, or just off it
     case 2: {  // in the plane of a face (or a few ULPs off it)
       const int k = static_cast<int>(v.choices().draw(3));
       const double plane = v.choices().chance(50) ? box.lo[k] : box.hi[k];
