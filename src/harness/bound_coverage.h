@@ -35,12 +35,13 @@ struct TermCoverage {
   std::string test;      // the library's test, e.g. "obb_obb"
   std::string quantity;  // what it certifies, e.g. "axis" (ExactReference's family)
   std::string term;      // a term of the bound, or "total" (the whole bound)
-  double closest = 0;    // the largest error / term over the quantities counted (0: none)
-  long quantities = 0;   // quantities counted: at their decision (a total: every one)
+  double closest = 0;    // the closest approach: the largest error / term at a decision (0: none)
+  long quantities = 0;   // quantities at their decision (a total: every one)
   long cases = 0;        // cases that had one
-  std::string closest_case;  // the inputs (JSON) of the case with the closest approach
+  double largest = 0;    // the largest error / term anywhere: above 1, the term does not hold
+  std::string closest_case, largest_case;  // the inputs (JSON) of the cases that gave them
 
-  /// A term: approached within kApproachFactor. A total: never exceeded.
+  /// A term: approached within kApproachFactor, and never exceeded. A total: never exceeded.
   bool ok() const;
 };
 
@@ -52,11 +53,18 @@ struct ExpectedTerm {
 };
 std::span<const ExpectedTerm> expected_terms();
 
+/// What one case added to the table.
+struct CaseCoverage {
+  bool measured = false;  // in the library's domain (others are skipped)
+  double largest = 0;     // its largest error / term (or / total): above 1, a bound fails on it
+  std::string where;      // the test, quantity and term of that
+};
+
 /// The coverage table over the cases added so far.
 class BoundCoverage {
  public:
-  /// Measures one case (in the library's domain: others are skipped and return false).
-  bool add(const Input& input, const ExactReference& exact);
+  /// Measures one case.
+  CaseCoverage add(const Input& input, const ExactReference& exact);
   /// Every expected row of the kinds given (all when empty), measured or not, then any other.
   std::vector<TermCoverage> rows(std::span<const QueryKind> kinds = {}) const;
 

@@ -87,8 +87,54 @@ AabbAabbInput generate_aabb_aabb(ValueSource& v, const GenerateOptions& options)
   return in;
 }
 
-KdopKdopInput generate_kdop_kdop(ValueSource& v, const GenerateOptions&) {
-  static constexpr int kKs[] = {18, 6, 14, 16, 24, 26};
+namespace {
+
+constexpr int kKs[] = {18, 6, 14, 16, 24, 26};
+
+// Two point sets at an exact margin in the regimes of fit_kdop's bound: clusters far from the
+// origin compared with their spread (where 2- and 3-term projections cancel), spreads up to 2^40
+// apart; b slid from a's centre along a slab's direction or any.
+KdopKdopInput kdops_at_the_bound(ValueSource& v, const GenerateOptions& options) {
+  Choices& c = v.choices();
+  KdopKdopInput in;
+  in.k = kKs[c.draw(6)];
+  const double size = draw_size(v);
+  const Vec3 center = v.point() + draw_far_offset(v, size);
+  const auto cluster = [&](double spread) {
+    std::vector<Vec3> points;
+    const auto n = 1 + c.draw(6);
+    for (std::uint64_t i = 0; i < n; ++i) points.push_back(center + std::ldexp(spread, -static_cast<int>(c.draw(41))) * draw_direction(v));
+    return points;
+  };
+  in.a = cluster(size);
+  const std::vector<Vec3> b = cluster(std::ldexp(size, v.small_int(20)));
+  const auto dirs = kdop_directions(in.k);
+  Vec3 w = draw_direction(v);
+  if (c.chance(60)) {
+    const KdopDirection d = dirs[c.draw(dirs.size())];
+    w = {static_cast<double>(d.x), static_cast<double>(d.y), static_cast<double>(d.z)};
+  }
+  double reach = 0;
+  for (const Vec3& p : in.a) reach = std::max(reach, std::fabs(dot(p - center, w)));
+  for (const Vec3& p : b) reach = std::max(reach, std::fabs(dot(p - center, w)));
+  const auto placed = [&in, &b, &w](double s) {
+    KdopKdopInput out = in;
+    for (const Vec3& p : b) out.b.push_back(p + s * w);
+    return out;
+  };
+  const double contact = 2 * reach / dot(w, w);
+  const double s = place_at([&placed](double t) -> Input { return placed(t); }, 0, 2 * contact + 1 / std::sqrt(dot(w, w)),
+                            draw_margin_target(c), options, contact);
+  KdopKdopInput out = placed(s);
+  shuffle(c, out.a);
+  shuffle(c, out.b);
+  return out;
+}
+
+}  // namespace
+
+KdopKdopInput generate_kdop_kdop(ValueSource& v, const GenerateOptions& options) {
+  if (v.choices().chance(35)) return kdops_at_the_bound(v, options);
   KdopKdopInput in;
   in.k = kKs[v.choices().draw(6)];
   const Vec3 center = v.point();
@@ -108,6 +154,8 @@ KdopKdopInput generate_kdop_kdop(ValueSource& v, const GenerateOptions&) {
       cluster(in.b);
       shift_to_touch(in, v, v.choices().chance(25));
   }
+  shuffle(v.choices(), in.a);
+  shuffle(v.choices(), in.b);
   return in;
 }
 

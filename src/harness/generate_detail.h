@@ -1,6 +1,9 @@
 // The per-kind generators behind generate() (internal to the harness).
 #pragma once
 
+#include <utility>
+#include <vector>
+
 #include "harness/generate.h"
 #include "harness/margin_bisection.h"
 #include "harness/values.h"
@@ -50,8 +53,11 @@ Vec3 draw_aspect_extents(ValueSource& values, double size);
 Vec3 draw_direction(ValueSource& values);
 /// A translation up to 2^40 times `size` in a generic direction (or none).
 Vec3 draw_far_offset(ValueSource& values, double size);
-/// The rotation with its axes moved off orthonormal by half to three quarters of
-/// kObbOrthonormalTolerance (every entry of the Gram matrix), inside the tolerance.
+/// Whether the matrix's axes are orthonormal to within kObbOrthonormalTolerance, checked in
+/// floating point with room for that check's rounding.
+bool within_tolerance(const Mat3& m);
+/// The rotation with its axes moved off orthonormal by 0.5 to 0.7 of kObbOrthonormalTolerance
+/// (every entry of the Gram matrix), inside the tolerance.
 Mat3 perturb_to_tolerance(ValueSource& values, const Mat3& rotation);
 /// `base` turned by an angle of 2^-8 to 2^-52 about a generic axis: nearly parallel axes.
 Mat3 nearly_parallel(ValueSource& values, const Mat3& base);
@@ -65,6 +71,18 @@ Vec3 slide_direction(ValueSource& values, const Obb& a, const Obb& b);
 double reach_along(const Obb& box, const Vec3& w);
 /// The triangle's vertices in one of their six orders.
 void shuffle_vertices(Choices& choices, Triangle& t);
+/// A triangle in the regimes of the triangle tests' bounds, of about the given size, about the
+/// plane of the first two columns of `frame` (its first edge along the first column): a sliver of
+/// aspect ratio up to 2^40, in that plane, tilted out of it by 2^-8 to 2^-52 (nearly coplanar,
+/// nearly parallel edges), or at any angle; its vertices in any order (generate_triangles.cpp).
+Triangle triangle_in_regime(ValueSource& values, double size, const Mat3& frame);
+/// The triangle moved by `by`.
+Triangle translated(const Triangle& t, const Vec3& by);
+/// The items in any order (the constructions build them in a fixed one).
+template <class T>
+void shuffle(Choices& choices, std::vector<T>& items) {
+  for (std::size_t i = items.size(); i > 1; --i) std::swap(items[i - 1], items[choices.draw(i)]);
+}
 
 /// Where a bound-reaching construction is placed: an exact margin (ExactVerdict units) and the
 /// side of it. Mostly touching (0, either side), else apart or overlapping by 2^-40 to 2^-53 of

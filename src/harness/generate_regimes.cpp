@@ -52,11 +52,21 @@ Vec3 draw_far_offset(ValueSource& v, double size) {
   return std::ldexp(size, static_cast<int>(c.draw(41))) * draw_direction(v);
 }
 
+bool within_tolerance(const Mat3& m) {
+  // The Gram matrix as computed is within 2.5u of exact (columns of length about 1).
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      if (std::fabs(dot(m.col[i], m.col[j]) - (i == j ? 1.0 : 0.0)) > kObbOrthonormalTolerance - 3 * fp::u) return false;
+    }
+  }
+  return true;
+}
+
 Mat3 perturb_to_tolerance(ValueSource& v, const Mat3& rotation) {
   Choices& c = v.choices();
   // R (I + e/2 P) for a symmetric sign pattern P: the Gram matrix is I + e P + O(e^2), plus R's own
-  // rounding (a few u), with e in [1/2, 3/4] of the tolerance.
-  const double e = kObbOrthonormalTolerance * (0.5 + 0.25 * static_cast<double>(c.draw(1024)) / 1024);
+  // rounding (a few u), with e in [0.5, 0.7] of the tolerance.
+  const double e = kObbOrthonormalTolerance * (0.5 + 0.2 * static_cast<double>(c.draw(1024)) / 1024);
   Mat3 s;
   for (int i = 0; i < 3; ++i) {
     for (int j = i; j < 3; ++j) {
@@ -67,13 +77,7 @@ Mat3 perturb_to_tolerance(ValueSource& v, const Mat3& rotation) {
   }
   Mat3 out;
   for (int j = 0; j < 3; ++j) out.col[j] = rotation * s.col[j];
-  // Kept only if its Gram matrix, as computed (within 4u), is within the tolerance by more than 8u.
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) {
-      if (std::fabs(dot(out.col[i], out.col[j]) - (i == j ? 1.0 : 0.0)) > kObbOrthonormalTolerance - 8 * fp::u) return rotation;
-    }
-  }
-  return out;
+  return within_tolerance(out) ? out : rotation;
 }
 
 Mat3 nearly_parallel(ValueSource& v, const Mat3& base) {
@@ -89,7 +93,7 @@ Mat3 nearly_parallel(ValueSource& v, const Mat3& base) {
 }
 
 void shuffle_vertices(Choices& c, Triangle& t) {
-  for (std::size_t i = 2; i > 0; --i) std::swap(t.v[i], t.v[c.draw(i + 1)]);
+  for (std::size_t i = 3; i > 1; --i) std::swap(t.v[i - 1], t.v[c.draw(i)]);
 }
 
 MarginTarget draw_margin_target(Choices& c) {
@@ -105,7 +109,8 @@ MarginTarget draw_margin_target(Choices& c) {
 double place_at(const Family& family, double s_overlap, double s_apart, const MarginTarget& target,
                 const GenerateOptions& options, double fallback) {
   if (options.exact == nullptr) return fallback;
-  return bisect_to_margin(family, s_overlap, s_apart, target.margin, target.side, *options.exact).value_or(fallback);
+  // A few dozen judgements place most cases on adjacent parameters; the rest end a little further.
+  return bisect_to_margin(family, s_overlap, s_apart, target.margin, target.side, *options.exact, 32).value_or(fallback);
 }
 
 }  // namespace cc::harness::detail

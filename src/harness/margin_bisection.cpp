@@ -42,6 +42,7 @@ class Search {
     return v.margin - target_;
   }
   Input at(double s) const { return family_(s); }
+  bool exhausted() const { return budget_ <= 0; }
 
  private:
   const Family& family_;
@@ -114,6 +115,7 @@ std::optional<double> bisect_to_margin(const Family& family, double s0, double s
         }
       }
     }
+    if (search.exhausted()) break;  // the ends are on their sides, only not adjacent
     // The family rounds: a parameter may give an end's very case, which needs no judgement.
     Input input = search.at(m);
     if (input == a.input || input == b.input) {

@@ -24,8 +24,9 @@ enum class Side {
 /// A parameter s at which the exact margin of family(s) crosses `target` (ExactVerdict::margin
 /// units: relative to the inputs' scale): of two adjacent doubles, one on each side, the one on
 /// `side`. The search starts from s0 and s1 (a first step; the crossing may lie anywhere) and
-/// asks the reference at most `max_judgements` times. Nothing when no crossing is found, or a
-/// case leaves the domain or cannot be decided.
+/// asks the reference at most `max_judgements` times; out of judgements with the crossing
+/// bracketed, it returns the end of the bracket on `side`. Nothing when no crossing is found, or
+/// a case leaves the domain or cannot be decided.
 std::optional<double> bisect_to_margin(const Family& family, double s0, double s1, double target, Side side,
                                        const ExactReference& exact, int max_judgements = 64);
 

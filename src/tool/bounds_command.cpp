@@ -61,10 +61,17 @@ int run(const BoundsArgs& args) {
   nlohmann::json rows_json = nlohmann::json::array();
   for (const harness::TermCoverage& row : rows) {
     ok &= row.ok();
-    rows_json.push_back({{"test", row.test},           {"quantity", row.quantity}, {"term", row.term},
-                         {"closest", row.closest},     {"quantities", row.quantities},
-                         {"cases", row.cases},         {"ok", row.ok()},
-                         {"closest_case", row.closest_case.empty() ? nlohmann::json() : nlohmann::json::parse(row.closest_case)}});
+    const auto inputs = [](const std::string& json) { return json.empty() ? nlohmann::json() : nlohmann::json::parse(json); };
+    rows_json.push_back({{"test", row.test},
+                         {"quantity", row.quantity},
+                         {"term", row.term},
+                         {"closest", row.closest},
+                         {"quantities", row.quantities},
+                         {"cases", row.cases},
+                         {"largest", row.largest},
+                         {"ok", row.ok()},
+                         {"closest_case", inputs(row.closest_case)},
+                         {"largest_case", inputs(row.largest_case)}});
   }
   if (!args.json.empty()) {
     std::ofstream out(args.json);

@@ -57,8 +57,10 @@ TEST(BoundCoverage, KeepsTheClosestApproachAndFlagsTermsNeverApproachedOrExceede
   const double rounding = 64 * fp::u;
   EXPECT_TRUE(coverage.add(kObbCase, Fixed({{"axis", "rounding", rounding / 4, rounding},
                                            {"axis", "frame", 0x1p-70, 0x1p-45},
-                                           {"axis", "total", rounding / 4, rounding + 0x1p-45}})));
-  EXPECT_TRUE(coverage.add(kObbCase, Fixed({{"axis", "rounding", rounding / 2, rounding}})));
+                                           {"axis", "total", rounding / 4, rounding + 0x1p-45}})).measured);
+  const CaseCoverage second = coverage.add(kObbCase, Fixed({{"axis", "rounding", rounding / 2, rounding}}));
+  EXPECT_EQ(second.largest, 0.5);
+  EXPECT_EQ(second.where, "test_obb_obb axis rounding");
   const QueryKind obb[] = {QueryKind::obb_obb};
   auto rows = coverage.rows(obb);
   ASSERT_EQ(rows.size(), 3u);  // the expected rows of obb_obb, in order
@@ -70,12 +72,17 @@ TEST(BoundCoverage, KeepsTheClosestApproachAndFlagsTermsNeverApproachedOrExceede
   EXPECT_TRUE(row(rows, "axis", "total").ok());
   EXPECT_NE(format_coverage(rows).find("never approached"), std::string::npos);
 
-  // A term that does not cover its error, and a bound that does not hold.
-  EXPECT_TRUE(coverage.add(kObbCase, Fixed({{"axis", "frame", 0x1p-40, 0}, {"axis", "total", 2, 1}})));
+  // A term that does not cover its error (even where it cannot decide), and a bound that does
+  // not hold.
+  TermError off{"axis", "rounding", 2 * rounding, rounding};
+  off.decisive = false;
+  EXPECT_EQ(coverage.add(kObbCase, Fixed({off})).largest, 2);
+  EXPECT_FALSE(coverage.rows(obb)[0].ok());
+  EXPECT_EQ(coverage.add(kObbCase, Fixed({{"axis", "frame", 0x1p-40, 0}, {"axis", "total", 2, 1}})).largest, INFINITY);
   rows = coverage.rows(obb);
   EXPECT_FALSE(row(rows, "axis", "frame").ok());
   EXPECT_FALSE(row(rows, "axis", "total").ok());
-  EXPECT_NE(row(rows, "axis", "total").closest_case.find("center"), std::string::npos);  // its inputs
+  EXPECT_NE(row(rows, "axis", "total").largest_case.find("center"), std::string::npos);  // its inputs
   EXPECT_NE(format_coverage(rows).find("EXCEEDED"), std::string::npos);
 }
 
@@ -100,8 +107,8 @@ TEST(BoundCoverage, CountsATermOnlyAtTheDecisionAndErrorsBeyondTheSubnormalAllow
 TEST(BoundCoverage, SkipsCasesOutsideTheDomain) {
   BoundCoverage coverage;
   const exact::ExactRationalReference exact;
-  EXPECT_FALSE(coverage.add(ObbObbInput{{{NAN, 0, 0}, {1, 1, 1}, {}}, {}}, exact));
-  EXPECT_TRUE(coverage.add(kObbCase, exact));
+  EXPECT_FALSE(coverage.add(ObbObbInput{{{NAN, 0, 0}, {1, 1, 1}, {}}, {}}, exact).measured);
+  EXPECT_TRUE(coverage.add(kObbCase, exact).measured);
 }
 
 TEST(BoundCoverage, NamesTheTestOfEachQuantity) {
