@@ -258,7 +258,7 @@ class Measure {
     const double length = std::sqrt(to_double(length2));
     // |root - |v|| = |root^2 - |v|^2| / (root + |v|), to double precision.
     const double error = r.root + length > 0 ? magnitude(rational(r.root) * rational(r.root) - length2) / (r.root + length) : 0;
-    term("radius", "rounding", error, r.root * bounds::kRadiusRounding, r.root == largest_root);
+    term("radius", "rounding", error, r.padded - r.root, r.root == largest_root);
     const bool reaches = rational(r.padded) * rational(r.padded) >= length2;
     term("radius", "total", reaches ? error : INFINITY, r.padded - r.root);
   }
@@ -270,7 +270,9 @@ class Measure {
   void operator()(const bounds::Cube& c, const std::vector<bounds::RadiusRoot>& roots,
                   const std::vector<bounds::Placement>& placements) {
     const RigidTransform& t = c.pose;
-    if (!std::isfinite(c.radius) || !finite_vec(c.cube.lo) || !finite_vec(c.cube.hi) || !finite_vec(t.translation)) return;
+    if (!std::isfinite(c.bound.radius) || !finite_vec(c.cube.lo) || !finite_vec(c.cube.hi) || !finite_vec(t.translation)) {
+      return;
+    }
     QVec3 rows[3];
     for (int k = 0; k < 3; ++k) rows[k] = rational(t.rotation.row(k));
     for (const bounds::RadiusRoot& r : roots) {
@@ -286,15 +288,15 @@ class Measure {
       }
       // |R v|_k - |v| = (|R v|_k^2 - |v|^2) / (|R v|_k + |v|), to double precision.
       const double e_beyond = sgn(beyond2) > 0 ? to_double(beyond2) / (2 * std::sqrt(to_double(length2))) : 0.0;
-      term("cube", "orthonormality", e_beyond, c.radius * bounds::kCubeOrthonormality);
-      term("cube", "total", sgn(outside) > 0 ? INFINITY : e_beyond, c.radius * bounds::kCubeOrthonormality);
+      term("cube", "orthonormality", e_beyond, c.bound.orthonormality());
+      term("cube", "total", sgn(outside) > 0 ? INFINITY : e_beyond, c.bound.orthonormality());
     }
     for (const bounds::Placement& p : placements) {
       if (!(p.pose == t) || !finite_vec(p.point) || !finite_vec(p.placed)) continue;
       const double error = placement_error(t, p.point, p.placed);
-      term("cube", "placement", error, c.transform.total());
+      term("cube", "placement", error, c.bound.transform.total());
       const bool inside = test_aabb_aabb(c.cube, {p.placed, p.placed});
-      term("cube", "total", inside ? 0.0 : INFINITY, c.transform.total());
+      term("cube", "total", inside ? 0.0 : INFINITY, c.bound.transform.total());
     }
   }
 

@@ -113,18 +113,17 @@ struct Placement {
   TransformBound bound;
 };
 
-/// rotation_radius: sqrt(vertex . vertex) as computed, and the radius it padded (the result
+/// rotation_radius: sqrt(vertex . vertex) as computed, and padded_radius of it (the result
 /// takes the largest).
 struct RadiusRoot {
   Vec3 vertex;
   double root = 0, padded = 0;
 };
 
-/// bounding_cube: the radius, the pose, the terms of the pad and the cube.
+/// bounding_cube: the pose, the terms of the cube's half side, and the cube.
 struct Cube {
-  double radius = 0;
   RigidTransform pose;
-  TransformBound transform;
+  CubeBound bound;
   Aabb cube;
 };
 

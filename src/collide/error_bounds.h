@@ -151,13 +151,19 @@ struct TransformBound {
   double total() const { return kFactor * (p_norm1 + translation) + fp::subnormal_slack; }
 };
 
-/// bounding_cube: the cube of half side radius * (1 + kCubeOrthonormality) + the transform bound
-/// for 3 radius holds the mesh placed by any rotation orthonormal to within the tolerance (whose
-/// rows have length at most 1 + 1.5 tolerance) with the given translation.
-inline constexpr double kCubeOrthonormality = 0x1p-40;
+/// bounding_cube: the cube of half side radius + these terms around the translation holds the
+/// mesh placed by any rotation orthonormal to within the tolerance with that translation (a
+/// vertex v rotated reaches at most (1 + 1.5 tolerance) |v| on an axis), exactly and as apply()
+/// places it.
+struct CubeBound {
+  double radius;
+  TransformBound transform;  // apply()'s rounding, for points of |p|_1 <= 3 radius
+  double orthonormality() const { return radius * 0x1p-40; }
+  double half_side() const { return (radius + orthonormality()) + transform.total(); }
+};
 
-/// rotation_radius: the largest sqrt(v . v), moved up by kRadiusRounding of it (the dot product
-/// and the square root round by less than 2^-51 in all).
-inline constexpr double kRadiusRounding = 0x1p-50;
+/// rotation_radius: the largest sqrt(v . v), moved up by 2^-50 of it (the dot product and the
+/// square root round by less than 2^-51 in all).
+inline double padded_radius(double root) { return root * (1 + 0x1p-50); }
 
 }  // namespace cc::bounds

@@ -13,23 +13,23 @@ double radius(const Mesh& mesh, Records& records) {
   double r = 0;
   for (const Vec3& v : mesh.vertices) {
     const double root = std::sqrt(dot(v, v));
-    records.add(bounds::RadiusRoot{v, root, root * (1 + bounds::kRadiusRounding)});
+    records.add(bounds::RadiusRoot{v, root, bounds::padded_radius(root)});
     r = std::max(r, root);
   }
-  return r * (1 + bounds::kRadiusRounding);  // dot and sqrt round by less than 2^-51 in all
+  return bounds::padded_radius(r);  // dot and sqrt round by less than 2^-51 in all
 }
 
 template <class Records>
 Aabb cube(double radius, const RigidTransform& pose, Records& records) {
-  const bounds::TransformBound transform{3 * radius, max_abs(pose.translation)};
-  const double pad = radius * (1 + bounds::kCubeOrthonormality) + transform.total();
+  const bounds::CubeBound bound{radius, {3 * radius, max_abs(pose.translation)}};
+  const double pad = bound.half_side();
   const Vec3 half{pad, pad, pad};
   Aabb box{pose.translation - half, pose.translation + half};
   for (int k = 0; k < 3; ++k) {  // the sums above round to nearest: step outward
     box.lo[k] = std::nextafter(box.lo[k], -INFINITY);
     box.hi[k] = std::nextafter(box.hi[k], INFINITY);
   }
-  records.add(bounds::Cube{radius, pose, transform, box});
+  records.add(bounds::Cube{pose, bound, box});
   return box;
 }
 

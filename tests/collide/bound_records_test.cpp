@@ -129,7 +129,7 @@ TEST(BoundRecords, ObjectBoundsRecordEveryPlacementAndRoot) {
   EXPECT_EQ(records.radius_roots[0].root, 5);
   EXPECT_EQ(bounding_cube(5, pose, records), bounding_cube(5, pose));
   ASSERT_EQ(records.cubes.size(), 1u);
-  EXPECT_EQ(records.cubes[0].transform.p_norm1, 15);
+  EXPECT_EQ(records.cubes[0].bound.transform.p_norm1, 15);
 }
 
 }  // namespace
