@@ -7,6 +7,7 @@
 #include <cmath>
 #include <vector>
 
+#include "collide/bound_records.h"
 #include "oracle/exact/domain.h"
 #include "oracle/exact/exact_reference.h"
 #include "oracle/exact/rational.h"

@@ -1,7 +1,6 @@
 // Rigid motions: a rotation followed by a translation.
 #pragma once
 
-#include "collide/error_bounds.h"
 #include "collide/vec3.h"
 
 namespace cc {
@@ -24,8 +23,6 @@ RigidTransform relative(const RigidTransform& a, const RigidTransform& b);
 
 /// A bound on the error of each component of apply(t, p), for any p with norm1(p) <= p_norm1:
 /// 2^-50 (p_norm1 + max|translation|), plus the subnormal slack (bounds::TransformBound).
-inline double transform_error_bound(const RigidTransform& t, double p_norm1) {
-  return bounds::TransformBound{p_norm1, max_abs(t.translation)}.total();
-}
+double transform_error_bound(const RigidTransform& t, double p_norm1);
 
 }  // namespace cc

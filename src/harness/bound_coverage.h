@@ -11,6 +11,7 @@
 #include <string_view>
 #include <vector>
 
+#include "collide/bound_records.h"
 #include "harness/input.h"
 #include "harness/oracle.h"
 

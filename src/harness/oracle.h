@@ -7,10 +7,13 @@
 #include <utility>
 #include <vector>
 
-#include "collide/bound_records.h"
 #include "harness/answer.h"
 #include "harness/explanation.h"
 #include "harness/input.h"
+
+namespace cc::bounds {
+struct Records;  // collide/bound_records.h
+}  // namespace cc::bounds
 
 namespace cc::harness {
 

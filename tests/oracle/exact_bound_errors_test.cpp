@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "collide/bound_records.h"
 #include "oracle/exact/exact_reference.h"
 
 namespace cc::exact {
