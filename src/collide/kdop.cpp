@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "collide/bound_records.h"
+
 namespace cc {
 namespace {
 
@@ -9,11 +11,12 @@ constexpr int terms(const KdopDirection& d) { return (d.x != 0) + (d.y != 0) + (
 
 // Slab i of the k-DOP grown by point p: the projection s = sum3 of the three exact products
 // d_j p_j, widened by `widen` times sum3 of their magnitudes. The plain definition.
-template <int K>
-void grow_slab(Kdop<K>& dop, int i, const KdopDirection& d, double widen, const Vec3& p) {
+template <int K, class Records>
+void grow_slab(Kdop<K>& dop, int i, const KdopDirection& d, double widen, const Vec3& p, Records& records) {
   const double tx = d.x * p.x, ty = d.y * p.y, tz = d.z * p.z;  // exact
   const double s = fp::sum3(tx, ty, tz);
   const double pad = widen * fp::sum3(std::fabs(tx), std::fabs(ty), std::fabs(tz));
+  if (terms(d) > 1) records.add(bounds::KdopProjection{d, p, s, pad});
   dop.lo[i] = std::min(dop.lo[i], s - pad);
   dop.hi[i] = std::max(dop.hi[i], s + pad);
 }
@@ -24,8 +27,8 @@ void grow_slab(Kdop<K>& dop, int i, const KdopDirection& d, double widen, const 
 // a 2-term direction, when the two terms' sum s is nonzero every order gives fl(s), and the
 // magnitudes' sum is fl(|t1| + |t2|). A zero sum (where the sign of zero depends on the order)
 // and 3-term directions take the plain definition. Non-finite points are overwritten anyway.
-template <int K, std::size_t I>
-inline void grow_slab_fast(Kdop<K>& dop, const Vec3& p) {
+template <int K, std::size_t I, class Records>
+inline void grow_slab_fast(Kdop<K>& dop, const Vec3& p, Records& records) {
   constexpr KdopDirection d = kdop_directions<K>()[I];
   constexpr int n = terms(d);
   if constexpr (n == 1) {
@@ -35,35 +38,35 @@ inline void grow_slab_fast(Kdop<K>& dop, const Vec3& p) {
       dop.hi[I] = std::max(dop.hi[I], t);
       return;
     }
-    grow_slab(dop, static_cast<int>(I), d, 0.0, p);
+    grow_slab(dop, static_cast<int>(I), d, 0.0, p, records);
   } else if constexpr (n == 2) {
     const double t1 = d.x != 0 ? d.x * p.x : d.y * p.y;
     const double t2 = d.z != 0 ? d.z * p.z : d.y * p.y;
     const double s = t1 + t2;
     if (s != 0) {
-      const double pad = 4 * fp::u * (std::fabs(t1) + std::fabs(t2));
+      const double pad = bounds::kKdopProjection * (std::fabs(t1) + std::fabs(t2));
+      records.add(bounds::KdopProjection{d, p, s, pad});
       dop.lo[I] = std::min(dop.lo[I], s - pad);
       dop.hi[I] = std::max(dop.hi[I], s + pad);
       return;
     }
-    grow_slab(dop, static_cast<int>(I), d, 4 * fp::u, p);
+    grow_slab(dop, static_cast<int>(I), d, bounds::kKdopProjection, p, records);
   } else {
-    grow_slab(dop, static_cast<int>(I), d, 4 * fp::u, p);
+    grow_slab(dop, static_cast<int>(I), d, bounds::kKdopProjection, p, records);
   }
 }
 
-}  // namespace
-
-template <int K>
-Kdop<K> fit_kdop(std::span<const Vec3> points) {
-  // Outward rounding per direction: zero for the exact single-coordinate projections; for a
-  // sum of two or three coordinates the error is at most 2u of its magnitude, and 4u also
-  // covers the rounding of s +- pad (see grow_slab).
+// Outward rounding per direction: zero for the exact single-coordinate projections; for a sum of
+// two or three coordinates bounds::kKdopProjection of its magnitude (see grow_slab).
+template <int K, class Records>
+Kdop<K> fit(std::span<const Vec3> points, Records& records) {
   Kdop<K> dop;
   bool finite_points = true;
   for (const Vec3& p : points) {
     finite_points &= finite(p);
-    [&]<std::size_t... I>(std::index_sequence<I...>) { (grow_slab_fast<K, I>(dop, p), ...); }(std::make_index_sequence<K / 2>{});
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      (grow_slab_fast<K, I>(dop, p, records), ...);
+    }(std::make_index_sequence<K / 2>{});
   }
   if (!finite_points) {
     dop.lo.fill(std::numeric_limits<double>::quiet_NaN());
@@ -72,11 +75,28 @@ Kdop<K> fit_kdop(std::span<const Vec3> points) {
   return dop;
 }
 
-template Kdop<6> fit_kdop<6>(std::span<const Vec3>);
-template Kdop<14> fit_kdop<14>(std::span<const Vec3>);
-template Kdop<16> fit_kdop<16>(std::span<const Vec3>);
-template Kdop<18> fit_kdop<18>(std::span<const Vec3>);
-template Kdop<24> fit_kdop<24>(std::span<const Vec3>);
-template Kdop<26> fit_kdop<26>(std::span<const Vec3>);
+}  // namespace
+
+template <int K>
+Kdop<K> fit_kdop(std::span<const Vec3> points) {
+  bounds::NoRecords none;
+  return fit<K>(points, none);
+}
+
+template <int K>
+Kdop<K> fit_kdop(std::span<const Vec3> points, bounds::Records& records) {
+  return fit<K>(points, records);
+}
+
+#define CC_INSTANTIATE(K)                                  \
+  template Kdop<K> fit_kdop<K>(std::span<const Vec3>); \
+  template Kdop<K> fit_kdop<K>(std::span<const Vec3>, bounds::Records&);
+CC_INSTANTIATE(6)
+CC_INSTANTIATE(14)
+CC_INSTANTIATE(16)
+CC_INSTANTIATE(18)
+CC_INSTANTIATE(24)
+CC_INSTANTIATE(26)
+#undef CC_INSTANTIATE
 
 }  // namespace cc

@@ -4,6 +4,8 @@
 #include <limits>
 #include <utility>
 
+#include "collide/bound_records.h"
+
 namespace cc {
 namespace {
 
@@ -24,22 +26,15 @@ TimeWindow hull(TimeWindow x, TimeWindow y) {
   return {std::min(x.enter, y.enter), std::max(x.exit, y.exit)};
 }
 
-// A computed time moved outward by `relative` of its magnitude and by the subnormal slack.
-// Multiplicative, so that a time that overflowed to +-inf stays infinite.
-double earlier(double t, double relative) {
-  return (t > 0 ? t * (1 - relative) : t * (1 + relative)) - fp::subnormal_slack;
-}
-double later(double t, double relative) {
-  return (t > 0 ? t * (1 + relative) : t * (1 - relative)) + fp::subnormal_slack;
-}
-
 // ---- Oriented boxes ----
 
 // One axis: at time t the centres' offset projects to projection + t * rate and the boxes to
 // radius_a and radius_b, each within `error` of its exact value for every t in [0, 1]. The
 // times at which the projections may overlap: |projection + t rate| <= radius_a + radius_b +
 // error, widened for the rounding of solving for them.
-TimeWindow overlap_window(double projection, double rate, double radius_a, double radius_b, double error) {
+template <class Records>
+TimeWindow overlap_window(double projection, double rate, double radius_a, double radius_b, double error,
+                          Records& records) {
   if (rate == 0) {  // test_obb_obb's criterion, for the whole step
     return std::fabs(projection) - (radius_a + radius_b) > error ? kNever : kAlways;
   }
@@ -47,10 +42,12 @@ TimeWindow overlap_window(double projection, double rate, double radius_a, doubl
   // the projections and radii need by more than that.
   const double reach = (radius_a + radius_b) + error;
   double enter = (-reach - projection) / rate, exit = (reach - projection) / rate;
+  records.add(bounds::Quotient{-reach, projection, rate, 0, 0, enter, bounds::kSweepObbTime});
+  records.add(bounds::Quotient{reach, projection, rate, 0, 0, exit, bounds::kSweepObbTime});
   if (rate < 0) std::swap(enter, exit);
   // Each time is a difference of two doubles divided by a third, two roundings: within 2.0001u
-  // of its exact value. Widening by 4u covers that and the widening's own rounding.
-  return {earlier(enter, 4 * fp::u), later(exit, 4 * fp::u)};
+  // of its exact value (bounds::kSweepObbTime).
+  return {bounds::kSweepObbTime.lower(enter), bounds::kSweepObbTime.upper(exit)};
 }
 
 bool in_contract(const MovingObb& m) {
@@ -89,15 +86,17 @@ Rounded quotient(Rounded n, Rounded d) {
 
 // One coordinate axis: the slabs [a_lo + t va, a_hi + t va] and [b_lo + t vb, b_hi + t vb]
 // overlap iff a_lo - b_hi <= t (vb - va) <= a_hi - b_lo.
-TimeWindow slab_window(double a_lo, double a_hi, double va, double b_lo, double b_hi, double vb) {
+template <class Records>
+TimeWindow slab_window(double a_lo, double a_hi, double va, double b_lo, double b_hi, double vb, Records& records) {
   if (va == vb) return a_lo <= b_hi && b_lo <= a_hi ? kAlways : kNever;  // rate 0: exact
   const Rounded rate = difference(vb, va);  // nonzero, and of the exact sign
   Rounded enter = quotient(difference(a_lo, b_hi), rate), exit = quotient(difference(a_hi, b_lo), rate);
+  records.add(bounds::Quotient{a_lo, b_hi, vb, va, 0, enter.value, bounds::kSweepAabbTime});
+  records.add(bounds::Quotient{a_hi, b_lo, vb, va, 0, exit.value, bounds::kSweepAabbTime});
   if (rate.value < 0) std::swap(enter, exit);
-  // Three roundings: within 3.000001u of the exact time. Widening by 8u covers that and the
-  // widening's own rounding (as in intersect_ray_aabb).
-  return {enter.exact ? enter.value : earlier(enter.value, 8 * fp::u),
-          exit.exact ? exit.value : later(exit.value, 8 * fp::u)};
+  // Three roundings: within 3.000001u of the exact time (bounds::kSweepAabbTime).
+  return {enter.exact ? enter.value : bounds::kSweepAabbTime.lower(enter.value),
+          exit.exact ? exit.value : bounds::kSweepAabbTime.upper(exit.value)};
 }
 
 bool in_contract(const Aabb& box, const Vec3& velocity) {
@@ -124,7 +123,10 @@ MovingObb moving_obb(const Aabb& box, const Vec3& velocity) {
   return {obb, velocity};
 }
 
-SweepHit sweep_obb_obb(const MovingObb& a, const MovingObb& b) {
+namespace {
+
+template <class Records>
+SweepHit sweep_obb(const MovingObb& a, const MovingObb& b, Records& records) {
   const Obb &box_a = a.box, &box_b = b.box;
   const Vec3 d = box_b.center - box_a.center;  // swapping a and b negates d and v exactly
   const Vec3 v = b.velocity - a.velocity;
@@ -146,17 +148,20 @@ SweepHit sweep_obb_obb(const MovingObb& a, const MovingObb& b) {
   // is test_obb_obb's bound bit for bit.
   const double sum_a = fp::sum3(box_a.half.x, box_a.half.y, box_a.half.z);
   const double sum_b = fp::sum3(box_b.half.x, box_b.half.y, box_b.half.z);
-  const double error = 32 * fp::u * fp::sum3(norm1(d) + norm1(v), sum_a, sum_b) +
-                       6 * kObbOrthonormalTolerance * (sum_a + sum_b) + fp::subnormal_slack;
+  const bounds::ObbBound bound{norm1(d) + norm1(v), sum_a, sum_b};
+  records.add(bounds::ObbTest{a, b, bound});
+  const double error = bound.total();
 
   TimeWindow window = kStep;
   for (int i = 0; i < 3; ++i) {  // a's face normals
     const double rb = fp::sum3(box_b.half.x * abs_r[i][0], box_b.half.y * abs_r[i][1], box_b.half.z * abs_r[i][2]);
-    window = intersection(window, overlap_window(d_in_a[i], v_in_a[i], box_a.half[i], rb, error));
+    records.add(bounds::ObbAxis{i, 0, d_in_a[i], v_in_a[i], box_a.half[i], rb});
+    window = intersection(window, overlap_window(d_in_a[i], v_in_a[i], box_a.half[i], rb, error, records));
   }
   for (int j = 0; j < 3; ++j) {  // b's face normals
     const double ra = fp::sum3(box_a.half.x * abs_r[0][j], box_a.half.y * abs_r[1][j], box_a.half.z * abs_r[2][j]);
-    window = intersection(window, overlap_window(d_in_b[j], v_in_b[j], ra, box_b.half[j], error));
+    records.add(bounds::ObbAxis{3 + j, 0, d_in_b[j], v_in_b[j], ra, box_b.half[j]});
+    window = intersection(window, overlap_window(d_in_b[j], v_in_b[j], ra, box_b.half[j], error, records));
   }
   for (int i = 0; i < 3; ++i) {  // a_i x b_j
     const int i1 = (i + 1) % 3, i2 = (i + 2) % 3;
@@ -171,8 +176,11 @@ SweepHit sweep_obb_obb(const MovingObb& a, const MovingObb& b) {
       const auto in_b = [&](const Vec3& w) { return r[i][j2] * w[j1] - r[i][j1] * w[j2]; };
       const double ra = box_a.half[i1] * abs_r[i2][j] + box_a.half[i2] * abs_r[i1][j];
       const double rb = box_b.half[j1] * abs_r[i][j2] + box_b.half[j2] * abs_r[i][j1];
-      window = intersection(window, hull(intersection(kStep, overlap_window(in_a(d_in_a), in_a(v_in_a), ra, rb, error)),
-                                         intersection(kStep, overlap_window(in_b(d_in_b), in_b(v_in_b), ra, rb, error))));
+      records.add(bounds::ObbAxis{6 + 3 * i + j, 0, in_a(d_in_a), in_a(v_in_a), ra, rb});
+      records.add(bounds::ObbAxis{6 + 3 * i + j, 1, in_b(d_in_b), in_b(v_in_b), ra, rb});
+      window = intersection(
+          window, hull(intersection(kStep, overlap_window(in_a(d_in_a), in_a(v_in_a), ra, rb, error, records)),
+                       intersection(kStep, overlap_window(in_b(d_in_b), in_b(v_in_b), ra, rb, error, records))));
     }
   }
   if (empty(window)) return {};
@@ -180,14 +188,35 @@ SweepHit sweep_obb_obb(const MovingObb& a, const MovingObb& b) {
   return {true, window.enter + 0.0, window.exit + 0.0};  // + 0.0: a time 0 is +0
 }
 
-SweepHit sweep_aabb_aabb(const Aabb& a, Vec3 va, const Aabb& b, Vec3 vb) {
+template <class Records>
+SweepHit sweep_aabb(const Aabb& a, const Vec3& va, const Aabb& b, const Vec3& vb, Records& records) {
   TimeWindow window = kStep;
   for (int k = 0; k < 3; ++k) {
-    window = intersection(window, slab_window(a.lo[k], a.hi[k], va[k], b.lo[k], b.hi[k], vb[k]));
+    window = intersection(window, slab_window(a.lo[k], a.hi[k], va[k], b.lo[k], b.hi[k], vb[k], records));
   }
   if (!(window.enter <= window.exit)) return {};
   if (!in_contract(a, va) || !in_contract(b, vb)) return {};
   return {true, window.enter + 0.0, window.exit + 0.0};
+}
+
+}  // namespace
+
+SweepHit sweep_obb_obb(const MovingObb& a, const MovingObb& b) {
+  bounds::NoRecords none;
+  return sweep_obb(a, b, none);
+}
+
+SweepHit sweep_obb_obb(const MovingObb& a, const MovingObb& b, bounds::Records& records) {
+  return sweep_obb(a, b, records);
+}
+
+SweepHit sweep_aabb_aabb(const Aabb& a, Vec3 va, const Aabb& b, Vec3 vb) {
+  bounds::NoRecords none;
+  return sweep_aabb(a, va, b, vb, none);
+}
+
+SweepHit sweep_aabb_aabb(const Aabb& a, Vec3 va, const Aabb& b, Vec3 vb, bounds::Records& records) {
+  return sweep_aabb(a, va, b, vb, records);
 }
 
 }  // namespace cc

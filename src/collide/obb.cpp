@@ -1,19 +1,23 @@
 #include "collide/obb.h"
 
-namespace cc {
+#include "collide/bound_records.h"
 
-bool test_obb_obb(const Obb& a, const Obb& b) {
+namespace cc {
+namespace {
+
+template <class Records>
+bool test(const Obb& a, const Obb& b, Records& records) {
   const Vec3 d = b.center - a.center;  // swapping a and b negates d exactly
   double r[3][3], abs_r[3][3];        // r[i][j] = a_i . b_j, row i computed before a_i is tried
   Vec3 ta;                            // d in a's frame, likewise
 
-  // One bound for every axis. Rounding: at most 22u |d|_1 + 8u (sum of half extents) on the
-  // worst (edge) axis; 32u covers it and its own evaluation. Frame: axes that are orthonormal
-  // only to within eta change the radii by at most 4 eta (sum of half extents); 6 eta is used.
+  // One bound for every axis: the rounding, and the axes' deviation from orthonormal (see
+  // bounds::ObbBound).
   const double sum_a = fp::sum3(a.half.x, a.half.y, a.half.z);
   const double sum_b = fp::sum3(b.half.x, b.half.y, b.half.z);
-  const double error = 32 * fp::u * fp::sum3(norm1(d), sum_a, sum_b) +
-                       6 * kObbOrthonormalTolerance * (sum_a + sum_b) + fp::subnormal_slack;
+  const bounds::ObbBound bound{norm1(d), sum_a, sum_b};
+  records.add(bounds::ObbTest{{a, {}}, {b, {}}, bound});
+  const double error = bound.total();
   const auto separates = [error](double projection, double radius_a, double radius_b) {
     return std::fabs(projection) - (radius_a + radius_b) > error;
   };
@@ -25,11 +29,13 @@ bool test_obb_obb(const Obb& a, const Obb& b) {
     }
     ta[i] = dot(a.axes.col[i], d);
     const double rb = fp::sum3(b.half.x * abs_r[i][0], b.half.y * abs_r[i][1], b.half.z * abs_r[i][2]);
+    records.add(bounds::ObbAxis{i, 0, ta[i], 0, a.half[i], rb});
     if (separates(ta[i], a.half[i], rb)) return false;
   }
   const Vec3 tb = transpose_times(b.axes, d);  // d in b's frame
   for (int j = 0; j < 3; ++j) {  // b's face normals
     const double ra = fp::sum3(a.half.x * abs_r[0][j], a.half.y * abs_r[1][j], a.half.z * abs_r[2][j]);
+    records.add(bounds::ObbAxis{3 + j, 0, tb[j], 0, ra, b.half[j]});
     if (separates(tb[j], ra, b.half[j])) return false;
   }
   for (int i = 0; i < 3; ++i) {  // a_i x b_j
@@ -42,6 +48,8 @@ bool test_obb_obb(const Obb& a, const Obb& b) {
       const double in_b = r[i][j2] * tb[j1] - r[i][j1] * tb[j2];
       const double ra = a.half[i1] * abs_r[i2][j] + a.half[i2] * abs_r[i1][j];
       const double rb = b.half[j1] * abs_r[i][j2] + b.half[j2] * abs_r[i][j1];
+      records.add(bounds::ObbAxis{6 + 3 * i + j, 0, in_a, 0, ra, rb});
+      records.add(bounds::ObbAxis{6 + 3 * i + j, 1, in_b, 0, ra, rb});
       if (separates(std::min(std::fabs(in_a), std::fabs(in_b)), ra, rb)) return false;
     }
   }
@@ -50,5 +58,14 @@ bool test_obb_obb(const Obb& a, const Obb& b) {
          finite(b.axes) && a.half.x >= 0 && a.half.y >= 0 && a.half.z >= 0 && b.half.x >= 0 && b.half.y >= 0 &&
          b.half.z >= 0;
 }
+
+}  // namespace
+
+bool test_obb_obb(const Obb& a, const Obb& b) {
+  bounds::NoRecords none;
+  return test(a, b, none);
+}
+
+bool test_obb_obb(const Obb& a, const Obb& b, bounds::Records& records) { return test(a, b, records); }
 
 }  // namespace cc

@@ -1,44 +1,56 @@
 #include "collide/object_bounds.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
-namespace cc {
+#include "collide/bound_records.h"
 
+namespace cc {
 namespace {
 
-// |v| rounded up. v is scaled by a power of two first, so that its squares neither underflow
-// (a subnormal vertex) nor overflow; components 2^1074 below the largest, lost by the scaling,
+// |v| as computed, and that length padded up (bounds::padded_radius, and one step more when the
+// scaling back rounds). v is scaled by a power of two first, so that its squares neither underflow (a
+// subnormal vertex) nor overflow; components 2^1074 below the largest, lost by the scaling,
 // change the length by far less than the padding.
-double length_up(const Vec3& v) {
+bounds::RadiusRoot length(const Vec3& v) {
   const double m = max_abs(v);
-  if (!(m > 0) || !std::isfinite(m)) return m;
+  if (!(m > 0) || !std::isfinite(m)) return {v, m, m};
   const int e = std::ilogb(m);
   const Vec3 w{std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)};
-  // dot and sqrt round by less than 2^-51 in all; ldexp may round once more (subnormal result).
-  return std::nextafter(std::ldexp(std::sqrt(dot(w, w)) * (1 + 0x1p-50), e), INFINITY);
+  const double root = std::sqrt(dot(w, w));
+  double padded = std::ldexp(bounds::padded_radius(root), e);
+  if (padded < DBL_MIN) padded = std::nextafter(padded, INFINITY);  // ldexp rounded a subnormal
+  return {v, std::ldexp(root, e), padded};
 }
 
-}  // namespace
-
-double rotation_radius(const Mesh& mesh) {
+template <class Records>
+double radius(const Mesh& mesh, Records& records) {
   double r = 0;
-  for (const Vec3& v : mesh.vertices) r = std::max(r, length_up(v));
+  for (const Vec3& v : mesh.vertices) {
+    const bounds::RadiusRoot root = length(v);
+    records.add(root);
+    r = std::max(r, root.padded);
+  }
   return r;
 }
 
-Aabb bounding_cube(double radius, const RigidTransform& pose) {
-  const double pad = radius * (1 + 0x1p-40) + transform_error_bound(pose, 3 * radius);
+template <class Records>
+Aabb cube(double radius, const RigidTransform& pose, Records& records) {
+  const bounds::CubeBound bound{radius, {3 * radius, max_abs(pose.translation)}};
+  const double pad = bound.half_side();
   const Vec3 half{pad, pad, pad};
   Aabb box{pose.translation - half, pose.translation + half};
   for (int k = 0; k < 3; ++k) {  // the sums above round to nearest: step outward
     box.lo[k] = std::nextafter(box.lo[k], -INFINITY);
     box.hi[k] = std::nextafter(box.hi[k], INFINITY);
   }
+  records.add(bounds::Cube{pose, bound, box});
   return box;
 }
 
-Aabb fitted_box(const Mesh& mesh, const RigidTransform& pose) {
+template <class Records>
+Aabb fitted(const Mesh& mesh, const RigidTransform& pose, Records& records) {
   if (mesh.vertices.empty()) return {pose.translation, pose.translation};
   Aabb box{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
   double reach = 0;
@@ -47,12 +59,46 @@ Aabb fitted_box(const Mesh& mesh, const RigidTransform& pose) {
     reach = std::max(reach, norm1(v));
     for (int k = 0; k < 3; ++k) box.lo[k] = std::min(box.lo[k], p[k]), box.hi[k] = std::max(box.hi[k], p[k]);
   }
-  const double pad = transform_error_bound(pose, reach) * (1 + 0x1p-50);
+  const bounds::TransformBound transform{reach, max_abs(pose.translation)};
+  if constexpr (std::is_same_v<Records, bounds::Records>) {  // each placement, as apply() computes it
+    for (const Vec3& v : mesh.vertices) {
+      const Vec3 rotated = pose.rotation * v;
+      records.add(bounds::Placement{pose, v, rotated, rotated + pose.translation, transform});
+    }
+  }
+  const double pad = transform.total() * (1 + 0x1p-50);
   for (int k = 0; k < 3; ++k) {
     box.lo[k] = std::nextafter(box.lo[k] - pad, -INFINITY);
     box.hi[k] = std::nextafter(box.hi[k] + pad, INFINITY);
   }
   return box;
+}
+
+}  // namespace
+
+double rotation_radius(const Mesh& mesh) {
+  bounds::NoRecords none;
+  return radius(mesh, none);
+}
+
+double rotation_radius(const Mesh& mesh, bounds::Records& records) { return radius(mesh, records); }
+
+Aabb bounding_cube(double radius, const RigidTransform& pose) {
+  bounds::NoRecords none;
+  return cube(radius, pose, none);
+}
+
+Aabb bounding_cube(double radius, const RigidTransform& pose, bounds::Records& records) {
+  return cube(radius, pose, records);
+}
+
+Aabb fitted_box(const Mesh& mesh, const RigidTransform& pose) {
+  bounds::NoRecords none;
+  return fitted(mesh, pose, none);
+}
+
+Aabb fitted_box(const Mesh& mesh, const RigidTransform& pose, bounds::Records& records) {
+  return fitted(mesh, pose, records);
 }
 
 }  // namespace cc

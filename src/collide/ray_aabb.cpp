@@ -4,22 +4,22 @@
 #include <cmath>
 #include <utility>
 
+#include "collide/bound_records.h"
+
 namespace cc {
 namespace {
 
-// A slab parameter (b - o) * (1/d) carries three roundings: at most 3.000001u relative. Widening
-// it by 8u (plus the subnormal slack) covers that and the rounding of the widened value itself.
-// In multiplicative form, so that a parameter that overflowed to +-inf stays infinite (an
-// additive pad would make inf - inf = NaN).
-double lower(double t) { return (t > 0 ? t * (1 - 8 * fp::u) : t * (1 + 8 * fp::u)) - fp::subnormal_slack; }
-double upper(double t) { return (t > 0 ? t * (1 + 8 * fp::u) : t * (1 - 8 * fp::u)) + fp::subnormal_slack; }
+// A slab parameter is moved outward by its rounding bound (bounds::kRaySlab).
+double lower(double t) { return bounds::kRaySlab.lower(t); }
+double upper(double t) { return bounds::kRaySlab.upper(t); }
 
 bool box_in_contract(const Aabb& box) {
   return finite(box.lo) && finite(box.hi) && box.lo.x <= box.hi.x && box.lo.y <= box.hi.y && box.lo.z <= box.hi.z;
 }
 
 // The entry and exit parameters of slab i (not parallel), in the scaled units.
-std::pair<double, double> slab(const PreparedRay& r, const Aabb& box, int i) {
+template <class Records>
+std::pair<double, double> slab(const PreparedRay& r, const Aabb& box, int i, Records& records) {
   const double lo = box.lo[i] - r.ray.origin[i], hi = box.hi[i] - r.ray.origin[i];
   double near, far;
   if (!((r.subnormal >> i) & 1)) {
@@ -31,9 +31,14 @@ std::pair<double, double> slab(const PreparedRay& r, const Aabb& box, int i) {
     near = static_cast<double>((static_cast<long double>(box.lo[i]) - r.ray.origin[i]) / r.ray.dir[i] * to_scaled);
     far = static_cast<double>((static_cast<long double>(box.hi[i]) - r.ray.origin[i]) / r.ray.dir[i] * to_scaled);
   }
+  records.add(bounds::Quotient{box.lo[i], r.ray.origin[i], r.ray.dir[i], 0, r.exponent, near, bounds::kRaySlab});
+  records.add(bounds::Quotient{box.hi[i], r.ray.origin[i], r.ray.dir[i], 0, r.exponent, far, bounds::kRaySlab});
   if (r.negative[i]) std::swap(near, far);
   return {near, far};
 }
+
+template <class Records>
+RayHit intersect(const PreparedRay& r, const Aabb& box, Records& records);
 
 }  // namespace
 
@@ -68,6 +73,18 @@ PreparedRay::PreparedRay(const Ray& given) : ray(given) {
 RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box) { return intersect_ray_aabb(PreparedRay(ray), box); }
 
 RayHit intersect_ray_aabb(const PreparedRay& r, const Aabb& box) {
+  bounds::NoRecords none;
+  return intersect(r, box, none);
+}
+
+RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box, bounds::Records& records) {
+  return intersect(PreparedRay(ray), box, records);
+}
+
+namespace {
+
+template <class Records>
+RayHit intersect(const PreparedRay& r, const Aabb& box, Records& records) {
   if (!r.in_contract) return {};
   double enter = -INFINITY, exit = INFINITY;  // over the slabs, as computed
   double nears[3] = {0, 0, 0}, fars[3] = {0, 0, 0};  // kept for the hit path
@@ -76,7 +93,7 @@ RayHit intersect_ray_aabb(const PreparedRay& r, const Aabb& box) {
       if (r.ray.origin[i] < box.lo[i] || r.ray.origin[i] > box.hi[i]) return {};
       continue;
     }
-    const auto [near, far] = slab(r, box, i);
+    const auto [near, far] = slab(r, box, i, records);
     nears[i] = near, fars[i] = far;
     enter = std::max(enter, near);
     exit = std::min(exit, far);
@@ -101,4 +118,5 @@ RayHit intersect_ray_aabb(const PreparedRay& r, const Aabb& box) {
   return {true, t_enter, t_exit};
 }
 
+}  // namespace
 }  // namespace cc

@@ -11,6 +11,8 @@
 #include <string>
 #include <utility>
 
+#include "collide/error_bounds.h"
+
 namespace cc {
 
 void AabbSoa::push_back(const Aabb& box) {
@@ -24,7 +26,7 @@ namespace {
 // (t <= 0). Rounding is monotone, so t (1 - 8u) <= t (1 + 8u) exactly when t >= 0, and lower(t)
 // is min(t A, t B) - slack; upper(t) = max(t A, t B) + slack. Both are applied, as there, to
 // the largest entry and the smallest exit over the slabs.
-constexpr double kA = 1 - 8 * fp::u, kB = 1 + 8 * fp::u;
+constexpr double kA = 1 - bounds::kRaySlab.relative, kB = 1 + bounds::kRaySlab.relative;
 
 // Box i is in the scalar test's contract: no NaN or infinite bound and lo <= hi on every axis.
 // (lo <= hi < inf and -inf < lo <= hi make both finite; NaN fails lo <= hi.)

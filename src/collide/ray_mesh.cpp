@@ -5,13 +5,15 @@
 #include <utility>
 #include <vector>
 
+#include "collide/bound_records.h"
+
 namespace cc {
 namespace {
 
 // A parameter that carries a few roundings (intersect_ray_aabb's 4 ulps, or a subtraction and
-// a division): moved outward by more than that.
-double lower(double t) { return (t > 0 ? t * (1 - 16 * fp::u) : t * (1 + 16 * fp::u)) - fp::subnormal_slack; }
-double upper(double t) { return (t > 0 ? t * (1 + 16 * fp::u) : t * (1 - 16 * fp::u)) + fp::subnormal_slack; }
+// a division): moved outward by more than that (bounds::kRayVolumeEntry).
+double lower(double t) { return bounds::kRayVolumeEntry.lower(t); }
+double upper(double t) { return bounds::kRayVolumeEntry.upper(t); }
 
 // The ray with its direction scaled by a power of two to a largest component in [1, 2), and
 // tmin and tmax with it, rounded outward: the same points, and the volume tests neither
@@ -91,9 +93,17 @@ RayVolumeEntry enter_scaled(const Kdop<K>& dop, const Ray& ray, double pad) {
 }
 
 template <class BV>
+bounds::RayMeshPad pad_terms(const Bvh<BV>& bvh, const Ray& ray) {
+  return {norm1(ray.origin), bvh.magnitude};
+}
+
+// The traversal; each face hit (and each slab of intersect_ray_triangle) is recorded into
+// `records`, with the pad.
+template <class BV, class Records>
 class RayTraversal {
  public:
-  RayTraversal(const Bvh<BV>& bvh, const Ray& ray) : bvh_(bvh), ray_(ray), pad_(ray_mesh_pad(bvh, ray)) {}
+  RayTraversal(const Bvh<BV>& bvh, const Ray& ray, Records& records)
+      : bvh_(bvh), ray_(ray), pad_terms_(pad_terms(bvh, ray)), pad_(pad_terms_.total()), records_(records) {}
 
   RayMeshHit run(bool stop_at_first) {
     if (bvh_.nodes.empty() || !in_contract(ray_)) return result_;
@@ -133,8 +143,9 @@ class RayTraversal {
     bool any = false;
     for (std::uint32_t s = node.first; s < node.first + node.count; ++s) {
       ++result_.counters.triangle_tests;
-      const RayTriangleHit h = intersect_ray_triangle(ray_, bvh_.triangles[s]);
+      const RayTriangleHit h = intersect(bvh_.triangles[s]);
       if (!h.hit) continue;
+      records_.add(bounds::RayMeshFaceHit{ray_, bvh_.triangles[s], h.t, pad_terms_});
       any = true;
       const std::uint32_t face = bvh_.order[s];
       if (!result_.hit || h.t < result_.t || (h.t == result_.t && face < result_.face)) {
@@ -144,9 +155,19 @@ class RayTraversal {
     return any;
   }
 
+  RayTriangleHit intersect(const Triangle& t) {
+    if constexpr (std::is_same_v<Records, bounds::Records>) {
+      return intersect_ray_triangle(ray_, t, records_);
+    } else {
+      return intersect_ray_triangle(ray_, t);
+    }
+  }
+
   const Bvh<BV>& bvh_;
   Ray ray_;
+  bounds::RayMeshPad pad_terms_;
   double pad_;
+  Records& records_;
   RayMeshHit result_;
 };
 
@@ -154,7 +175,7 @@ class RayTraversal {
 
 template <class BV>
 double ray_mesh_pad(const Bvh<BV>& bvh, const Ray& ray) {
-  return 0x1p-40 * (norm1(ray.origin) + bvh.magnitude) + fp::subnormal_slack;
+  return pad_terms(bvh, ray).total();
 }
 
 template <class BV>
@@ -168,12 +189,19 @@ RayVolumeEntry ray_volume_entry(const BV& volume, const Ray& ray, double pad) {
 
 template <class BV>
 RayMeshHit ray_mesh_closest(const Bvh<BV>& bvh, const Ray& ray) {
-  return RayTraversal<BV>(bvh, ray).run(false);
+  bounds::NoRecords none;
+  return RayTraversal<BV, bounds::NoRecords>(bvh, ray, none).run(false);
+}
+
+template <class BV>
+RayMeshHit ray_mesh_closest(const Bvh<BV>& bvh, const Ray& ray, bounds::Records& records) {
+  return RayTraversal<BV, bounds::Records>(bvh, ray, records).run(false);
 }
 
 template <class BV>
 RayMeshHit ray_mesh_any(const Bvh<BV>& bvh, const Ray& ray) {
-  return RayTraversal<BV>(bvh, ray).run(true);
+  bounds::NoRecords none;
+  return RayTraversal<BV, bounds::NoRecords>(bvh, ray, none).run(true);
 }
 
 RayMeshHit ray_mesh_brute_force(const Mesh& mesh, const Ray& ray) {
@@ -190,6 +218,7 @@ RayMeshHit ray_mesh_brute_force(const Mesh& mesh, const Ray& ray) {
   template double ray_mesh_pad<BV>(const Bvh<BV>&, const Ray&);                  \
   template RayVolumeEntry ray_volume_entry<BV>(const BV&, const Ray&, double); \
   template RayMeshHit ray_mesh_closest<BV>(const Bvh<BV>&, const Ray&);          \
+  template RayMeshHit ray_mesh_closest<BV>(const Bvh<BV>&, const Ray&, bounds::Records&); \
   template RayMeshHit ray_mesh_any<BV>(const Bvh<BV>&, const Ray&);
 CC_FOR_EACH_BOUNDING_VOLUME(CC_INSTANTIATE)
 #undef CC_INSTANTIATE

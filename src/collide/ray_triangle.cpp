@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "collide/bound_records.h"
+
 namespace cc {
 namespace {
 
@@ -21,16 +23,11 @@ namespace {
 // an error the slabs' widening includes) and its direction scaled by a power of two to a
 // largest component in [1, 2), so that a unit of t is about a unit of space.
 
-// A slab bound's rounding: the projection v . a of a translated vertex is three products and
-// two additions (3u |a|_1 R) and the translation adds u |a|_1 R; 8u covers these, the rounding
-// of the bound itself and of |a|_1.
-constexpr double kProjectionError = 8 * fp::u;
-// The speed a . dir across a slab: 3u sum |a_i dir_i|; 6u also covers the rounding of q +- e.
-constexpr double kSpeedError = 6 * fp::u;
-
-// A parameter bound rounded once (a division): moved outward by more than that.
-double lower(double t) { return (t > 0 ? t * (1 - 4 * fp::u) : t * (1 + 4 * fp::u)) - fp::subnormal_slack; }
-double upper(double t) { return (t > 0 ? t * (1 + 4 * fp::u) : t * (1 - 4 * fp::u)) + fp::subnormal_slack; }
+// Each slab bound is widened by its rounding, and the speed across it taken as an interval
+// (bounds::RayTriangleSlabBound); a parameter bound (one division) is moved outward by more than
+// its rounding (bounds::kRayTriangleParameter).
+double lower(double t) { return bounds::kRayTriangleParameter.lower(t); }
+double upper(double t) { return bounds::kRayTriangleParameter.upper(t); }
 
 // hi + lo == the exact result (Knuth's two-sum, and the product through a fused multiply-add).
 struct TwoTerm {
@@ -109,22 +106,28 @@ struct HalfLine {
 
   // Keeps the t in [lo, hi] for which t * speed may lie in [slab_lo, slab_hi], the speed
   // being anywhere in [q - q_error, q + q_error].
-  void clip(double slab_lo, double slab_hi, double q, double q_error) {
+  template <class Records>
+  void clip(double slab_lo, double slab_hi, double q, double q_error, Records& records) {
     if (!active) return;
     const double q_lo = q - q_error, q_hi = q + q_error;
+    const auto divide = [&records](double n, double d) {
+      const double t = n / d;
+      records.add(bounds::Quotient{n, 0, d, 0, 0, t, bounds::kRayTriangleParameter});
+      return t;
+    };
     double enter, exit;
     if (q_lo > 0) {  // moving up across the slab
-      enter = slab_lo >= 0 ? slab_lo / q_hi : slab_lo / q_lo;
-      exit = slab_hi >= 0 ? slab_hi / q_lo : slab_hi / q_hi;
+      enter = slab_lo >= 0 ? divide(slab_lo, q_hi) : divide(slab_lo, q_lo);
+      exit = slab_hi >= 0 ? divide(slab_hi, q_lo) : divide(slab_hi, q_hi);
     } else if (q_hi < 0) {  // moving down across it
-      enter = slab_hi <= 0 ? slab_hi / q_lo : slab_hi / q_hi;
-      exit = slab_lo <= 0 ? slab_lo / q_hi : slab_lo / q_lo;
+      enter = slab_hi <= 0 ? divide(slab_hi, q_lo) : divide(slab_hi, q_hi);
+      exit = slab_lo <= 0 ? divide(slab_lo, q_hi) : divide(slab_lo, q_lo);
     } else {  // parallel, or nearly: t * [q_lo, q_hi] holds 0 and widens as t grows
       exit = INFINITY;
       if (slab_lo > 0) {
-        enter = q_hi > 0 ? slab_lo / q_hi : INFINITY;
+        enter = q_hi > 0 ? divide(slab_lo, q_hi) : INFINITY;
       } else if (slab_hi < 0) {
-        enter = q_lo < 0 ? slab_hi / q_lo : INFINITY;
+        enter = q_lo < 0 ? divide(slab_hi, q_lo) : INFINITY;
       } else {
         enter = -INFINITY;
       }
@@ -134,10 +137,14 @@ struct HalfLine {
   }
 };
 
+// `ray` and `triangle` as given, for the records.
+template <class Records>
 class SlabClipper {
  public:
-  SlabClipper(const Triangle& translated, const Vec3& dir, HalfLine forward, HalfLine backward)
-      : v_(translated.v), dir_(dir), forward_(forward), backward_(backward) {
+  SlabClipper(const Ray& ray, const Triangle& triangle, const Triangle& translated, const Vec3& dir, HalfLine forward,
+              HalfLine backward, Records& records)
+      : ray_(ray), triangle_(triangle), translated_(translated), v_(translated.v), dir_(dir), forward_(forward),
+        backward_(backward), records_(records) {
     for (const Vec3& p : v_) reach_ = std::max(reach_, max_abs(p));
   }
 
@@ -145,14 +152,16 @@ class SlabClipper {
   bool clip(const Vec3& axis) {
     if (axis == Vec3{}) return true;  // a zero axis constrains nothing
     const double p0 = dot(axis, v_[0]), p1 = dot(axis, v_[1]), p2 = dot(axis, v_[2]);
-    const double widen = kProjectionError * norm1(axis) * reach_ + fp::subnormal_slack;
-    const double slab_lo = std::min({p0, p1, p2}) - widen, slab_hi = std::max({p0, p1, p2}) + widen;
     const double q = dot(axis, dir_);
     bool products = false;  // a nonzero product of components may have underflowed
     for (int i = 0; i < 3; ++i) products |= axis[i] != 0 && dir_[i] != 0;
-    const double q_error = kSpeedError * dot(abs(axis), abs(dir_)) + (products ? fp::subnormal_slack : 0.0);
-    forward_.clip(slab_lo, slab_hi, q, q_error);
-    backward_.clip(slab_lo, slab_hi, -q, q_error);
+    const bounds::RayTriangleSlabBound bound{norm1(axis), reach_, dot(abs(axis), abs(dir_)), products};
+    records_.add(bounds::RayTriangleSlab{ray_.origin, triangle_, translated_, dir_, axis, {p0, p1, p2}, q, bound});
+    const double widen = bound.projection_total();
+    const double slab_lo = std::min({p0, p1, p2}) - widen, slab_hi = std::max({p0, p1, p2}) + widen;
+    const double q_error = bound.speed_total();
+    forward_.clip(slab_lo, slab_hi, q, q_error, records_);
+    backward_.clip(slab_lo, slab_hi, -q, q_error, records_);
     return !(forward_.empty() && backward_.empty());
   }
 
@@ -170,15 +179,17 @@ class SlabClipper {
   }
 
  private:
+  const Ray& ray_;
+  const Triangle &triangle_, &translated_;
   std::array<Vec3, 3> v_;
   Vec3 dir_;
   HalfLine forward_, backward_;
+  Records& records_;
   double reach_ = 0;  // the largest |coordinate| of a translated vertex
 };
 
-}  // namespace
-
-RayTriangleHit intersect_ray_triangle(const Ray& ray, const Triangle& triangle) {
+template <class Records>
+RayTriangleHit intersect(const Ray& ray, const Triangle& triangle, Records& records) {
   if (!finite(ray.origin) || !finite(ray.dir) || !finite(triangle)) return {};
   if (!(ray.tmin <= ray.tmax) || ray.tmin == INFINITY || ray.tmax == -INFINITY) return {};  // NaN too
 
@@ -191,7 +202,7 @@ RayTriangleHit intersect_ray_triangle(const Ray& ray, const Triangle& triangle) 
 
   const auto& v = triangle.v;
   const Triangle translated{{v[0] - ray.origin, v[1] - ray.origin, v[2] - ray.origin}};
-  SlabClipper clipper(translated, d, forward, backward);
+  SlabClipper<Records> clipper(ray, triangle, translated, d, forward, backward, records);
 
   // The triangle's bounding box first: cheap, and it decides most far misses.
   if (!clipper.clip({1, 0, 0}) || !clipper.clip({0, 1, 0}) || !clipper.clip({0, 0, 1})) return {};
@@ -236,6 +247,17 @@ RayTriangleHit intersect_ray_triangle(const Ray& ray, const Triangle& triangle) 
   double unscaled = std::ldexp(t, -e);
   if (std::isfinite(unscaled) && std::ldexp(unscaled, e) != t) unscaled = std::nextafter(unscaled, -INFINITY);
   return {true, std::min(std::max(unscaled, ray.tmin), ray.tmax) + 0.0};
+}
+
+}  // namespace
+
+RayTriangleHit intersect_ray_triangle(const Ray& ray, const Triangle& triangle) {
+  bounds::NoRecords none;
+  return intersect(ray, triangle, none);
+}
+
+RayTriangleHit intersect_ray_triangle(const Ray& ray, const Triangle& triangle, bounds::Records& records) {
+  return intersect(ray, triangle, records);
 }
 
 }  // namespace cc

@@ -1,6 +1,12 @@
 #include "collide/rigid_transform.h"
 
+#include "collide/error_bounds.h"
+
 namespace cc {
+
+double transform_error_bound(const RigidTransform& t, double p_norm1) {
+  return bounds::TransformBound{p_norm1, max_abs(t.translation)}.total();
+}
 
 RigidTransform relative(const RigidTransform& a, const RigidTransform& b) {
   RigidTransform r;

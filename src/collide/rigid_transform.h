@@ -22,9 +22,7 @@ inline Vec3 apply(const RigidTransform& t, const Vec3& p) { return t.rotation * 
 RigidTransform relative(const RigidTransform& a, const RigidTransform& b);
 
 /// A bound on the error of each component of apply(t, p), for any p with norm1(p) <= p_norm1:
-/// 2^-50 (p_norm1 + max|translation|), plus the subnormal slack.
-inline double transform_error_bound(const RigidTransform& t, double p_norm1) {
-  return 0x1p-50 * (p_norm1 + max_abs(t.translation)) + fp::subnormal_slack;
-}
+/// 2^-50 (p_norm1 + max|translation|), plus the subnormal slack (bounds::TransformBound).
+double transform_error_bound(const RigidTransform& t, double p_norm1);
 
 }  // namespace cc

@@ -31,45 +31,61 @@ Interval BoxSet::project(const Vec3& axis) const {
 
 Vec3 BoxSet::centroid() const { return 0.5 * (box.lo + box.hi); }
 
-template <class A, class B>
-bool separates(const Vec3& axis, const A& a, const B& b, double perturbation) {
-  const Interval pa = a.project(axis), pb = b.project(axis);
-  const double gap = std::max(pb.lo - pa.hi, pa.lo - pb.hi);
-  // Each projected end is off by at most 3u |axis|_1 magnitude (a product and two additions
-  // per term), the gap adds one rounding; 5u covers both and the bound's own rounding.
-  const double error =
-      norm1(axis) * (5 * fp::u * (a.magnitude() + b.magnitude()) + perturbation) + fp::subnormal_slack;
-  return gap > error;
+namespace {
+
+// The record of a gap: the sets as they were projected.
+bounds::SatAxis sat_axis(const Vec3& axis, const TriangleSet& a, const TriangleSet& b, double gap,
+                         const bounds::SatBound& bound) {
+  return {axis, false, a.t, {}, b.t, gap, bound};
+}
+bounds::SatAxis sat_axis(const Vec3& axis, const BoxSet& a, const TriangleSet& b, double gap,
+                         const bounds::SatBound& bound) {
+  return {axis, true, {}, a.box, b.t, gap, bound};
 }
 
-template <class A, class B>
+}  // namespace
+
+template <class A, class B, class Records>
+bool separates(const Vec3& axis, const A& a, const B& b, double perturbation, Records& records) {
+  const Interval pa = a.project(axis), pb = b.project(axis);
+  const double gap = std::max(pb.lo - pa.hi, pa.lo - pb.hi);
+  const bounds::SatBound bound{norm1(axis), a.magnitude(), b.magnitude(), perturbation};
+  records.add(sat_axis(axis, a, b, gap, bound));
+  return gap > bound.total();
+}
+
+template <class A, class B, class Records>
 bool separated_by_degenerate_axes(const A& a, const B& b, std::span<const Vec3> generators,
-                                  double perturbation) {
+                                  double perturbation, Records& records) {
   std::vector<Vec3> normals;
   for (std::size_t i = 0; i < generators.size(); ++i) {
     for (std::size_t j = i + 1; j < generators.size(); ++j) {
       const Vec3 c = unit_scaled(cross(generators[i], generators[j]));
       if (c == Vec3{}) continue;
-      if (separates(c, a, b, perturbation)) return true;
+      if (separates(c, a, b, perturbation, records)) return true;
       normals.push_back(c);
     }
   }
   for (const Vec3& c : normals) {  // in-plane normals of a flat Minkowski difference
     for (const Vec3& g : generators) {
-      if (separates(unit_scaled(cross(c, g)), a, b, perturbation)) return true;
+      if (separates(unit_scaled(cross(c, g)), a, b, perturbation, records)) return true;
     }
   }
   const Vec3 o = unit_scaled(b.centroid() - a.centroid());
   for (const Vec3& g : generators) {  // a collinear difference: along and across its line
-    if (separates(g, a, b, perturbation)) return true;
-    if (separates(unit_scaled(cross(g, unit_scaled(cross(g, o)))), a, b, perturbation)) return true;
+    if (separates(g, a, b, perturbation, records)) return true;
+    if (separates(unit_scaled(cross(g, unit_scaled(cross(g, o)))), a, b, perturbation, records)) return true;
   }
-  return separates(o, a, b, perturbation);  // two points
+  return separates(o, a, b, perturbation, records);  // two points
 }
 
-template bool separates(const Vec3&, const TriangleSet&, const TriangleSet&, double);
-template bool separates(const Vec3&, const BoxSet&, const TriangleSet&, double);
-template bool separated_by_degenerate_axes(const TriangleSet&, const TriangleSet&, std::span<const Vec3>, double);
-template bool separated_by_degenerate_axes(const BoxSet&, const TriangleSet&, std::span<const Vec3>, double);
+#define CC_INSTANTIATE(A, R)                                                  \
+  template bool separates(const Vec3&, const A&, const TriangleSet&, double, R&); \
+  template bool separated_by_degenerate_axes(const A&, const TriangleSet&, std::span<const Vec3>, double, R&);
+CC_INSTANTIATE(TriangleSet, bounds::NoRecords)
+CC_INSTANTIATE(TriangleSet, bounds::Records)
+CC_INSTANTIATE(BoxSet, bounds::NoRecords)
+CC_INSTANTIATE(BoxSet, bounds::Records)
+#undef CC_INSTANTIATE
 
 }  // namespace cc::sat

@@ -9,6 +9,7 @@
 #include <span>
 
 #include "collide/aabb.h"
+#include "collide/bound_records.h"
 #include "collide/triangle.h"
 
 namespace cc::sat {
@@ -43,18 +44,19 @@ struct BoxSet {
 };
 
 /// True when the projections of a and b onto `axis` are apart by more than their rounding
-/// error, with both sets' coordinates also allowed to be off by `perturbation` (a bound on
-/// errors made before, such as a change of frame).
-template <class A, class B>
-bool separates(const Vec3& axis, const A& a, const B& b, double perturbation);
+/// error (bounds::SatBound), with both sets' coordinates also allowed to be off by
+/// `perturbation` (a bound on errors made before, such as a change of frame). Records the gap
+/// (bounds::SatAxis) into `records` (bounds::NoRecords or bounds::Records).
+template <class A, class B, class Records>
+bool separates(const Vec3& axis, const A& a, const B& b, double perturbation, Records& records);
 
 /// The candidate axes that the usual face and edge axes lack when the Minkowski difference of
 /// a and b is not full-dimensional (coplanar or degenerate shapes): for the edge directions
 /// `generators` of both sets, every cross product c of two of them, every c x g, every g,
 /// every g x (g x o) and o, where o joins the centroids. With these the test is complete for
 /// flat, collinear and single-point configurations. True when one of them separates.
-template <class A, class B>
+template <class A, class B, class Records>
 bool separated_by_degenerate_axes(const A& a, const B& b, std::span<const Vec3> generators,
-                                  double perturbation);
+                                  double perturbation, Records& records);
 
 }  // namespace cc::sat

@@ -7,7 +7,8 @@ namespace {
 
 // The triangle and the box [box.lo, box.hi] in a common frame in which the box is axis
 // aligned; the triangle's coordinates may be off by `perturbation` each.
-bool test_in_box_frame(const Triangle& t, const Aabb& box, double perturbation) {
+template <class Records>
+bool test_in_box_frame(const Triangle& t, const Aabb& box, double perturbation, Records& records) {
   // The box's axes: the projections of the triangle onto them are its coordinates.
   for (int k = 0; k < 3; ++k) {
     const double low = std::min({t.v[0][k], t.v[1][k], t.v[2][k]});
@@ -18,11 +19,11 @@ bool test_in_box_frame(const Triangle& t, const Aabb& box, double perturbation) 
   const sat::BoxSet set{box};
   // Edge directions scaled to unit magnitude: short edges still give axes that do not underflow.
   const Vec3 edges[3] = {unit_scaled(t.v[1] - t.v[0]), unit_scaled(t.v[2] - t.v[1]), unit_scaled(t.v[0] - t.v[2])};
-  if (sat::separates(cross(edges[0], edges[1]), set, tri, perturbation)) return false;
+  if (sat::separates(cross(edges[0], edges[1]), set, tri, perturbation, records)) return false;
   for (const Vec3& e : edges) {  // e x x, e x y, e x z: exact components, no arithmetic
-    if (sat::separates(Vec3{0, e.z, -e.y}, set, tri, perturbation)) return false;
-    if (sat::separates(Vec3{-e.z, 0, e.x}, set, tri, perturbation)) return false;
-    if (sat::separates(Vec3{e.y, -e.x, 0}, set, tri, perturbation)) return false;
+    if (sat::separates(Vec3{0, e.z, -e.y}, set, tri, perturbation, records)) return false;
+    if (sat::separates(Vec3{-e.z, 0, e.x}, set, tri, perturbation, records)) return false;
+    if (sat::separates(Vec3{e.y, -e.x, 0}, set, tri, perturbation, records)) return false;
   }
   // A box with positive extent on every axis makes the Minkowski difference full-dimensional,
   // and then the 13 axes are complete. Otherwise try the axes of degenerate configurations.
@@ -37,18 +38,18 @@ bool test_in_box_frame(const Triangle& t, const Aabb& box, double perturbation) 
     }
   }
   for (const Vec3& e : edges) generators[n++] = e;
-  return !sat::separated_by_degenerate_axes(set, tri, std::span<const Vec3>(generators, n), perturbation);
+  return !sat::separated_by_degenerate_axes(set, tri, std::span<const Vec3>(generators, n), perturbation, records);
 }
 
-}  // namespace
-
-bool test_triangle_aabb(const Triangle& t, const Aabb& box) {
-  if (!test_in_box_frame(t, box, 0)) return false;
+template <class Records>
+bool test_aabb(const Triangle& t, const Aabb& box, Records& records) {
+  if (!test_in_box_frame(t, box, 0, records)) return false;
   return finite(t) && finite(box.lo) && finite(box.hi) && box.lo.x <= box.hi.x && box.lo.y <= box.hi.y &&
          box.lo.z <= box.hi.z;
 }
 
-bool test_triangle_obb(const Triangle& t, const Obb& box) {
+template <class Records>
+bool test_obb(const Triangle& t, const Obb& box, Records& records) {
   Triangle local;
   double reach = 0;  // largest |v - center|_1
   for (int k = 0; k < 3; ++k) {
@@ -56,14 +57,35 @@ bool test_triangle_obb(const Triangle& t, const Obb& box) {
     local.v[k] = transpose_times(box.axes, offset);
     reach = std::max(reach, norm1(offset));
   }
-  // Each local coordinate is a difference, three products and two additions away from exact
-  // (4u |v - c|_1, 5u used). Axes orthonormal to within eta move the box's faces in this
-  // frame by at most eta (sum of half extents) (2 eta used).
+  // The local coordinates' rounding, and the box's faces moved by the axes' deviation from
+  // orthonormal (see bounds::FrameChangeBound).
   const double half_sum = fp::sum3(box.half.x, box.half.y, box.half.z);
-  const double perturbation = 5 * fp::u * reach + 2 * kObbOrthonormalTolerance * half_sum + fp::subnormal_slack;
-  if (!test_in_box_frame(local, Aabb{-box.half, box.half}, perturbation)) return false;
+  const bounds::FrameChangeBound bound{reach, half_sum};
+  records.add(bounds::FrameChange{t, box, local, bound});
+  const double perturbation = bound.total();
+  if (!test_in_box_frame(local, Aabb{-box.half, box.half}, perturbation, records)) return false;
   return finite(t) && finite(box.center) && finite(box.half) && finite(box.axes) && box.half.x >= 0 &&
          box.half.y >= 0 && box.half.z >= 0;
+}
+
+}  // namespace
+
+bool test_triangle_aabb(const Triangle& t, const Aabb& box) {
+  bounds::NoRecords none;
+  return test_aabb(t, box, none);
+}
+
+bool test_triangle_aabb(const Triangle& t, const Aabb& box, bounds::Records& records) {
+  return test_aabb(t, box, records);
+}
+
+bool test_triangle_obb(const Triangle& t, const Obb& box) {
+  bounds::NoRecords none;
+  return test_obb(t, box, none);
+}
+
+bool test_triangle_obb(const Triangle& t, const Obb& box, bounds::Records& records) {
+  return test_obb(t, box, records);
 }
 
 }  // namespace cc

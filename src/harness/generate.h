@@ -7,6 +7,7 @@
 
 #include "harness/choices.h"
 #include "harness/input.h"
+#include "harness/oracle.h"
 
 namespace cc::harness {
 
@@ -17,6 +18,9 @@ struct GenerateOptions {
   /// Where FCL's test meshes (env.obj, rob.obj) are, for the mesh queries; without them those
   /// draw procedural meshes only.
   std::filesystem::path mesh_folder = "corpora/meshes";
+  /// The exact reference, for the constructions placed at an exact margin of the decision by
+  /// bisection (margin_bisection.h); without it they stay where floating point put them.
+  const ExactReference* exact = nullptr;
 };
 
 Input generate(QueryKind kind, Choices& choices, const GenerateOptions& options = {});

@@ -87,8 +87,54 @@ AabbAabbInput generate_aabb_aabb(ValueSource& v, const GenerateOptions& options)
   return in;
 }
 
-KdopKdopInput generate_kdop_kdop(ValueSource& v, const GenerateOptions&) {
-  static constexpr int kKs[] = {18, 6, 14, 16, 24, 26};
+namespace {
+
+constexpr int kKs[] = {18, 6, 14, 16, 24, 26};
+
+// Two point sets at an exact margin in the regimes of fit_kdop's bound: clusters far from the
+// origin compared with their spread (where 2- and 3-term projections cancel), spreads up to 2^40
+// apart; b slid from a's centre along a slab's direction or any.
+KdopKdopInput kdops_at_the_bound(ValueSource& v, const GenerateOptions& options) {
+  Choices& c = v.choices();
+  KdopKdopInput in;
+  in.k = kKs[c.draw(6)];
+  const double size = draw_size(v);
+  const Vec3 center = v.point() + draw_far_offset(v, size);
+  const auto cluster = [&](double spread) {
+    std::vector<Vec3> points;
+    const auto n = 1 + c.draw(6);
+    for (std::uint64_t i = 0; i < n; ++i) points.push_back(center + std::ldexp(spread, -static_cast<int>(c.draw(41))) * draw_direction(v));
+    return points;
+  };
+  in.a = cluster(size);
+  const std::vector<Vec3> b = cluster(std::ldexp(size, v.small_int(20)));
+  const auto dirs = kdop_directions(in.k);
+  Vec3 w = draw_direction(v);
+  if (c.chance(60)) {
+    const KdopDirection d = dirs[c.draw(dirs.size())];
+    w = {static_cast<double>(d.x), static_cast<double>(d.y), static_cast<double>(d.z)};
+  }
+  double reach = 0;
+  for (const Vec3& p : in.a) reach = std::max(reach, std::fabs(dot(p - center, w)));
+  for (const Vec3& p : b) reach = std::max(reach, std::fabs(dot(p - center, w)));
+  const auto placed = [&in, &b, &w](double s) {
+    KdopKdopInput out = in;
+    for (const Vec3& p : b) out.b.push_back(p + s * w);
+    return out;
+  };
+  const double contact = 2 * reach / dot(w, w);
+  const double s = place_at([&placed](double t) -> Input { return placed(t); }, 0, 2 * contact + 1 / std::sqrt(dot(w, w)),
+                            draw_margin_target(c), options, contact);
+  KdopKdopInput out = placed(s);
+  shuffle(c, out.a);
+  shuffle(c, out.b);
+  return out;
+}
+
+}  // namespace
+
+KdopKdopInput generate_kdop_kdop(ValueSource& v, const GenerateOptions& options) {
+  if (v.choices().chance(35)) return kdops_at_the_bound(v, options);
   KdopKdopInput in;
   in.k = kKs[v.choices().draw(6)];
   const Vec3 center = v.point();
@@ -108,6 +154,8 @@ KdopKdopInput generate_kdop_kdop(ValueSource& v, const GenerateOptions&) {
       cluster(in.b);
       shift_to_touch(in, v, v.choices().chance(25));
   }
+  shuffle(v.choices(), in.a);
+  shuffle(v.choices(), in.b);
   return in;
 }
 
@@ -123,7 +171,64 @@ Obb draw_obb(ValueSource& v, const GenerateOptions& options) {
   return b;
 }
 
+ObbObbInput obb_pair_in_regime(ValueSource& v) {
+  Choices& c = v.choices();
+  const double size = draw_size(v);
+  ObbObbInput in;
+  in.a.center = v.point() + draw_far_offset(v, size);
+  in.a.half = draw_aspect_extents(v, size);
+  in.a.axes = draw_rotation(v);
+  in.b.center = in.a.center;
+  in.b.half = draw_aspect_extents(v, c.chance(50) ? size : std::ldexp(size, v.small_int(40)));
+  in.b.axes = c.chance(40) ? nearly_parallel(v, in.a.axes) : draw_rotation(v);
+  if (c.chance(50)) in.a.axes = perturb_to_tolerance(v, in.a.axes);
+  if (c.chance(50)) in.b.axes = perturb_to_tolerance(v, in.b.axes);
+  return in;
+}
+
+Vec3 slide_direction(ValueSource& v, const Obb& a, const Obb& b) {
+  Choices& c = v.choices();
+  Vec3 w;
+  switch (c.draw(4)) {
+    case 0: w = a.axes.col[c.draw(3)]; break;                                 // face to face
+    case 1: w = b.axes.col[c.draw(3)]; break;
+    case 2: w = cross(a.axes.col[c.draw(3)], b.axes.col[c.draw(3)]); break;  // edge to edge
+    default: w = draw_direction(v);
+  }
+  if (!(max_abs(w) > 0x1p-60)) w = draw_direction(v);
+  return c.chance(50) ? -1.0 * w : w;
+}
+
+double reach_along(const Obb& box, const Vec3& w) {
+  double r = 0;
+  for (int k = 0; k < 3; ++k) r += box.half[k] * std::fabs(dot(box.axes.col[k], w));
+  return r;
+}
+
+namespace {
+
+// Two boxes at an exact margin of the decision, in the regimes of test_obb_obb's bound: b slid
+// from a's centre along a face normal, an edge-edge axis or any direction.
+ObbObbInput obb_pair_at_the_bound(ValueSource& v, const GenerateOptions& options) {
+  const ObbObbInput in = obb_pair_in_regime(v);
+  const Vec3 w = slide_direction(v, in.a, in.b);
+  const Obb &a = in.a, &b = in.b;
+  const auto placed = [&a, &b, &w](double s) -> ObbObbInput {
+    Obb moved = b;
+    moved.center = a.center + s * w;
+    return {a, moved};
+  };
+  const double contact = (reach_along(a, w) + reach_along(b, w)) / dot(w, w);  // along a separating w
+  const double apart = 2 * contact + std::sqrt(max_abs(a.half) + max_abs(b.half)) + 1 / std::sqrt(dot(w, w));
+  const double s = place_at([&placed](double t) -> Input { return placed(t); }, 0, apart,
+                            draw_margin_target(v.choices()), options, contact);
+  return placed(s);
+}
+
+}  // namespace
+
 ObbObbInput generate_obb_obb(ValueSource& v, const GenerateOptions& options) {
+  if (v.choices().chance(35)) return obb_pair_at_the_bound(v, options);
   ObbObbInput in;
   in.a = draw_obb(v, options);
   in.b = draw_obb(v, options);

@@ -49,6 +49,7 @@ BroadphaseInput generate_broadphase(ValueSource& v, const GenerateOptions& optio
       boxes.push_back(grid_box(v, options));
     }
   }
+  shuffle(c, boxes);  // an identical or nested box may come before the box it copies
   // When each box is in the scene: from an added frame to a removed one (and maybe back).
   std::vector<std::size_t> added(n, 0), removed(n, frames), readded(n, frames);
   for (std::size_t i = 0; i < n; ++i) {

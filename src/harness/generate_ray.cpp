@@ -65,9 +65,59 @@ double exact_component(ValueSource& v, double f, int a, int c) {
   return std::ldexp(b * h, -a);
 }
 
+// A ray and a box at an exact margin in the regimes of intersect_ray_aabb's bound: boxes of
+// aspect ratio up to 2^40 far from the origin, rays from up to 2^40 times the box's size away (or
+// from very near), nearly parallel to a slab, with negative parameters (the box behind the origin
+// on a line), and segments; the ray slid sideways until it grazes the box.
+RayAabbInput ray_at_the_bound(ValueSource& v, const GenerateOptions& options) {
+  Choices& c = v.choices();
+  const double size = draw_size(v);
+  const Vec3 center = v.point() + draw_far_offset(v, size), half = draw_aspect_extents(v, size);
+  RayAabbInput in;
+  in.box = {center - half, center + half};
+  Vec3 d = draw_direction(v);
+  if (c.chance(30)) {  // nearly parallel to a slab
+    const int k = static_cast<int>(c.draw(3));
+    d[k] = (c.chance(50) ? -1.0 : 1.0) * std::ldexp(max_abs(d), -static_cast<int>(8 + c.draw(53)));
+  }
+  const double distance = std::ldexp(1.0, v.small_int(40)) * size / max_abs(d);  // the centre at t = distance
+  const bool behind = c.chance(25);  // a line whose box lies at negative parameters
+  const Vec3 origin = behind ? center + distance * d : center - distance * d;
+  in.ray = {origin, d, behind ? -INFINITY : 0, INFINITY};
+  if (!behind && c.chance(30)) {
+    // A segment whose end is slid to the box's entry face: the slab parameter rounds either way.
+    const auto ending = [&in](double t) {
+      RayAabbInput out = in;
+      out.ray.tmax = t;
+      return out;
+    };
+    double entry = 0;  // in floating point: the largest near slab parameter
+    for (int k = 0; k < 3; ++k) {
+      if (d[k] != 0) entry = std::max(entry, ((d[k] > 0 ? in.box.lo[k] : in.box.hi[k]) - origin[k]) / d[k]);
+    }
+    const double t = place_at([&ending](double x) -> Input { return ending(x); }, distance, 0, draw_margin_target(c),
+                              options, entry);
+    return ending(t);
+  }
+  if (c.chance(20)) in.ray.tmax = distance * (c.chance(50) ? 1.0 : 0.5 + static_cast<double>(c.draw(1024)) / 512);
+  // Sideways: across the direction, towards a face, an edge or any.
+  Vec3 w = cross(d, Vec3{c.chance(34) ? 1.0 : 0.0, c.chance(50) ? 1.0 : 0.0, 1.0});
+  if (c.chance(30) || !(max_abs(w) > 0)) w = draw_direction(v);
+  const double shadow = (std::fabs(half.x * w.x) + std::fabs(half.y * w.y) + std::fabs(half.z * w.z)) / dot(w, w);
+  const auto placed = [&in, &w](double s) {
+    RayAabbInput out = in;
+    out.ray.origin = in.ray.origin + s * w;
+    return out;
+  };
+  const double s = place_at([&placed](double t) -> Input { return placed(t); }, 0, 2 * shadow + size / std::sqrt(dot(w, w)),
+                            draw_margin_target(c), options, shadow);
+  return placed(s);
+}
+
 }  // namespace
 
 RayAabbInput generate_ray_aabb(ValueSource& v, const GenerateOptions& options) {
+  if (v.choices().chance(35)) return ray_at_the_bound(v, options);
   RayAabbInput in;
   in.box = draw_aabb(v, options);
   Ray& r = in.ray;

@@ -22,9 +22,27 @@ Sphere draw_sphere(ValueSource& v, const GenerateOptions& options) {
   return s;
 }
 
+// Two balls at an exact margin in the regimes of test_sphere_sphere's bound: far from the origin
+// compared with their size, radii up to 2^40 apart, points; b slid from a's centre along any
+// direction.
+SphereSphereInput balls_at_the_bound(ValueSource& v, const GenerateOptions& options) {
+  Choices& c = v.choices();
+  const double size = draw_size(v);
+  const Sphere a{v.point() + draw_far_offset(v, size), c.chance(15) ? 0.0 : size};
+  const double rb = c.chance(15) ? 0.0 : std::ldexp(draw_size(v), v.small_int(40)) * (c.chance(50) ? 1.0 : size);
+  const Vec3 w = draw_direction(v);
+  const double length = std::sqrt(dot(w, w));
+  const auto placed = [&a, &w, rb](double s) { return SphereSphereInput{a, {a.center + s * w, rb}}; };
+  const double contact = (a.radius + rb) / length;
+  const double s = place_at([&placed](double t) -> Input { return placed(t); }, 0, 2 * contact + 1 / length,
+                            draw_margin_target(c), options, contact);
+  return placed(s);
+}
+
 }  // namespace
 
 SphereSphereInput generate_sphere_sphere(ValueSource& v, const GenerateOptions& options) {
+  if (v.choices().chance(35)) return balls_at_the_bound(v, options);
   SphereSphereInput in;
   in.a = draw_sphere(v, options);
   const auto mode = v.choices().draw(4);

@@ -3,12 +3,17 @@
 
 #include <memory>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "harness/answer.h"
 #include "harness/explanation.h"
 #include "harness/input.h"
+
+namespace cc::bounds {
+struct Records;  // collide/bound_records.h
+}  // namespace cc::bounds
 
 namespace cc::harness {
 
@@ -50,12 +55,29 @@ struct ExactVerdict {
   double margin_of(const FacePair& pair) const;
 };
 
+/// How far one certified quantity of the library was from its exact value, against one term of
+/// the bound the library certified it with (see bound_coverage.h).
+struct TermError {
+  std::string_view family;  // the kind of quantity, e.g. "slab parameter", "axis"
+  std::string_view term;    // a term of its bound, or "total": the whole bound, slack included
+  double error = 0;         // the actual error of what the term covers (>= 0; inf: a bound failed)
+  double bound = 0;         // the term's value
+  /// Whether the quantity is at its decision: its exact value (a gap, a difference of squares,
+  /// a determinant) within a few times its bound of the threshold, or an extreme point of what
+  /// it bounds. Only there can an error decide an answer. (Quantities with no threshold of their
+  /// own are at the case's decision: true.)
+  bool decisive = true;
+};
+
 class ExactReference {
  public:
   virtual ~ExactReference() = default;
   virtual ExactVerdict judge(const Input& input) const = 0;
   /// The reasoning behind judge(), for triage. Out of contract inputs get what can be shown.
   virtual Explanation explain(const Input& input) const = 0;
+  /// For every certified quantity in `records` (what the library's probed tests computed, see
+  /// collide/bound_records.h), the actual error of what each term of its bound covers.
+  virtual std::vector<TermError> bound_errors(const bounds::Records& records) const = 0;
 };
 
 class SecondOpinion {

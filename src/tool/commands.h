@@ -11,6 +11,7 @@ inline constexpr int kExitBadInput = 2;
 
 void add_campaign_command(CLI::App& app, int& exit_code);
 void add_bands_command(CLI::App& app, int& exit_code);
+void add_bounds_command(CLI::App& app, int& exit_code);
 void add_triage_command(CLI::App& app, int& exit_code);
 void add_shrink_command(CLI::App& app, int& exit_code);
 void add_replay_command(CLI::App& app, int& exit_code);

@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   int exit_code = 0;
   cc::tool::add_campaign_command(app, exit_code);
   cc::tool::add_bands_command(app, exit_code);
+  cc::tool::add_bounds_command(app, exit_code);
   cc::tool::add_triage_command(app, exit_code);
   cc::tool::add_shrink_command(app, exit_code);
   cc::tool::add_replay_command(app, exit_code);

@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "harness/features.h"
+#include "harness/generate_detail.h"
 #include "harness/input_json.h"
 #include "oracle/exact/exact_reference.h"
 #include "case_budget.h"
@@ -103,6 +104,30 @@ TEST(Generate, SphereSphereMeetsTouchingBallsWhoseSquaresRoundApart) {
     return d.x * d.x + d.y * d.y + d.z * d.z > reach * reach;
   });
   EXPECT_GT(count, n / 100);
+}
+
+// One vertex on the box's boundary or a few ULPs off it on one axis, whichever axis is nudged:
+// each of its coordinates within 4 ULPs of the box's range on that axis. (The box's ranges are
+// far apart, so a coordinate nudged from another axis's value lies far outside.)
+TEST(Generate, ATriangleTouchingAtAVertexIsOnTheBoundaryOrJustOffIt) {
+  const Aabb box{{100, -7, 3}, {101, -6, 4}};
+  const auto within_ulps = [](double x, double lo, double hi) {
+    double low = lo, high = hi;
+    for (int i = 0; i < 4; ++i) low = std::nextafter(low, -INFINITY), high = std::nextafter(high, INFINITY);
+    return x >= low && x <= high;
+  };
+  for (std::uint64_t seed = 0; seed < 2000; ++seed) {
+    RandomChoices c(seed);
+    ValueSource values(c, {});
+    const Triangle t = detail::triangle_touching_at_a_vertex(values, box);
+    int near = 0;
+    for (const Vec3& p : t.v) {
+      bool on = true;
+      for (int k = 0; k < 3; ++k) on &= within_ulps(p[k], box.lo[k], box.hi[k]);
+      near += on;
+    }
+    ASSERT_GE(near, 1) << "seed " << seed << ": no vertex on or just off the box: " << input_to_json(TriAabbInput{t, box}).dump();
+  }
 }
 
 TEST(Generate, OutOfContractCasesLeaveTheDomain) {

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
+#include "harness/configurations.h"
 #include "harness/evaluate.h"
 #include "harness/input_json.h"
 #include "oracle/exact/exact_reference.h"
@@ -29,12 +30,14 @@ TEST_P(Differential, TheLibraryIsNeverAnImplBug) {
   const bool passed = check_property(property, kind, 10, cases, met, [&](const Input& input) {
     const Evaluation e = evaluate(input, exact, nullptr);
     met.count(features_of(input, e.exact));
+    met.count(configurations_of(input, e.exact));
     if (e.verdict.cls == CaseClass::impl_bug) {
       RC_FAIL("impl_bug: " + e.verdict.parties[0].why + "\n  inputs: " + input_to_json(input).dump());
     }
-  });
+  }, &exact);
   EXPECT_TRUE(passed) << property;
   expect_met_the_boundary(property, kind, met);
+  expect_met_every_configuration(property, kind, met);
 }
 
 INSTANTIATE_TEST_SUITE_P(EveryQuery, Differential, ::testing::ValuesIn(kAllQueryKinds),

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 #include "test_paths.h"
+#include "harness/configurations.h"
 
 #include <cstdlib>
 #include <iostream>
@@ -43,14 +44,20 @@ void Met::count(const harness::Features& f) {
   RC_TAG(f.touching ? "touching" : "-", f.parallel ? "parallel" : "-", f.degenerate ? "degenerate" : "-");
 }
 
+void Met::count(const std::vector<std::string_view>& names) {
+  for (std::string_view n : names) ++configurations[n];
+}
+
 bool check_property(const std::string& name, harness::QueryKind kind, int out_of_contract_percent, int cases,
-                    Met& met, const std::function<void(const harness::Input&)>& body) {
+                    Met& met, const std::function<void(const harness::Input&)>& body,
+                    const harness::ExactReference* exact) {
   (void)met;
   return run(name, cases, [&] {
     const auto choices = *rc::gen::container<std::vector<std::uint64_t>>(kChoices, rc::gen::arbitrary<std::uint64_t>());
     harness::ReplayChoices replay(choices);
     harness::GenerateOptions options;
     options.mesh_folder = fcl_mesh_folder();
+    options.exact = exact;
     options.out_of_contract = replay.chance(out_of_contract_percent);
     body(harness::generate(kind, replay, options));
   });
@@ -73,6 +80,17 @@ void expect_met_the_boundary(const std::string& name, harness::QueryKind kind, c
     EXPECT_GT(met.parallel, 0) << name << " never met a parallel configuration";
   }
   EXPECT_GT(met.degenerate, 0) << name << " never met a degenerate shape";
+}
+
+void expect_met_every_configuration(const std::string& name, harness::QueryKind kind, const Met& met) {
+  std::cout << name << ", configurations met:";
+  for (std::string_view c : harness::expected_configurations(kind)) {
+    const auto it = met.configurations.find(c);
+    const int n = it == met.configurations.end() ? 0 : it->second;
+    std::cout << " " << c << " " << n << ";";
+    EXPECT_GT(n, 0) << name << " never met the configuration \"" << c << "\"";
+  }
+  std::cout << std::endl;
 }
 
 }  // namespace cc::test
