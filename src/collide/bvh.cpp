@@ -39,11 +39,6 @@ namespace detail {
 
 std::array<Vec3, 3> face_points(const Mesh& mesh, std::uint32_t face) { return mesh.triangle(face).v; }
 
-Vec3 centroid(const Mesh& mesh, std::uint32_t face) {
-  const auto p = face_points(mesh, face);
-  return (1.0 / 3) * (p[0] + p[1] + p[2]);
-}
-
 Topology layout(const LinkedTree& tree) {
   Topology t;
   if (tree.root < 0) return t;

@@ -55,8 +55,12 @@ Vec3 normalized(const Vec3& v) {
   return (1 / n) * v;
 }
 
-// Right-handed orthonormal axes from the eigenvectors (Gram-Schmidt on the two largest).
-Mat3 axes_of(const Matrix& cov) {
+}  // namespace
+
+// Gram-Schmidt on the eigenvectors of the two largest eigenvalues.
+Mat3 principal_axes(const std::array<double, 6>& m) {
+  Matrix cov;
+  cov << m[0], m[3], m[5], m[3], m[1], m[4], m[5], m[4], m[2];
   if (cov.isZero(0)) return Mat3::identity();  // a single point: any frame, the simplest
   Eigen::SelfAdjointEigenSolver<Matrix> solver(cov);
   const Matrix& v = solver.eigenvectors();  // columns, by increasing eigenvalue
@@ -67,10 +71,9 @@ Mat3 axes_of(const Matrix& cov) {
   return Mat3::from_columns(a0, a1, cross(a0, a1));
 }
 
-}  // namespace
-
 Mat3 obb_axes(std::span<const Vec3> points, const ConvexHull& hull) {
-  return axes_of(covariance(points, hull, points[0]));
+  const Matrix c = covariance(points, hull, points[0]);
+  return principal_axes({c(0, 0), c(1, 1), c(2, 2), c(0, 1), c(1, 2), c(2, 0)});
 }
 
 Obb fit_obb(std::span<const Vec3> points) { return fit_obb(obb_axes(points, convex_hull(points)), points); }

@@ -27,6 +27,11 @@ Mat3 obb_axes(std::span<const Vec3> points, const ConvexHull& hull);
 /// ... and the smallest box with those axes that contains the points (padded as above).
 Obb fit_obb(const Mat3& axes, std::span<const Vec3> points);
 
+/// Right-handed orthonormal axes (to within 2^-50) along the eigenvectors of the symmetric
+/// matrix with entries xx, yy, zz, xy, yz, zx (a covariance), the largest eigenvalue's first,
+/// then the middle one's: the identity for the zero matrix or when no eigenvectors are found.
+Mat3 principal_axes(const std::array<double, 6>& symmetric);
+
 /// The 8 corners of the box: center +- half_0 axis_0 +- half_1 axis_1 +- half_2 axis_2, rounded.
 std::array<Vec3, 8> corners(const Obb& box);
 
