@@ -50,7 +50,7 @@ std::size_t bvh_bytes(const Bvh<BV>& t) {
     return p.points.capacity() * sizeof(Vec3) + p.range.capacity() * sizeof(p.range[0]);
   };
   return t.nodes.capacity() * sizeof(BvhNode<BV>) + t.order.capacity() * sizeof(std::uint32_t) +
-         t.triangles.capacity() * sizeof(Triangle) + points(t.corners) + points(t.hull_points);
+         t.faces.capacity() * sizeof(t.faces[0]) + t.vertices.capacity() * sizeof(Vec3) + points(t.hull_points);
 }
 
 std::filesystem::path corpora_root() {

@@ -133,7 +133,7 @@ class RayTraversal {
     bool any = false;
     for (std::uint32_t s = node.first; s < node.first + node.count; ++s) {
       ++result_.counters.triangle_tests;
-      const RayTriangleHit h = intersect_ray_triangle(ray_, bvh_.triangles[s]);
+      const RayTriangleHit h = intersect_ray_triangle(ray_, bvh_.triangle(s));
       if (!h.hit) continue;
       any = true;
       const std::uint32_t face = bvh_.order[s];
