@@ -165,32 +165,46 @@ void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points) {
   bvh.magnitude = fp::sum3(far[0], far[1], far[2]);
 }
 
-// OBBs, children before parents: the node's convex hull from its children's hull points (a
-// leaf's from its vertices), the axes from the hull's surface (obb_axes), the extents over all
-// the node's vertices.
+// OBBs, children before parents: the node's convex hull from its children's hull vertices (a
+// leaf's from its vertices) by fast_convex_hull, the axes from the hull's surface (obb_axes),
+// the extents over all the node's vertices (so the box holds them whatever the hull left out).
+// In reverse pre-order a node comes right after its left subtree, which came right after its
+// right subtree: the children's hull vertices are the last two sets on a stack, side by side.
 void fit_obbs(Bvh<Obb>& bvh) {
-  std::vector<std::vector<Vec3>> hull(bvh.nodes.size());
-  std::vector<Vec3> vertices;
+  std::vector<Vec3> stack, vertices, hull_vertices;
+  std::vector<std::size_t> sizes;  // of the sets on the stack
   for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
     BvhNode<Obb>& n = bvh.nodes[i];
     vertices.clear();
     append_vertices(bvh, n, vertices);
-    std::vector<Vec3> candidates;
+    std::size_t count = 0;
     if (n.leaf()) {
-      candidates = vertices;
+      count = vertices.size();
+      stack.insert(stack.end(), vertices.begin(), vertices.end());
     } else {
-      candidates = std::move(hull[n.left]);
-      candidates.insert(candidates.end(), hull[n.right].begin(), hull[n.right].end());
-      hull[n.right] = {};
+      count = sizes.back();
+      sizes.pop_back();
+      count += sizes.back();
+      sizes.pop_back();
     }
+    const std::span<Vec3> candidates = std::span(stack).last(count);
     std::sort(candidates.begin(), candidates.end(), lexicographic_less);
-    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
-    const ConvexHull h = convex_hull(candidates);
-    n.bv = fit_obb(obb_axes(candidates, h), vertices);
-    for (std::uint32_t v : h.vertices) hull[i].push_back(candidates[v]);
-    for (const Vec3& c : corners(n.bv)) bvh.magnitude = std::max(bvh.magnitude, norm1(c));
+    const std::span<const Vec3> distinct =
+        candidates.first(static_cast<std::size_t>(std::unique(candidates.begin(), candidates.end()) - candidates.begin()));
+    const ConvexHull h = fast_convex_hull(distinct);
+    n.bv = fit_obb(obb_axes(distinct, h), vertices);
+    hull_vertices.clear();
+    for (std::uint32_t v : h.vertices) hull_vertices.push_back(distinct[v]);
+    stack.resize(stack.size() - count);
+    stack.insert(stack.end(), hull_vertices.begin(), hull_vertices.end());
+    sizes.push_back(hull_vertices.size());
+    // Every point of the box (the vertices among them) has norm1 at most that of its center plus
+    // its half extents times their axes' norm1.
+    const Obb& b = n.bv;
+    const double reach = fp::sum3(b.half.x * norm1(b.axes.col[0]), b.half.y * norm1(b.axes.col[1]),
+                                  b.half.z * norm1(b.axes.col[2]));
+    bvh.magnitude = std::max(bvh.magnitude, norm1(b.center) + reach);
   }
-  for (const Vec3& v : bvh.vertices) bvh.magnitude = std::max(bvh.magnitude, norm1(v));
 }
 
 template <class BV>

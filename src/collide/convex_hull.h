@@ -32,4 +32,12 @@ struct ConvexHull {
 
 ConvexHull convex_hull(std::span<const Vec3> points);
 
+/// The same shape in floating point, fast (quickhull, O(n log n) expected, no library call), for
+/// fitting: an OBB's axes from the hull's surface. No exactness: a point within 2^-40 of the
+/// points' extent (plus 2^-44 of their magnitude) of the hull's boundary may be left out, and
+/// one that rounding leaves inconsistent there is; `vertices` are the hull's vertices so found
+/// (for flat input, the polygon's corners; for collinear input, two ends; coincident, one).
+/// Points must be finite and distinct (repeated points are harmless but slow it down).
+ConvexHull fast_convex_hull(std::span<const Vec3> points);
+
 }  // namespace cc

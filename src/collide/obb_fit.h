@@ -12,7 +12,8 @@ namespace cc {
 /// covariance of the convex hull's surface (each hull triangle weighted by its area, Eigen's
 /// self-adjoint solver), its extents those of the points along the axes.
 ///  - Conservative: every point lies in the box in exact arithmetic. The half extents are
-///    widened by 2^-44 of the points' magnitude, which covers the rounding of the projections
+///    widened by 2^-44 of the points' magnitude (the sum over the coordinates of their largest
+///    magnitude, at least every point's norm1), which covers the rounding of the projections
 ///    and the axes' deviation from orthonormal.
 ///  - Axes: right-handed and orthonormal to within 2^-50 (well within kObbOrthonormalTolerance).
 ///  - Flat points (a triangle, a plate): the polygon's covariance, so one axis is the normal.

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <random>
 
 namespace cc {
 namespace {
@@ -78,6 +79,62 @@ TEST(ConvexHull, NearlyCollinearPointsKeepThePointOffTheLine) {
   // The middle point is one ulp off the line: it is a vertex of the (very thin) triangle.
   const std::vector<Vec3> p = {{0, 0, 0}, {1, 1, std::nextafter(1.0, 2.0)}, {3, 3, 3}};
   EXPECT_EQ(sorted_vertices(p), (std::vector<std::uint32_t>{0, 1, 2}));
+}
+
+TEST(FastConvexHull, CubeWithInnerAndFacePoints) {
+  std::vector<Vec3> p;
+  for (int i = 0; i < 8; ++i) p.push_back({double(i & 1), double((i >> 1) & 1), double((i >> 2) & 1)});
+  p.push_back({0.5, 0.5, 0.5});   // inside
+  p.push_back({0.5, 0.25, 1});    // on the top face
+  const ConvexHull h = fast_convex_hull(p);
+  EXPECT_NEAR(area(p, h), 6, 1e-12);
+  for (std::uint32_t v = 0; v < 8; ++v) EXPECT_TRUE(has(h, v));
+  EXPECT_FALSE(has(h, 8));
+}
+
+TEST(FastConvexHull, FlatCollinearAndSinglePoints) {
+  // A square in a tilted plane, with a point inside: its corners, the square covered twice.
+  const Vec3 u{1, 2, 2}, v{2, 1, -2};  // orthogonal, length 3
+  std::vector<Vec3> square;
+  for (const auto& [a, b] : {std::pair{0, 0}, {1, 0}, {1, 1}, {0, 1}}) square.push_back(double(a) * u + double(b) * v);
+  square.push_back(0.5 * u + 0.25 * v);
+  const ConvexHull flat = fast_convex_hull(square);
+  EXPECT_NEAR(area(square, flat), 2 * 9, 1e-12);
+  EXPECT_EQ(flat.vertices.size(), 4u);
+  EXPECT_FALSE(has(flat, 4));
+  const std::vector<Vec3> line = {{1, 1, 1}, {0, 0, 0}, {3, 3, 3}, {2, 2, 2}};
+  const ConvexHull l = fast_convex_hull(line);
+  EXPECT_TRUE(l.triangles.empty());
+  EXPECT_EQ(l.vertices.size(), 2u);
+  EXPECT_TRUE(has(l, 1) && has(l, 2));
+  EXPECT_EQ(fast_convex_hull(std::vector<Vec3>{{4, 5, 6}}).vertices.size(), 1u);
+  EXPECT_TRUE(fast_convex_hull(std::vector<Vec3>{}).vertices.empty());
+}
+
+// On random clouds (in a ball, and on a sphere where every point is a vertex) the hull has the
+// vertices and area of Qhull's, and every point lies on the inner side of every facet.
+TEST(FastConvexHull, AgreesWithQhullOnRandomClouds) {
+  std::mt19937_64 random(5);
+  std::normal_distribution<double> normal;
+  for (int trial = 0; trial < 40; ++trial) {
+    std::vector<Vec3> p;
+    const int n = 4 + trial * 7;
+    for (int i = 0; i < n; ++i) {
+      Vec3 x{normal(random), normal(random), normal(random)};
+      if (trial % 2) x = (1 / std::sqrt(dot(x, x))) * x;
+      p.push_back(Vec3{100, -7, 3} + x);
+    }
+    const ConvexHull fast = fast_convex_hull(p), qhull = convex_hull(p);
+    std::vector<std::uint32_t> a = fast.vertices, b = qhull.vertices;
+    std::sort(a.begin(), a.end());
+    std::sort(b.begin(), b.end());
+    EXPECT_EQ(a, b) << "trial " << trial;
+    EXPECT_NEAR(area(p, fast), area(p, qhull), 1e-9 * area(p, qhull));
+    for (const auto& t : fast.triangles) {
+      const Vec3 facet = cross(p[t[1]] - p[t[0]], p[t[2]] - p[t[0]]);
+      for (const Vec3& x : p) EXPECT_LE(dot(facet, x - p[t[0]]), 1e-9 * std::sqrt(dot(facet, facet)));
+    }
+  }
 }
 
 }  // namespace
