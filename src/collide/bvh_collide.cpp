@@ -68,7 +68,8 @@ class VolumeMover {
         const Vec3 n{double(dirs[i].x), double(dirs[i].y), double(dirs[i].z)};
         const Vec3 m = transpose_times(t.rotation, n);
         upper_[i] = kdop_cone<2 * kSlabs>(m);
-        lower_[i] = kdop_cone<2 * kSlabs>(-1.0 * m);
+        lower_[i] = upper_[i];  // -m: the opposite normals, the same coefficients
+        for (int& h : lower_[i].normal) h = h < kSlabs ? h + kSlabs : h - kSlabs;
         offset_[i] = dot(n, t.translation);
         width_[i] = pad_ * norm1(n);
       }
@@ -141,10 +142,15 @@ class Traversal {
 
   CollisionResult run() {
     if (a_.nodes.empty() || b_.nodes.empty()) return std::move(result_);
-    std::vector<std::pair<std::int32_t, std::int32_t>> stack{{0, 0}};
-    while (!stack.empty()) {
-      const auto [na, nb] = stack.back();
-      stack.pop_back();
+    // Pairs of nodes still to test, as a stack that grows by doubling (push_back is not inlined).
+    std::vector<std::pair<std::int32_t, std::int32_t>> stack(64);
+    std::size_t size = 0;
+    const auto push = [&](std::int32_t na, std::int32_t nb) {
+      if (size == stack.size()) stack.resize(2 * size);
+      stack[size++] = {na, nb};
+    };
+    for (push(0, 0); size > 0;) {
+      const auto [na, nb] = stack[--size];
       const BvhNode<BV>& x = a_.nodes[na];
       const BvhNode<BV>& y = b_.nodes[nb];
       ++result_.counters.bv_tests;
@@ -152,11 +158,11 @@ class Traversal {
       if (x.leaf() && y.leaf()) {
         if (test_leaves(x, y)) break;
       } else if (descend_b(x, y)) {
-        stack.push_back({na, y.right});
-        stack.push_back({na, y.left});
+        push(na, y.right);
+        push(na, y.left);
       } else {
-        stack.push_back({x.right, nb});
-        stack.push_back({x.left, nb});
+        push(x.right, nb);
+        push(x.left, nb);
       }
     }
     std::sort(result_.pairs.begin(), result_.pairs.end());
