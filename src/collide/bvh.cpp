@@ -72,20 +72,18 @@ Topology layout(const LinkedTree& tree) {
 
 namespace {
 
-constexpr std::size_t kKeepWhole = 64;
-
 bool lexicographic_less(const Vec3& a, const Vec3& b) {
   return a.x != b.x ? a.x < b.x : (a.y != b.y ? a.y < b.y : a.z < b.z);
 }
 
-// Points that include every vertex of the convex hull of `points` (each once): small sets are
-// kept whole, larger ones pruned to their hull (Qhull costs more to start than a few points do).
+// Points that include every vertex of the convex hull of `points`, each once: the vertices of
+// fast_convex_hull, which leaves out only points certainly inside.
 std::vector<Vec3> hull_points_of(std::vector<Vec3> points) {
   std::sort(points.begin(), points.end(), lexicographic_less);
   points.erase(std::unique(points.begin(), points.end()), points.end());
-  if (points.size() <= kKeepWhole) return points;
+  if (points.size() <= 4) return points;
   std::vector<Vec3> out;
-  for (std::uint32_t v : convex_hull(points).vertices) out.push_back(points[v]);
+  for (std::uint32_t v : fast_convex_hull(points).vertices) out.push_back(points[v]);
   return out;
 }
 
@@ -165,22 +163,23 @@ void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points) {
   bvh.magnitude = fp::sum3(far[0], far[1], far[2]);
 }
 
-// OBBs, children before parents: the node's convex hull from its children's hull vertices (a
-// leaf's from its vertices) by fast_convex_hull, the axes from the hull's surface (obb_axes),
-// the extents over all the node's vertices (so the box holds them whatever the hull left out).
-// In reverse pre-order a node comes right after its left subtree, which came right after its
-// right subtree: the children's hull vertices are the last two sets on a stack, side by side.
+// OBBs, children before parents: the node's convex hull by fast_convex_hull on its candidates,
+// the distinct vertices its children kept (a leaf: of its triangles); the axes from the hull's
+// surface (obb_axes), the extents over the candidates. fast_convex_hull keeps every point it
+// does not certify inside the hull of those it keeps, so a node's vertices all lie in the hull
+// of its candidates, and a box that holds the candidates holds them. In reverse pre-order a node
+// comes right after its left subtree, which came right after its right subtree: the children's
+// kept vertices are the last two sets on a stack, side by side.
 void fit_obbs(Bvh<Obb>& bvh) {
-  std::vector<Vec3> stack, vertices, hull_vertices;
+  std::vector<Vec3> stack, kept;
   std::vector<std::size_t> sizes;  // of the sets on the stack
   for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
     BvhNode<Obb>& n = bvh.nodes[i];
-    vertices.clear();
-    append_vertices(bvh, n, vertices);
     std::size_t count = 0;
     if (n.leaf()) {
-      count = vertices.size();
-      stack.insert(stack.end(), vertices.begin(), vertices.end());
+      const std::size_t before = stack.size();
+      append_vertices(bvh, n, stack);
+      count = stack.size() - before;
     } else {
       count = sizes.back();
       sizes.pop_back();
@@ -192,12 +191,12 @@ void fit_obbs(Bvh<Obb>& bvh) {
     const std::span<const Vec3> distinct =
         candidates.first(static_cast<std::size_t>(std::unique(candidates.begin(), candidates.end()) - candidates.begin()));
     const ConvexHull h = fast_convex_hull(distinct);
-    n.bv = fit_obb(obb_axes(distinct, h), vertices);
-    hull_vertices.clear();
-    for (std::uint32_t v : h.vertices) hull_vertices.push_back(distinct[v]);
+    n.bv = fit_obb(obb_axes(distinct, h), distinct);
+    kept.clear();
+    for (std::uint32_t v : h.vertices) kept.push_back(distinct[v]);
     stack.resize(stack.size() - count);
-    stack.insert(stack.end(), hull_vertices.begin(), hull_vertices.end());
-    sizes.push_back(hull_vertices.size());
+    stack.insert(stack.end(), kept.begin(), kept.end());
+    sizes.push_back(kept.size());
     // Every point of the box (the vertices among them) has norm1 at most that of its center plus
     // its half extents times their axes' norm1.
     const Obb& b = n.bv;

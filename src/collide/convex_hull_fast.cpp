@@ -1,7 +1,12 @@
 // fast_convex_hull: quickhull in floating point, with a tolerance and no merging of facets.
 // Each point is assigned to one facet it lies outside of; the farthest point of a facet is added
 // by replacing every facet it sees with a fan from it to their horizon; the points of the
-// replaced facets are assigned again to the new ones or dropped as inside.
+// replaced facets are assigned again to the new ones or left as inside. A point left inside is
+// dropped only when it lies, certainly, strictly inside a tetrahedron of points kept (by the
+// signs of four orientations, each beyond its rounding bound); otherwise it stays among the
+// vertices, and so do the hull vertices the hull swallows as it grows. Every point dropped is
+// thus inside the hull of the points kept, in exact arithmetic, whatever the rounding did to
+// the facets.
 #include <algorithm>
 #include <cmath>
 
@@ -19,7 +24,8 @@ double cross2(double ax, double ay, double bx, double by) { return ax * by - ay 
 class QuickHull {
  public:
   ConvexHull run(std::span<const Vec3> points) {
-    faces_.clear(), pending_.clear(), q_.clear();
+    p_ = points;
+    faces_.clear(), pending_.clear(), q_.clear(), kept_.clear();
     if (points.empty()) return {};
     // Coordinates relative to the first point; the extremes along the axes.
     const Vec3 origin = points[0];
@@ -52,9 +58,9 @@ class QuickHull {
       const double d = norm_squared(cross(q_[i] - q_[a], ab));
       if (d > far) far = d, c = i;
     }
-    if (std::sqrt(far) <= eps_ * std::sqrt(norm_squared(ab))) return {{}, {a, b}};  // collinear
+    if (std::sqrt(far) <= eps_ * std::sqrt(norm_squared(ab))) return all_points({});  // collinear
     const Vec3 normal = unit(cross(ab, q_[c] - q_[a]));
-    if (q_.size() == 3) return {{{0, 1, 2}, {0, 2, 1}}, {0, 1, 2}};  // a triangle, both sides
+    if (q_.size() == 3) return all_points({{0, 1, 2}, {0, 2, 1}});  // a triangle, both sides
     Index d = a;
     far = 0;
     double side = 0;
@@ -65,6 +71,7 @@ class QuickHull {
     if (far <= eps_) return flat(normal);
     if (side > 0) std::swap(b, c);  // d below the face (a, b, c)
     next_.assign(q_.size(), -1);
+    taken_.assign(q_.size(), false);
     const int f0 = add_face(a, b, c), f1 = add_face(a, d, b), f2 = add_face(b, d, c), f3 = add_face(c, d, a);
     link(f0, 0, f1, 2), link(f0, 1, f2, 2), link(f0, 2, f3, 2);
     link(f1, 0, f3, 1), link(f1, 1, f2, 0), link(f2, 1, f3, 0);
@@ -73,7 +80,8 @@ class QuickHull {
       if (i != a && i != b && i != c && i != d) rest_.push_back(i);
     }
     const std::array<int, 4> simplex{f0, f1, f2, f3};
-    assign(rest_, simplex);
+    const std::array<std::array<Index, 4>, 1> tetrahedron{{{a, b, c, d}}};
+    assign(rest_, simplex, tetrahedron);
     while (!pending_.empty()) {
       const int f = pending_.back();
       pending_.pop_back();
@@ -87,6 +95,9 @@ class QuickHull {
       for (Index v : f.v) {
         if (!taken_[v]) taken_[v] = true, hull.vertices.push_back(v);
       }
+    }
+    for (Index v : kept_) {
+      if (!taken_[v]) taken_[v] = true, hull.vertices.push_back(v);
     }
     return hull;
   }
@@ -129,9 +140,12 @@ class QuickHull {
   }
   void link(int f, int edge, int g, int g_edge) { faces_[f].adj[edge] = g, faces_[g].adj[g_edge] = f; }
 
-  // Each point goes to the first face it lies outside of, or is dropped.
-  void assign(std::span<const Index> points, std::span<const int> faces) {
+  // Each point goes to the first face it lies outside of; one outside none is dropped if it lies
+  // certainly inside one of the tetrahedra, and kept otherwise.
+  void assign(std::span<const Index> points, std::span<const int> faces,
+              std::span<const std::array<Index, 4>> tetrahedra) {
     for (Index i : points) {
+      bool outside = false;
       for (int f : faces) {
         Face& face = faces_[f];
         const double h = distance(face, i);
@@ -139,9 +153,39 @@ class QuickHull {
         if (face.head < 0) pending_.push_back(f);
         if (face.head < 0 || h > face.far_distance) face.far = i, face.far_distance = h;
         next_[i] = face.head, face.head = static_cast<int>(i);
+        outside = true;
         break;
       }
+      if (outside) continue;
+      const bool inside = std::any_of(tetrahedra.begin(), tetrahedra.end(), [&](const std::array<Index, 4>& t) {
+        return certainly_inside(t, i);
+      });
+      if (!inside) kept_.push_back(i);
     }
+  }
+
+  // The sign of the orientation of (a, b, c, d) on the points as given: + or - when the
+  // determinant exceeds its rounding bound, 0 when unsure. The bound is Shewchuk's for this
+  // evaluation ((7 + 56u) u times the permanent, differences included); a permanent below
+  // 2^-900, where products may underflow, is unsure.
+  int orientation(Index a, Index b, Index c, Index d) const {
+    const Vec3 ad = p_[a] - p_[d], bd = p_[b] - p_[d], cd = p_[c] - p_[d];
+    const double m1 = bd.y * cd.z - bd.z * cd.y, m2 = cd.y * ad.z - cd.z * ad.y, m3 = ad.y * bd.z - ad.z * bd.y;
+    const double det = ad.x * m1 + bd.x * m2 + cd.x * m3;
+    const double permanent = (std::fabs(bd.y * cd.z) + std::fabs(bd.z * cd.y)) * std::fabs(ad.x) +
+                             (std::fabs(cd.y * ad.z) + std::fabs(cd.z * ad.y)) * std::fabs(bd.x) +
+                             (std::fabs(ad.y * bd.z) + std::fabs(ad.z * bd.y)) * std::fabs(cd.x);
+    if (!(permanent >= 0x1p-900)) return 0;
+    const double bound = (7 + 56 * fp::u) * fp::u * permanent;
+    return det > bound ? 1 : (det < -bound ? -1 : 0);
+  }
+
+  // Whether point i lies strictly inside the tetrahedron, certainly: it is on the same side of
+  // each face as the opposite corner.
+  bool certainly_inside(const std::array<Index, 4>& t, Index i) const {
+    const int sign = orientation(t[0], t[1], t[2], t[3]);
+    return sign != 0 && orientation(i, t[1], t[2], t[3]) == sign && orientation(t[0], i, t[2], t[3]) == sign &&
+           orientation(t[0], t[1], i, t[3]) == sign && orientation(t[0], t[1], t[2], i) == sign;
   }
 
   void add_farthest_point(int seed) {
@@ -179,6 +223,7 @@ class QuickHull {
         std::any_of(horizon.begin(), horizon.end(), [&](const Edge& e) { return e.from == eye || e.to == eye; })) {
       for (int f : visible) faces_[f].alive = true;
       drop(seed, eye);
+      kept_.push_back(eye);
       if (faces_[seed].head >= 0) pending_.push_back(seed);
       return;
     }
@@ -194,14 +239,28 @@ class QuickHull {
       }
     }
     for (int k = 0; k < n; ++k) link(first + k, 1, first + (k + 1) % n, 2);
+    // The visible faces' vertices off the horizon are swallowed: kept, as no certificate says
+    // they are inside.
+    for (const Edge& e : loop) taken_[e.from] = true;
+    for (int f : visible) {
+      for (Index v : faces_[f].v) {
+        if (!taken_[v]) taken_[v] = true, kept_.push_back(v);
+      }
+    }
+    for (const Edge& e : loop) taken_[e.from] = false;
+    for (int f : visible) {
+      for (Index v : faces_[f].v) taken_[v] = false;
+    }
     rest_.clear();
+    tetrahedra_.clear();
     for (int f : visible) {
       for (int i = faces_[f].head; i >= 0; i = next_[i]) {
         if (static_cast<Index>(i) != eye) rest_.push_back(static_cast<Index>(i));
       }
       faces_[f].head = -1;
+      tetrahedra_.push_back({eye, faces_[f].v[0], faces_[f].v[1], faces_[f].v[2]});
     }
-    assign(rest_, fresh_);
+    assign(rest_, fresh_, tetrahedra_);
   }
 
   // Takes the eye out of the seed's outside points (it stays out of the hull).
@@ -217,6 +276,15 @@ class QuickHull {
       if (f.head < 0 || h > f.far_distance) f.far = i, f.far_distance = h;
       next_[i] = f.head, f.head = static_cast<int>(i);
     }
+  }
+
+  // Nearly collinear or flat points: nothing is certified, every point is a vertex.
+  ConvexHull all_points(std::vector<std::array<Index, 3>> triangles) const {
+    ConvexHull hull;
+    hull.triangles = std::move(triangles);
+    hull.vertices.resize(q_.size());
+    for (Index i = 0; i < q_.size(); ++i) hull.vertices[i] = i;
+    return hull;
   }
 
   // Points in a plane: the polygon by a monotone chain in the plane, fanned into triangles on
@@ -243,17 +311,19 @@ class QuickHull {
       while (k >= lower && !turns_left(q[i])) --k;
       chain[k++] = q[i];
     }
-    ConvexHull hull;
+    std::vector<std::array<Index, 3>> triangles;
     const std::size_t corners = k - 1;  // the last point repeats the first
-    for (std::size_t i = 0; i < corners; ++i) hull.vertices.push_back(chain[i].id);
     for (std::size_t i = 1; i + 1 < corners; ++i) {
-      hull.triangles.push_back({chain[0].id, chain[i].id, chain[i + 1].id});
-      hull.triangles.push_back({chain[0].id, chain[i + 1].id, chain[i].id});
+      triangles.push_back({chain[0].id, chain[i].id, chain[i + 1].id});
+      triangles.push_back({chain[0].id, chain[i + 1].id, chain[i].id});
     }
-    return hull;
+    return all_points(std::move(triangles));
   }
 
+  std::span<const Vec3> p_;
   std::vector<Vec3> q_;  // the points relative to the first
+  std::vector<Index> kept_;  // points neither on the hull nor certainly inside it
+  std::vector<std::array<Index, 4>> tetrahedra_;
   double eps_ = 0;
   std::vector<Face> faces_;
   std::vector<int> next_;
