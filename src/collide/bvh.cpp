@@ -87,29 +87,15 @@ std::vector<Vec3> hull_points_of(std::vector<Vec3> points) {
   return out;
 }
 
-// The hierarchy's arrays from a topology: faces per slot, vertices in the order the slots first
-// use them, nodes with their slots (volumes fitted later).
+// The hierarchy's arrays from a topology: the mesh's vertices, each slot's face, the nodes with
+// their slots (volumes fitted later).
 template <class BV>
 Bvh<BV> lay_out(const Mesh& mesh, detail::Topology t) {
   Bvh<BV> bvh;
   bvh.order = std::move(t.order);
-  constexpr std::uint32_t kUnused = UINT32_MAX;
-  std::vector<std::uint32_t> renumbered(mesh.vertices.size(), kUnused);
-  std::uint32_t used = 0;
+  bvh.vertices = mesh.vertices;
   bvh.faces.reserve(bvh.order.size());
-  for (std::uint32_t f : bvh.order) {
-    std::array<std::uint32_t, 3> face{};
-    for (int i = 0; i < 3; ++i) {
-      std::uint32_t& r = renumbered[mesh.faces[f][i]];
-      if (r == kUnused) r = used++;
-      face[i] = r;
-    }
-    bvh.faces.push_back(face);
-  }
-  bvh.vertices.resize(used);
-  for (std::size_t v = 0; v < renumbered.size(); ++v) {
-    if (renumbered[v] != kUnused) bvh.vertices[renumbered[v]] = mesh.vertices[v];
-  }
+  for (std::uint32_t f : bvh.order) bvh.faces.push_back(mesh.faces[f]);
   bvh.nodes.resize(t.nodes.size());
   for (std::size_t i = 0; i < t.nodes.size(); ++i) {
     BvhNode<BV>& n = bvh.nodes[i];

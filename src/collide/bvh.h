@@ -72,8 +72,7 @@ struct NodePoints {
 /// A binary hierarchy: nodes[0] is the root (no nodes for an empty mesh), every node before
 /// its children (depth-first pre-order, so node n's left child is n + 1); every node's volume
 /// contains, in exact arithmetic, every triangle of its slots. Triangle slot s is face order[s]
-/// of the mesh, stored as three indices into `vertices` (the mesh's vertices that some face
-/// uses, in the order the slots first use them).
+/// of the mesh, stored as its three indices into `vertices` (a copy of the mesh's).
 template <class BV>
 struct Bvh {
   std::vector<BvhNode<BV>> nodes;
