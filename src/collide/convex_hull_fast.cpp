@@ -107,6 +107,9 @@ class QuickHull {
     Index from, to;
     int outside;  // the face across it that the eye does not see
   };
+  struct Step {
+    int face, edge, left;  // a visible face, its next edge to look across, how many are left
+  };
   struct Planar {
     double u, v;
     Index id;
@@ -196,31 +199,46 @@ class QuickHull {
     std::vector<int>& visible = visible_;
     visible.assign(1, seed);
     faces_[seed].alive = false;
-    std::vector<Edge>& horizon = horizon_;
-    horizon.clear();
-    for (std::size_t k = 0; k < visible.size(); ++k) {
-      const Face& f = faces_[visible[k]];
-      for (int e = 0; e < 3; ++e) {
-        const int g = f.adj[e];
-        if (!faces_[g].alive) continue;
-        if (distance(faces_[g], eye) > eps_) {
-          faces_[g].alive = false;
-          visible.push_back(g);
-        } else {
-          horizon.push_back({f.v[e], f.v[(e + 1) % 3], g});
-        }
+    std::vector<Edge>& loop = loop_;
+    loop.clear();
+    bool simple = true;
+    // Depth first from the seed, each face's edges counter-clockwise from the one it was entered
+    // by: the horizon comes out as a loop in order.
+    std::vector<Step>& path = path_;
+    path.assign(1, {seed, 0, 3});
+    while (!path.empty()) {
+      Step& step = path.back();
+      if (step.left == 0) {
+        path.pop_back();
+        continue;
+      }
+      const Face& f = faces_[step.face];
+      const int e = step.edge;
+      step.edge = (e + 1) % 3, --step.left;
+      const int g = f.adj[e];
+      if (!faces_[g].alive) continue;  // seen already
+      if (distance(faces_[g], eye) > eps_) {
+        faces_[g].alive = false;
+        visible.push_back(g);
+        // Enter g by its edge back to f; look across its other two edges.
+        int back = 0;
+        while (faces_[g].adj[back] != step.face) ++back;
+        path.push_back({g, (back + 1) % 3, 2});
+      } else {
+        const Edge edge{f.v[e], f.v[(e + 1) % 3], g};
+        simple &= edge.from != eye && edge.to != eye && (loop.empty() || loop.back().to == edge.from);
+        loop.push_back(edge);
       }
     }
-    // Horizon edges chained into a loop.
-    std::vector<Edge>& loop = loop_;
-    loop.assign(1, horizon[0]);
-    while (loop.size() < horizon.size()) {
-      const auto next = std::find_if(horizon.begin(), horizon.end(), [&](const Edge& e) { return e.from == loop.back().to; });
-      if (next == horizon.end() || next->from == loop[0].from) break;
-      loop.push_back(*next);
+    // The loop must close, each vertex once (else the eye is dropped: rounding made the hull
+    // inconsistent there).
+    simple &= !loop.empty() && loop.back().to == loop[0].from;
+    for (const Edge& e : loop) {
+      simple &= !taken_[e.from];
+      taken_[e.from] = true;
     }
-    if (loop.size() != horizon.size() || loop.back().to != loop[0].from ||
-        std::any_of(horizon.begin(), horizon.end(), [&](const Edge& e) { return e.from == eye || e.to == eye; })) {
+    for (const Edge& e : loop) taken_[e.from] = false;
+    if (!simple) {
       for (int f : visible) faces_[f].alive = true;
       drop(seed, eye);
       kept_.push_back(eye);
@@ -330,9 +348,10 @@ class QuickHull {
   std::vector<int> pending_;
   std::vector<Index> rest_;
   std::vector<int> visible_, fresh_;
-  std::vector<Edge> horizon_, loop_;
+  std::vector<Edge> loop_;
+  std::vector<Step> path_;
   std::vector<Planar> planar_, chain_;
-  std::vector<bool> taken_;
+  std::vector<std::uint8_t> taken_;
 };
 
 }  // namespace
