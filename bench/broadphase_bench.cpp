@@ -1,5 +1,7 @@
 // Broadphase: n boxes (1k, 10k, 100k) moving coherently; one benchmark iteration is one frame:
 // move every box, then find the overlapping pairs.
+//  - lib_columns: ColumnSweep::move for every box, then update() (insertion sort of the column
+//    entries, a sweep of each column, pair changes);
 //  - lib_incremental: SweepAndPrune::move for every box, then update() (insertion sort of the
 //    endpoint lists, pair changes);
 //  - lib_resort: sort_and_sweep from scratch on the frame's boxes (full sort along x);
@@ -23,6 +25,7 @@
 #include "bench/inputs.h"
 #include "bench/suites.h"
 #include "collide/box_pairs.h"
+#include "collide/column_sweep.h"
 #include "collide/sweep_and_prune.h"
 
 namespace cc::bench {
@@ -66,19 +69,21 @@ void set_counters(benchmark::State& state, double pairs) {
 // A contestant keeps its state from one call of its benchmark function to the next (Google
 // Benchmark calls it once per repetition, and more to size the run): it is set up once, on
 // the first call, and the frames go on from where the last call stopped.
+template <class Broadphase>
 struct Incremental {
-  SweepAndPrune sap;
+  Broadphase sap;
   std::vector<ObjectId> ids;
   std::uint64_t frame = 0;
 };
 
-void lib_incremental(benchmark::State& state, const Scene& s, std::unique_ptr<Incremental>& kept) {
+template <class Broadphase>
+void lib_incremental(benchmark::State& state, const Scene& s, std::unique_ptr<Incremental<Broadphase>>& kept) {
   if (!kept) {
-    kept = std::make_unique<Incremental>();
+    kept = std::make_unique<Incremental<Broadphase>>();
     for (std::size_t i = 0; i < s.size(); ++i) kept->ids.push_back(kept->sap.add(s.box(i, 0)));
     kept->sap.update();
   }
-  Incremental& c = *kept;
+  Incremental<Broadphase>& c = *kept;
   const std::uint64_t swaps_before = c.sap.swaps();
   for (auto _ : state) {
     const double t = Scene::phase(++c.frame);
@@ -155,7 +160,11 @@ void register_broadphase_benchmarks() {
     const auto scene = make_scene(n);
     const std::string name = "broadphase/" + std::to_string(n) + "/";
     const auto unit = n >= 100000 ? benchmark::kMillisecond : benchmark::kMicrosecond;
-    auto kept = std::make_shared<std::unique_ptr<Incremental>>();
+    auto columns = std::make_shared<std::unique_ptr<Incremental<ColumnSweep>>>();
+    benchmark::RegisterBenchmark((name + "lib_columns").c_str(), [=](benchmark::State& s) {
+      lib_incremental(s, *scene, *columns);
+    })->Unit(unit);
+    auto kept = std::make_shared<std::unique_ptr<Incremental<SweepAndPrune>>>();
     benchmark::RegisterBenchmark((name + "lib_incremental").c_str(), [=](benchmark::State& s) {
       lib_incremental(s, *scene, *kept);
     })->Unit(unit);

@@ -44,8 +44,13 @@ int test_one_input(QueryKind kind, const std::uint8_t* data, std::size_t size) {
   const Evaluation e = evaluate(input, exact, &second);
   switch (e.verdict.cls) {
     case CaseClass::impl_bug:
-      std::fprintf(stderr, "impl_bug %s: %s\n  inputs: %s\n", std::string(name(kind)).c_str(),
-                   e.verdict.parties[0].why.c_str(), input_to_json(input).dump().c_str());
+      std::fprintf(stderr, "impl_bug %s:\n", std::string(name(kind)).c_str());
+      for (const PartyStanding& p : e.verdict.parties) {  // the library, or one of its own parties
+        if (p.standing == Standing::wrong || p.standing == Standing::failed) {
+          std::fprintf(stderr, "  %s: %s\n", p.party.c_str(), p.why.c_str());
+        }
+      }
+      std::fprintf(stderr, "  inputs: %s\n", input_to_json(input).dump().c_str());
       std::abort();
     case CaseClass::oracle_defect:
     case CaseClass::oracle_crash:

@@ -21,7 +21,12 @@ double to_double(const Rational& q) {
   const double t = mpq_get_d(q.get_mpq_t());
   if (!std::isfinite(t)) return t;
   const double up = std::nextafter(t, q > 0 ? INFINITY : -INFINITY);
-  if (!std::isfinite(up)) return t;
+  if (!std::isfinite(up)) {
+    // Past the largest double: IEEE rounds to infinity from half an ulp beyond it on (the tie
+    // too: DBL_MAX's significand is odd), as if the next double were 2^1024.
+    const Rational half_ulp = abs(rational(t) - rational(std::nextafter(t, 0.0))) / 2;
+    return abs(q - rational(t)) >= half_ulp ? up : t;
+  }
   const Rational dt = abs(q - rational(t)), du = abs(rational(up) - q);
   if (du < dt) return up;
   if (du == dt) {  // a tie: to the even significand

@@ -15,6 +15,8 @@
 namespace cc::fcl_oracle {
 namespace {
 
+constexpr double kBroadphaseTimeLimit = 0.05;  // seconds of CPU time per manager and case
+
 // A collision object whose AABB is given, not computed from its geometry: the managers read
 // getAABB() and never recompute it.
 class BoxObject final : public fcl::CollisionObjectd {
@@ -121,11 +123,14 @@ std::vector<std::string> fcl_broadphase_parties() {
 }
 
 Opinion fcl_broadphase(const std::string& manager, const harness::BroadphaseInput& in) {
-  // IntervalTree's unregisterObject can loop for ever in deleteNode: every manager runs under a
-  // time limit (far above the milliseconds a case takes), and what it leaves behind is leaked.
+  // IntervalTree's unregisterObject can loop for ever in deleteNode (about 3% of the campaign's
+  // cases): every manager runs under a time limit, and what it leaves behind is leaked. A
+  // manager that returns takes at most 8 ms of CPU time on the generated cases (the slowest,
+  // SpatialHashing, over 4000 of them); the limit is 6 times that, since every call cut short
+  // costs the whole limit.
   Opinion o;
-  if (!run_with_time_limit(1.0, [&] { o = run_manager(manager, in); })) {
-    return failed(party_of(manager), "did not return within 1 s of CPU time");
+  if (!run_with_time_limit(kBroadphaseTimeLimit, [&] { o = run_manager(manager, in); })) {
+    return failed(party_of(manager), "did not return within 50 ms of CPU time");
   }
   return o;
 }

@@ -1,6 +1,6 @@
-// The two-level pipeline for many moving objects: sweep-and-prune over the objects' boxes
-// prunes the pairs that cannot touch; the hierarchies of the pairs left are tested against each
-// other (BVH-vs-BVH) for their colliding triangle pairs.
+// The two-level pipeline for many moving objects: sweep-and-prune in columns over the objects'
+// boxes prunes the pairs that cannot touch; the hierarchies of the pairs left are tested
+// against each other (BVH-vs-BVH) for their colliding triangle pairs.
 #pragma once
 
 #include <memory>
@@ -8,7 +8,7 @@
 
 #include "collide/bvh_collide.h"
 #include "collide/object_bounds.h"
-#include "collide/sweep_and_prune.h"
+#include "collide/column_sweep.h"
 
 namespace cc {
 
@@ -26,7 +26,7 @@ struct ObjectContact {
 };
 
 /// Objects (a mesh with its hierarchy, and a pose) in one world. Per frame: move(), then
-/// broad_phase() (boxes, then sweep-and-prune), then narrow_phase() on its candidates.
+/// broad_phase() (boxes, then ColumnSweep), then narrow_phase() on its candidates.
 ///  - The candidates are the pairs whose boxes overlap; the boxes hold the placed meshes (see
 ///    object_bounds.h), so no colliding pair is pruned. The contacts are collide()'s on every
 ///    candidate (its contract: closed sets, conservative leaf tests, surfaces only).
@@ -41,12 +41,12 @@ class CollisionWorld {
   void remove(ObjectId id);
   void move(ObjectId id, const RigidTransform& pose) { objects_.at(id).pose = pose; }
 
-  /// Refits or moves every object's box and updates sweep-and-prune; returns the candidates.
+  /// Refits or moves every object's box and updates the broadphase; returns the candidates.
   const std::vector<ObjectPair>& broad_phase();
   /// collide() on every candidate of the last broad_phase(); the pairs that collide.
   std::vector<ObjectContact> narrow_phase() const;
 
-  const SweepAndPrune& sweep() const { return sap_; }
+  const ColumnSweep& sweep() const { return sap_; }
   Aabb box_of(ObjectId id) const;
 
  private:
@@ -60,7 +60,7 @@ class CollisionWorld {
   RotationBounds bounds_;
   CollideOptions options_;
   std::vector<Object> objects_;
-  SweepAndPrune sap_;
+  ColumnSweep sap_;
   std::vector<ObjectPair> candidates_;
 };
 

@@ -5,10 +5,26 @@
 
 namespace cc {
 
+namespace {
+
+// |v| rounded up. v is scaled by a power of two first, so that its squares neither underflow
+// (a subnormal vertex) nor overflow; components 2^1074 below the largest, lost by the scaling,
+// change the length by far less than the padding.
+double length_up(const Vec3& v) {
+  const double m = max_abs(v);
+  if (!(m > 0) || !std::isfinite(m)) return m;
+  const int e = std::ilogb(m);
+  const Vec3 w{std::ldexp(v.x, -e), std::ldexp(v.y, -e), std::ldexp(v.z, -e)};
+  // dot and sqrt round by less than 2^-51 in all; ldexp may round once more (subnormal result).
+  return std::nextafter(std::ldexp(std::sqrt(dot(w, w)) * (1 + 0x1p-50), e), INFINITY);
+}
+
+}  // namespace
+
 double rotation_radius(const Mesh& mesh) {
   double r = 0;
-  for (const Vec3& v : mesh.vertices) r = std::max(r, std::sqrt(dot(v, v)));
-  return r * (1 + 0x1p-50);  // dot and sqrt round by less than 2^-51 in all
+  for (const Vec3& v : mesh.vertices) r = std::max(r, length_up(v));
+  return r;
 }
 
 Aabb bounding_cube(double radius, const RigidTransform& pose) {

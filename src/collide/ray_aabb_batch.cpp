@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 namespace cc {
@@ -160,20 +161,32 @@ template <int P>
 
 #pragma GCC diagnostic pop
 
-using Kernel = std::size_t (*)(const PreparedRay&, const AabbSoa&, std::uint8_t*);
+using Run = std::size_t (*)(const PreparedRay&, const AabbSoa&, std::uint8_t*);
 
-// The kernels for P = 0..7, for the best instruction set this processor has.
-template <int... P>
-std::array<Kernel, 8> kernels(std::integer_sequence<int, P...>) {
-  __builtin_cpu_init();
-  if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq")) return {run_avx512<P>...};
-  if (__builtin_cpu_supports("avx2")) return {run_avx2<P>...};
-  return {[](const PreparedRay& r, const AabbSoa& b, std::uint8_t* hits) { return run_scalar<P>(r, b, hits, 0); }...};
+template <int P>
+std::size_t run_all_scalar(const PreparedRay& r, const AabbSoa& b, std::uint8_t* hits) {
+  return run_scalar<P>(r, b, hits, 0);
 }
+
+// Per kernel (in simd::Kernel's order), the runs for P = 0..7.
+template <int... P>
+constexpr std::array<std::array<Run, 8>, 3> runs(std::integer_sequence<int, P...>) {
+  return {{{run_all_scalar<P>...}, {run_avx2<P>...}, {run_avx512<P>...}}};
+}
+constexpr auto kRuns = runs(std::make_integer_sequence<int, 8>{});
+static_assert(static_cast<int>(simd::Kernel::scalar) == 0 && static_cast<int>(simd::Kernel::avx2) == 1 &&
+              static_cast<int>(simd::Kernel::avx512) == 2);
 
 }  // namespace
 
 std::size_t test_ray_aabbs(const Ray& ray, const AabbSoa& boxes, std::span<std::uint8_t> hits) {
+  return test_ray_aabbs(ray, boxes, hits, simd::selected());
+}
+
+std::size_t test_ray_aabbs(const Ray& ray, const AabbSoa& boxes, std::span<std::uint8_t> hits, simd::Kernel kernel) {
+  if (const auto why = simd::unsupported_reason(kernel)) {
+    throw std::invalid_argument("test_ray_aabbs: the " + std::string(simd::to_string(kernel)) + " kernel: " + *why);
+  }
   const std::size_t n = boxes.size();
   if (hits.size() < n) throw std::invalid_argument("test_ray_aabbs: fewer hit slots than boxes");
   const PreparedRay r(ray);
@@ -188,8 +201,7 @@ std::size_t test_ray_aabbs(const Ray& ray, const AabbSoa& boxes, std::span<std::
     for (std::size_t b = 0; b < n; ++b) count += hits[b] = intersect_ray_aabb(r, boxes[b]).hit;
     return count;
   }
-  static const std::array<Kernel, 8> kernel = kernels(std::make_integer_sequence<int, 8>{});
-  return kernel[static_cast<std::size_t>(r.parallel)](r, boxes, hits.data());
+  return kRuns[static_cast<std::size_t>(kernel)][static_cast<std::size_t>(r.parallel)](r, boxes, hits.data());
 }
 
 }  // namespace cc

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "collide/ray_aabb.h"
+#include "collide/simd.h"
 
 namespace cc {
 
@@ -32,9 +33,13 @@ struct AabbSoa {
 ///  - NaN or an infinite coordinate in the ray, tmin = +inf, tmax = -inf, tmin > tmax, and a box
 ///    with a NaN or infinite bound or lo > hi on an axis: no hit.
 /// hits must hold at least boxes.size() entries (std::invalid_argument otherwise). The boxes are
-/// read in blocks of 8 with AVX-512 (F and DQ) or of 4 with AVX2 when the processor has them
-/// (checked at run time), else one at a time; the arithmetic is the same IEEE double arithmetic
-/// either way.
+/// read by the kernel simd::selected() names (the best this processor runs unless one is
+/// forced): in blocks of 8 (AVX-512 F and DQ) or 4 (AVX2), the boxes left over one at a time,
+/// or all one at a time (scalar); the arithmetic is the same IEEE double arithmetic either way.
 std::size_t test_ray_aabbs(const Ray& ray, const AabbSoa& boxes, std::span<std::uint8_t> hits);
+
+/// The same with the given kernel, whatever simd::selected() says; std::invalid_argument if
+/// this processor cannot run it (simd::unsupported_reason).
+std::size_t test_ray_aabbs(const Ray& ray, const AabbSoa& boxes, std::span<std::uint8_t> hits, simd::Kernel kernel);
 
 }  // namespace cc

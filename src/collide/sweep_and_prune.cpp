@@ -20,16 +20,16 @@ ObjectPair pair_of(std::uint64_t key) { return {static_cast<ObjectId>(key >> 32)
 // The settled box of an object added since the last update: it overlaps nothing.
 constexpr Aabb kNoBox{{NAN, NAN, NAN}, {NAN, NAN, NAN}};
 
-void check(const Aabb& box, const char* what, ObjectId id) {
+}  // namespace
+
+void require_valid_box(const Aabb& box, const char* who, ObjectId id) {
   for (int k = 0; k < 3; ++k) {
     if (std::isnan(box.lo[k]) || std::isnan(box.hi[k]) || box.lo[k] > box.hi[k]) {
-      throw std::invalid_argument(std::string("SweepAndPrune::") + what + ": box of object " + std::to_string(id) +
+      throw std::invalid_argument(std::string(who) + ": box of object " + std::to_string(id) +
                                   " has a NaN or lo > hi on axis " + "xyz"[k]);
     }
   }
 }
-
-}  // namespace
 
 // The order of the lists: by value, lower endpoints before upper ones at equal values (so that
 // touching boxes overlap).
@@ -40,7 +40,7 @@ bool SweepAndPrune::before(const Endpoint& a, const Endpoint& b) {
 
 ObjectId SweepAndPrune::add(const Aabb& box) {
   const auto id = static_cast<ObjectId>(boxes_.size());
-  check(box, "add", id);
+  require_valid_box(box, "SweepAndPrune::add", id);
   boxes_.push_back(box);
   settled_.push_back(kNoBox);
   alive_.push_back(true);
@@ -57,7 +57,7 @@ ObjectId SweepAndPrune::add(const Aabb& box) {
 
 void SweepAndPrune::move(ObjectId id, const Aabb& box) {
   if (id >= boxes_.size() || !alive_[id]) throw std::invalid_argument("SweepAndPrune::move: no object " + std::to_string(id));
-  check(box, "move", id);
+  require_valid_box(box, "SweepAndPrune::move", id);
   boxes_[id] = box;
 }
 

@@ -22,6 +22,10 @@ struct PairChanges {
   std::vector<ObjectPair> added, removed;
 };
 
+/// The broadphases' domain check: throws std::invalid_argument, naming `who` and the object,
+/// unless the box has lo <= hi on every axis and no NaN (infinite bounds are fine).
+void require_valid_box(const Aabb& box, const char* who, ObjectId id);
+
 /// The overlapping pairs of a set of boxes that move a little from frame to frame. Per axis a
 /// list of the boxes' endpoints is kept sorted; update() re-sorts it by insertion sort, which
 /// costs O(n + swaps) on coherent motion. A swap that puts one box's lower endpoint before

@@ -107,11 +107,6 @@ void write_answer(const Answer& a, Json& j) {
     j["frames"] = frames;
   }
 }
-Json answer_json(const Answer& a) {
-  Json j = Json::object();
-  write_answer(a, j);
-  return j;
-}
 
 std::uint64_t fnv1a(std::string_view s) {
   std::uint64_t h = 0xcbf29ce484222325ULL;
@@ -142,6 +137,12 @@ CaseFileError::CaseFileError(std::string file, std::string place, const std::str
     : std::runtime_error(file + ": " + (place.empty() ? "" : place + ": ") + message),
       file_(std::move(file)),
       place_(std::move(place)) {}
+
+Json answer_json(const Answer& a) {
+  Json j = Json::object();
+  write_answer(a, j);
+  return j;
+}
 
 Json opinions_to_json(const std::vector<Opinion>& opinions) {
   Json out = Json::array();

@@ -49,6 +49,9 @@ class CaseFileError : public std::runtime_error {
 };
 
 Json case_to_json(const Case& c);
+/// An answer as a case file stores it ({"hit", "params", "pairs", "frames"}, doubles exactly):
+/// two answers are the same, bit for bit, when their JSON is.
+Json answer_json(const Answer& a);
 /// The opinions as a case file stores them ("answers"/"oracles"), doubles exactly.
 Json opinions_to_json(const std::vector<Opinion>& opinions);
 /// Reads them back; throws FormatError naming the place (`place` is the array's JSON pointer).

@@ -159,12 +159,13 @@ PartyStanding judge_frames(std::string party, const Band& band, const Answer& sa
 }
 
 // A hit's parameters against the ranges of the exact verdict, or within the band's relative
-// width of the exact parameters. Nothing when they agree, else why not.
+// width of the exact parameters. Nothing when they agree, or when the party gives none (the
+// batched ray test, any hit): it is judged on its hit alone. Else why not.
 std::optional<std::string> params_wrong(const Band& band, const Answer& said, const ExactVerdict& exact) {
   const auto& ranges = exact.param_ranges;
+  if (said.params.empty()) return std::nullopt;
   bool wrong = false;
   if (!ranges.empty()) {
-    if (said.params.empty()) return std::nullopt;  // a party that gives none (e.g. any hit)
     wrong = said.params.size() != ranges.size();
     for (std::size_t i = 0; !wrong && i < ranges.size(); ++i) {
       wrong = !(ranges[i].first <= said.params[i] && said.params[i] <= ranges[i].second);

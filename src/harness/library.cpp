@@ -6,7 +6,10 @@
 #include <stdexcept>
 
 #include "collide/box_pairs.h"
+#include "collide/collision_world.h"
+#include "collide/column_sweep.h"
 #include "collide/kdop.h"
+#include "collide/ray_aabb_batch.h"
 #include "collide/sweep_and_prune.h"
 #include "collide/triangle_box.h"
 #include "collide/triangle_triangle.h"
@@ -28,6 +31,7 @@ Answer answer(bool hit) {
 
 Answer ray_answer(const RayMeshHit& h, bool with_t);
 Answer sweep_answer(const SweepHit& h);
+template <class Broadphase>
 Answer incremental(const BroadphaseInput& in);
 
 struct Ask {
@@ -58,7 +62,7 @@ struct Ask {
   Answer operator()(const MeshMeshInput& in) const { return pairs(in.meshes, CollisionMode::all_pairs); }
   Answer operator()(const MeshMeshFirstInput& in) const { return pairs(in.meshes, CollisionMode::first_hit); }
 
-  Answer operator()(const BroadphaseInput& in) const { return incremental(in); }
+  Answer operator()(const BroadphaseInput& in) const { return incremental<ColumnSweep>(in); }
   Answer operator()(const RayMeshInput& in) const { return ray_answer(library_ray_mesh(in.mesh.mesh, in.library, in.ray, false), true); }
   Answer operator()(const MovingObbInput& in) const { return sweep_answer(sweep_obb_obb(in.a, in.b)); }
 
@@ -91,29 +95,31 @@ std::vector<FacePair> slot_pairs(const std::vector<ObjectPair>& pairs, const std
   return out;
 }
 
-// Incremental sweep-and-prune over the frames: boxes added, moved and removed as the slots say.
-// A box outside the domain makes add() or move() throw: the documented answer is then no hit.
+// A broadphase (ColumnSweep, SweepAndPrune) over the frames: boxes added, moved and removed as
+// the slots say. A box outside the domain makes add() or move() throw: the documented answer is
+// then no hit.
+template <class Broadphase>
 Answer incremental(const BroadphaseInput& in) {
   Answer a;
   try {
-    SweepAndPrune sap;
+    Broadphase broadphase;
     std::map<std::size_t, ObjectId> id_of;   // slot -> id of its box
     std::vector<std::uint32_t> slot_of;      // id -> slot
     for (const auto& frame : in.frames) {
       for (std::size_t i = 0; i < frame.size(); ++i) {
         const auto it = id_of.find(i);
         if (frame[i] && it == id_of.end()) {
-          id_of[i] = sap.add(*frame[i]);
+          id_of[i] = broadphase.add(*frame[i]);
           slot_of.push_back(static_cast<std::uint32_t>(i));
         } else if (frame[i]) {
-          sap.move(it->second, *frame[i]);
+          broadphase.move(it->second, *frame[i]);
         } else if (it != id_of.end()) {
-          sap.remove(it->second);
+          broadphase.remove(it->second);
           id_of.erase(it);
         }
       }
-      sap.update();
-      a.frames.push_back(slot_pairs(sap.pairs(), slot_of));
+      broadphase.update();
+      a.frames.push_back(slot_pairs(broadphase.pairs(), slot_of));
       a.hit |= !a.frames.back().empty();
     }
   } catch (const std::invalid_argument&) {
@@ -152,6 +158,62 @@ std::optional<Aabb> exact_aabb(const MovingObb& m) {
   return box;
 }
 
+// ray_aabb through the batched test: the case's box at place 3 of 11 (in a vector block of 8
+// or 4) and at place 10 (in the scalar tail: 11 = 8 + 3 = 2 * 4 + 3), the other places holding
+// boxes made from it (moved by its size, inverted, a point at a corner, NaN, unbounded), each
+// answered by every kernel this processor runs. The answer is the hit they all give; a kernel or
+// a place that differs from the scalar test on any box is a failure (an impl_bug).
+Answer batched_ray(const RayAabbInput& in) {
+  const Aabb& box = in.box;
+  const Vec3 size = box.hi - box.lo;
+  const Aabb fillers[9] = {{box.lo + Vec3{size.x, 0, 0}, box.hi + Vec3{size.x, 0, 0}},
+                           {box.lo - Vec3{0, size.y, 0}, box.hi - Vec3{0, size.y, 0}},
+                           {box.hi, box.lo},
+                           {box.lo, box.lo},
+                           {box.hi, box.hi},
+                           {{box.lo.x, NAN, box.lo.z}, box.hi},
+                           {box.lo, {box.hi.x, box.hi.y, INFINITY}},
+                           {box.lo + Vec3{0, 0, size.z}, box.hi + Vec3{0, 0, size.z}},
+                           {{-box.hi.x, box.lo.y, box.lo.z}, {-box.lo.x, box.hi.y, box.hi.z}}};
+  constexpr std::size_t kInBlock = 3, kInTail = 10, kBoxes = 11;
+  AabbSoa boxes;
+  for (std::size_t i = 0, f = 0; i < kBoxes; ++i) boxes.push_back(i == kInBlock || i == kInTail ? box : fillers[f++]);
+  std::vector<std::uint8_t> hits(kBoxes);
+  for (simd::Kernel kernel : simd::supported_kernels()) {
+    test_ray_aabbs(in.ray, boxes, hits, kernel);
+    for (std::size_t i = 0; i < kBoxes; ++i) {
+      const bool scalar = intersect_ray_aabb(in.ray, boxes[i]).hit;
+      if (hits[i] != (scalar ? 1 : 0)) {
+        throw std::logic_error("the " + std::string(simd::to_string(kernel)) + " kernel says " +
+                               (hits[i] ? "hit" : "miss") + " for box " + std::to_string(i) + " of " +
+                               std::to_string(kBoxes) + (i == kInBlock || i == kInTail ? " (the case's)" : "") +
+                               ", intersect_ray_aabb " + (scalar ? "hit" : "miss"));
+      }
+    }
+  }
+  return answer(hits[kInBlock] != 0);
+}
+
+// mesh_mesh through the two-level pipeline: both meshes as objects of a CollisionWorld, boxed
+// by fitted_box (refit) or bounding_cube, sweep-and-prune, then collide() on the candidate; the
+// pairs of the contact, as (face of a, face of b).
+Answer world_pairs(const MeshPair& m, RotationBounds bounds) {
+  const CollideOptions options{CollisionMode::all_pairs, m.library.update, m.library.descent};
+  return with_bv_type(m.library.bv, [&]<class BV>() {
+    CollisionWorld<BV> world(bounds, options);
+    const ObjectId a = world.add(m.a.mesh, cached_bvh<BV>(m.a.mesh, m.library.build), m.pose_a);
+    world.add(m.b.mesh, cached_bvh<BV>(m.b.mesh, m.library.build), m.pose_b);
+    world.broad_phase();
+    Answer out;
+    for (const ObjectContact& c : world.narrow_phase()) {
+      for (const auto& [i, j] : c.triangles) out.pairs.push_back(c.objects.first == a ? FacePair{i, j} : FacePair{j, i});
+    }
+    std::sort(out.pairs.begin(), out.pairs.end());
+    out.hit = !out.pairs.empty();
+    return out;
+  });
+}
+
 template <class F>
 Opinion guarded(std::string party, F f) {
   Opinion o{std::move(party), Opinion::Status::answered, {}, ""};
@@ -170,12 +232,21 @@ Answer ask_library(const Input& input) { return std::visit(Ask{}, input); }
 
 std::vector<Opinion> library_alternatives(const Input& input) {
   if (const auto* in = std::get_if<BroadphaseInput>(&input)) {
-    return {guarded("library.sort_and_sweep", [&] { return full_sorts(*in); })};
+    return {guarded("library.sweep_and_prune", [&] { return incremental<SweepAndPrune>(*in); }),
+            guarded("library.sort_and_sweep", [&] { return full_sorts(*in); })};
   }
   if (const auto* in = std::get_if<RayMeshInput>(&input)) {
     return {guarded("library.ray_mesh_any",
                     [&] { return ray_answer(library_ray_mesh(in->mesh.mesh, in->library, in->ray, true), false); }),
             guarded("library.ray_mesh_brute_force", [&] { return ray_answer(ray_mesh_brute_force(*in->mesh.mesh, in->ray), true); })};
+  }
+  if (const auto* in = std::get_if<RayAabbInput>(&input)) {
+    return {guarded("library.test_ray_aabbs", [&] { return batched_ray(*in); })};
+  }
+  if (const auto* in = std::get_if<MeshMeshInput>(&input)) {
+    return {guarded("library.collision_world(refit)", [&] { return world_pairs(in->meshes, RotationBounds::refit); }),
+            guarded("library.collision_world(cube)",
+                    [&] { return world_pairs(in->meshes, RotationBounds::bounding_cube); })};
   }
   if (const auto* in = std::get_if<MovingObbInput>(&input)) {
     const auto a = exact_aabb(in->a), b = exact_aabb(in->b);

@@ -35,7 +35,7 @@ double monotonic_seconds() {
 
 ChildResult run_child(const std::vector<std::string>& argv, const std::filesystem::path& cwd,
                       const std::filesystem::path& log, double timeout_seconds,
-                      const std::filesystem::path& err_log) {
+                      const std::filesystem::path& err_log, const std::function<bool()>& stop) {
   ChildResult result;
   const double start = monotonic_seconds();
   std::vector<char*> args;
@@ -88,9 +88,15 @@ ChildResult run_child(const std::vector<std::string>& argv, const std::filesyste
       result.timed_out = true;
       break;
     }
+    if (stop && stop()) {
+      kill(-pid, SIGKILL);
+      waitpid(pid, &status, 0);
+      result.stopped = true;
+      break;
+    }
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
-  result.exit_status = !result.timed_out && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  result.exit_status = !result.timed_out && !result.stopped && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   result.seconds = monotonic_seconds() - start;
   return result;
 }

@@ -1,5 +1,7 @@
 #include "tool/mutant_catalogue.h"
 
+#include "collide/simd.h"
+
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
@@ -99,6 +101,10 @@ std::vector<Mutant> read_catalogue(const std::filesystem::path& path) {
     mutant.replacement = m["replacement"].get<std::string>();
     mutant.description = field(m, pointer, "description", file);
     mutant.equivalent = field(m, pointer, "equivalent", file, true);
+    mutant.kernel = field(m, pointer, "kernel", file, true);
+    if (!mutant.kernel.empty() && !simd::kernel_named(mutant.kernel)) {
+      throw CatalogueError(file + ": " + pointer + "/kernel: \"" + mutant.kernel + "\" is not a kernel (scalar, avx2, avx512)");
+    }
     if (mutant.original == mutant.replacement) {
       throw CatalogueError(file + ": " + pointer + "/replacement: the same as the original text");
     }
@@ -107,7 +113,7 @@ std::vector<Mutant> read_catalogue(const std::filesystem::path& path) {
     }
     for (const auto& [key, value] : m.items()) {
       static const std::set<std::string> known = {"id", "query", "file", "original", "replacement", "description",
-                                                  "equivalent"};
+                                                  "equivalent", "kernel"};
       if (!known.count(key)) throw CatalogueError(file + ": " + pointer + "/" + key + ": unknown field");
     }
     if (!ids.insert(mutant.id).second) {
@@ -124,6 +130,15 @@ std::optional<std::string> staleness(const Mutant& m, const std::string& text) {
   if (count == 1) return std::nullopt;
   if (count == 0) return "the original text is not found in " + m.file;
   return "the original text occurs " + std::to_string(count) + " times in " + m.file + " (must be once)";
+}
+
+std::optional<std::string> not_executable_here(const Mutant& m) {
+  if (m.kernel.empty()) return std::nullopt;
+  const simd::Kernel k = *simd::kernel_named(m.kernel);
+  if (const auto why = simd::unsupported_reason(k)) {
+    return "its code is the " + m.kernel + " kernel, and " + *why + ": not run, left out of the score";
+  }
+  return std::nullopt;
 }
 
 std::string mutated(const Mutant& m, const std::string& text) {

@@ -20,6 +20,9 @@ struct Mutant {
   std::string replacement;  // what it becomes
   std::string description;  // one line: the bug a real engineer could have written
   std::string equivalent;   // non-empty: why it cannot change any answer (left out of the score)
+  /// Non-empty: the SIMD kernel (simd::to_string) the mutated code belongs to; it runs only on
+  /// processors that support that kernel, and elsewhere the mutant is not executable.
+  std::string kernel;
 };
 
 /// A bad catalogue: the message names the file and the place (line and column, or a JSON
@@ -29,13 +32,16 @@ struct CatalogueError : std::runtime_error {
 };
 
 /// Reads and checks a catalogue file ({"format": "crosscheck-mutants", "version": 1,
-/// "mutants": [...]}): every field present and a string, ids unique, original != replacement.
-/// Throws CatalogueError.
+/// "mutants": [...]}): every field present and a string, ids unique, original != replacement,
+/// a kernel (optional) one of simd::kAllKernels. Throws CatalogueError.
 std::vector<Mutant> read_catalogue(const std::filesystem::path& path);
 
 /// Whether a mutant applies to a file's text: nullopt when `original` occurs exactly once,
 /// otherwise why it is stale ("not found", or "occurs 3 times").
 std::optional<std::string> staleness(const Mutant& m, const std::string& text);
+
+/// Why this processor cannot run the mutant's code (its kernel is one it lacks), or nothing.
+std::optional<std::string> not_executable_here(const Mutant& m);
 
 /// The file's text with the mutant applied (the caller has checked staleness).
 std::string mutated(const Mutant& m, const std::string& text);

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
 #include <regex>
@@ -17,10 +18,12 @@
 #include <thread>
 
 #include "tool/child_process.h"
+#include "tool/ctest_log.h"
 #include "tool/commands.h"
 #include "tool/mutant_catalogue.h"
 #include "tool/mutation_report.h"
 #include "tool/scratch_tree.h"
+#include "tool/test_time_limits.h"
 
 namespace cc::tool {
 namespace {
@@ -37,7 +40,7 @@ struct MutateArgs {
   double campaign_seconds = 60;
   unsigned campaign_seed = 1;
   int campaign_workers = 1;
-  double test_timeout = 120;
+  double test_timeout = 10;
   std::vector<std::string> labels = {"corpus", "fuzz", "unit", "property"};
   std::vector<std::string> only;
   std::string exclude_tests;
@@ -124,19 +127,6 @@ void set_up(Worker& w, const MutateArgs& args) {
   for (const std::string& label : args.labels) w.label_targets.push_back(targets_of_label(w, label));
 }
 
-// The failing tests in a ctest log ("Test #12: name ....***Failed"): their names, and how
-// each failed.
-std::vector<std::pair<std::string, std::string>> failures(const fs::path& log) {
-  static const std::regex failed(R"(Test +#[0-9]+: (\S+) .*\*\*\*([A-Za-z]+))");
-  std::vector<std::pair<std::string, std::string>> out;
-  std::ifstream in(log);
-  for (std::string line; std::getline(in, line);) {
-    std::smatch m;
-    if (std::regex_search(line, m, failed)) out.emplace_back(m[1].str(), m[2].str());
-  }
-  return out;
-}
-
 // A ctest -E pattern matching exactly these test names.
 std::string exact_names_pattern(const std::vector<std::string>& names) {
   std::string out;
@@ -148,18 +138,6 @@ std::string exact_names_pattern(const std::vector<std::string>& names) {
     }
   }
   return out.empty() ? out : out + ")$";
-}
-
-// The longest time a test took in a ctest log ("... Passed   62.55 sec").
-double slowest_test(const fs::path& log) {
-  static const std::regex passed(R"(Test +#[0-9]+: \S+ .*Passed +([0-9.]+) sec)");
-  double out = 0;
-  std::ifstream in(log);
-  for (std::string line; std::getline(in, line);) {
-    std::smatch m;
-    if (std::regex_search(line, m, passed)) out = std::max(out, std::stod(m[1].str()));
-  }
-  return out;
 }
 
 struct CtestOutcome {
@@ -175,21 +153,43 @@ struct CtestOutcome {
 constexpr const char* kCatalogueLabel = "^catalogue$";
 
 // Runs the tests of a label, leaving out those matching `exclude` (a regex; empty: none) and
-// those of kCatalogueLabel.
-CtestOutcome run_ctest(const Worker& w, const std::string& label, double timeout, const fs::path& log,
+// those of kCatalogueLabel. With `limits`, ctest is stopped (and the test counts as failed by a
+// timeout) when the test it runs passes its limit: ctest runs one test at a time, and its log
+// names each test as it starts.
+CtestOutcome run_ctest(const Worker& w, const std::string& label, const TestTimeLimits* limits, const fs::path& log,
                        bool stop_on_failure, const std::string& exclude) {
   fs::remove(log);
-  std::vector<std::string> argv = {"ctest",     "--test-dir", w.build.string(), "-L", "^" + label + "$", "--timeout",
-                                   std::to_string(timeout), "-LE", kCatalogueLabel, "--output-on-failure", "-j1"};
+  std::vector<std::string> argv = {"ctest", "--test-dir", w.build.string(), "-L",  "^" + label + "$", "--timeout",
+                                   "14400", "-LE",        kCatalogueLabel,  "--output-on-failure", "-j1"};
   if (stop_on_failure) argv.push_back("--stop-on-failure");
   if (!exclude.empty()) argv.insert(argv.end(), {"-E", exclude});
-  const ChildResult r = run_child(argv, {}, log, 4 * 3600);
+  RunningTest running;
+  std::optional<std::string> watched;  // the test running now, and since when
+  double started = 0;
+  std::ifstream follow;
+  const auto past_its_limit = [&] {
+    if (limits == nullptr) return false;
+    if (!follow.is_open()) follow.open(log, std::ios::binary);
+    if (!follow.is_open()) return false;
+    char chunk[4096];
+    while (follow.read(chunk, sizeof chunk) || follow.gcount() > 0) {
+      running.feed({chunk, static_cast<std::size_t>(follow.gcount())});
+    }
+    follow.clear();  // at the end for now: read on from here next time
+    if (running.name() != watched) watched = running.name(), started = monotonic_seconds();
+    return watched && monotonic_seconds() - started > limits->limit(*watched);
+  };
+  const ChildResult r = run_child(argv, {}, log, 4 * 3600, {}, past_its_limit);
   CtestOutcome out;
   out.seconds = r.seconds;
   if (interrupted()) {
     out.problem = "interrupted";
+  } else if (r.stopped) {
+    out.failed = true;
+    out.test = *watched + " (Timeout: past " + limits->describe(*watched) + ")";
+    out.failed_tests = {*watched};
   } else if (r.exit_status != 0) {
-    const auto failed = failures(log);
+    const auto failed = failed_tests(read_text(log));
     if (failed.empty()) {
       out.problem = "ctest failed without a failing test (see " + log.string() + ")";
     } else {
@@ -222,7 +222,7 @@ std::string line_with(const fs::path& log, const std::string& needle, bool at_st
 }
 
 // Applies one mutant in a worker's tree, runs the checks, reverts it.
-void run_mutant(const Worker& w, const MutateArgs& args, const std::string& exclude, double test_timeout,
+void run_mutant(const Worker& w, const MutateArgs& args, const std::string& exclude, const TestTimeLimits& limits,
                 MutantResult& result) {
   const Mutant& m = result.mutant;
   const fs::path file = w.tree / m.file;
@@ -258,7 +258,7 @@ void run_mutant(const Worker& w, const MutateArgs& args, const std::string& excl
       result.seconds = monotonic_seconds() - start;
       return;
     }
-    const CtestOutcome c = run_ctest(w, label, test_timeout, stem + "." + label + ".log", true, exclude);
+    const CtestOutcome c = run_ctest(w, label, &limits, stem + "." + label + ".log", true, exclude);
     if (!c.problem.empty()) {
       result.status = interrupted() ? MutantStatus::not_run : MutantStatus::error;
       result.note = c.problem;
@@ -370,13 +370,21 @@ int run(const MutateArgs& args) {
       std::printf("STALE %s: %s\n", m.id.c_str(), why->c_str());
     } else if (!m.equivalent.empty()) {
       r.status = MutantStatus::equivalent;
+    } else if (const auto lacking = not_executable_here(m)) {
+      r.status = MutantStatus::not_executable;
+      r.note = *lacking;
+      std::printf("NOT EXECUTABLE HERE %s: %s\n", m.id.c_str(), lacking->c_str());
     } else {
       queue.push_back(run.results.size());
     }
     run.results.push_back(std::move(r));
   }
-  std::printf("%zu mutants: %zu to run, %d stale, %zu equivalent\n", run.results.size(), queue.size(), stale,
-              run.results.size() - queue.size() - stale);
+  const auto not_executable = std::count_if(run.results.begin(), run.results.end(),
+                                            [](const MutantResult& r) { return r.status == MutantStatus::not_executable; });
+  std::printf("%zu mutants: %zu to run, %d stale, %zu equivalent, %zu not executable on this processor\n",
+              run.results.size(), queue.size(), stale,
+              run.results.size() - queue.size() - static_cast<std::size_t>(stale) - static_cast<std::size_t>(not_executable),
+              static_cast<std::size_t>(not_executable));
   if (args.check_only) return stale ? kExitFound : 0;
 
   // Mutants of one file run one after the other (fewer files to recompile), headers last (a
@@ -401,19 +409,21 @@ int run(const MutateArgs& args) {
   std::condition_variable baseline_cv;
   bool baseline_done = args.no_baseline;
   std::string exclude = args.exclude_tests;
-  double test_timeout = args.test_timeout;
-  run.test_timeout = test_timeout;
+  TestTimeLimits limits;
+  limits.floor_seconds = args.test_timeout;
+  run.time_limit_factor = limits.factor;
+  run.time_limit_floor = limits.floor_seconds;
 
   const auto work = [&](Worker& w) {
     try {
       set_up(w, args);
       if (w.index == 0 && !args.no_baseline) {
         std::vector<std::string> failing;
-        double slowest = 0;
+        std::map<std::string, double> own;
         for (const std::string& label : args.labels) {
           const fs::path log = w.logs / ("baseline." + label + ".log");
-          const CtestOutcome c = run_ctest(w, label, 4 * 3600, log, false, args.exclude_tests);
-          slowest = std::max(slowest, slowest_test(log));
+          const CtestOutcome c = run_ctest(w, label, nullptr, log, false, args.exclude_tests);
+          own.merge(passed_test_seconds(read_text(log)));
           if (!c.problem.empty()) throw std::runtime_error("the unmutated tree: label " + label + ": " + c.problem);
           failing.insert(failing.end(), c.failed_tests.begin(), c.failed_tests.end());
           std::lock_guard<std::mutex> g(lock);
@@ -425,12 +435,14 @@ int run(const MutateArgs& args) {
         }
         std::lock_guard<std::mutex> g(lock);
         run.excluded_tests = failing;
-        // A test counts as hanging only well past its time on the unmutated tree: the machine
+        // A test counts as hanging only well past its own time on the unmutated tree: the machine
         // may be shared, and a loaded machine must not make a mutant look caught.
-        test_timeout = std::max(args.test_timeout, 5 * slowest);
-        run.test_timeout = test_timeout;
-        std::printf("a test times out after %.0f s (5 times the slowest on the unmutated tree, at least %g s)\n",
-                    test_timeout, args.test_timeout);
+        double slowest = 0;
+        for (const auto& [test, seconds] : own) slowest = std::max(slowest, seconds);
+        limits.own_seconds = std::move(own);
+        limits.unknown_seconds = limits.factor * slowest;
+        std::printf("a test times out past %g times its own time on the unmutated tree, at least %g s (%zu tests timed)\n",
+                    limits.factor, limits.floor_seconds, limits.own_seconds.size());
         if (!failing.empty()) exclude += (exclude.empty() ? "" : "|") + exact_names_pattern(failing);
         baseline_done = true;
         baseline_cv.notify_all();
@@ -460,7 +472,7 @@ int run(const MutateArgs& args) {
       }
       MutantResult& r = run.results[index];
       try {
-        run_mutant(w, args, exclude, test_timeout, r);
+        run_mutant(w, args, exclude, limits, r);
       } catch (const std::exception& e) {
         r.status = MutantStatus::error;
         r.note = e.what();
@@ -509,6 +521,9 @@ int run(const MutateArgs& args) {
     errors += r.status == MutantStatus::error;
     if (r.status == MutantStatus::survived) std::printf("SURVIVED %s: %s\n", r.mutant.id.c_str(), r.mutant.description.c_str());
     if (r.status == MutantStatus::not_run) std::printf("not run %s: %s\n", r.mutant.id.c_str(), r.note.c_str());
+    if (r.status == MutantStatus::not_executable) {
+      std::printf("NOT EXECUTABLE HERE %s: %s\n", r.mutant.id.c_str(), r.note.c_str());
+    }
   }
   std::printf("score: ctest alone %d/%d, ctest + campaign %d/%d; %d stale, %d not run, %d errors\n", s.by_ctest,
               s.counted, s.by_either, s.counted, stale, not_run, errors);
@@ -542,7 +557,8 @@ void add_mutate_command(CLI::App& app, int& exit_code) {
       ->capture_default_str()
       ->check(CLI::Range(1, 64));
   cmd->add_option("--test-timeout", args->test_timeout,
-                  "Seconds after which a test counts as failed (caught); at least 5 times the slowest test of the baseline")
+                  "Seconds: a test counts as failed (caught) past 5 times its own time on the unmutated tree, and never "
+                  "before this (without a baseline: past 600 s)")
       ->capture_default_str()
       ->check(CLI::PositiveNumber);
   cmd->add_option("--labels", args->labels, "ctest labels in the order they run")->capture_default_str()->delimiter(',');

@@ -19,13 +19,18 @@ std::string percent(int part, int whole) {
   return buf;
 }
 
-// Table cells hold no pipes or newlines.
-std::string cell(std::string s) {
-  for (char& c : s) {
-    if (c == '|') c = '/';
-    if (c == '\n') c = ' ';
+// A table cell: a pipe is escaped (Markdown shows \| as |, in code spans too), a newline is a
+// space.
+std::string cell(const std::string& s) {
+  std::string out;
+  for (char c : s) {
+    if (c == '|') {
+      out += "\\|";
+    } else {
+      out += c == '\n' ? ' ' : c;
+    }
   }
-  return s;
+  return out;
 }
 
 }  // namespace
@@ -38,6 +43,7 @@ std::string_view to_string(MutantStatus s) {
     case MutantStatus::equivalent: return "equivalent";
     case MutantStatus::stale: return "STALE";
     case MutantStatus::build_failed: return "does not build";
+    case MutantStatus::not_executable: return "not executable here";
     case MutantStatus::not_run: return "not run";
     case MutantStatus::error: return "ERROR";
   }
@@ -63,8 +69,10 @@ std::string markdown_report(const MutationRun& run) {
          std::to_string(run.jobs) + " worker(s); checks in order: ctest labels ";
   for (std::size_t i = 0; i < run.labels.size(); ++i) out += (i ? ", " : "") + run.labels[i];
   char line[256];
-  std::snprintf(line, sizeof line, " (stop on the first failure; a test running past %.0f s counts as failed)",
-                run.test_timeout);
+  std::snprintf(line, sizeof line,
+                " (stop on the first failure; a test running past %g times its own time on the unmutated tree, "
+                "and at least %g s, counts as failed)",
+                run.time_limit_factor, run.time_limit_floor);
   out += line;
   if (run.campaign_seconds > 0) {
     std::snprintf(line, sizeof line, ", then `crosscheck campaign --query KIND --seconds %g --seed %u`",
@@ -77,8 +85,9 @@ std::string markdown_report(const MutationRun& run) {
          percent(s.by_ctest, s.counted) + " |\n";
   out += "| ctest + campaign | " + std::to_string(s.by_either) + " | " + std::to_string(s.counted) + " | " +
          percent(s.by_either, s.counted) + " |\n\n";
-  int equivalent = 0, stale = 0, not_run = 0, build_failed = 0, errors = 0;
+  int equivalent = 0, stale = 0, not_run = 0, build_failed = 0, errors = 0, not_executable = 0;
   for (const MutantResult& r : run.results) {
+    not_executable += r.status == MutantStatus::not_executable;
     equivalent += r.status == MutantStatus::equivalent;
     stale += r.status == MutantStatus::stale;
     not_run += r.status == MutantStatus::not_run;
@@ -87,7 +96,8 @@ std::string markdown_report(const MutationRun& run) {
   }
   out += "Left out of the score: " + std::to_string(equivalent) + " equivalent, " + std::to_string(stale) + " stale, " +
          std::to_string(build_failed) + " not building, " + std::to_string(not_run) + " not run (budget or interrupted), " +
-         std::to_string(errors) + " runner errors.\n\n";
+         std::to_string(errors) + " runner errors, " + std::to_string(not_executable) +
+         " not executable here (SIMD kernels this processor cannot run).\n\n";
   std::snprintf(line, sizeof line, "Setup (sync, configure, build, baseline) %.0f s; whole run %.0f s (budget %g min).\n\n",
                 run.setup_seconds, run.seconds, run.budget_minutes);
   out += line;
@@ -111,7 +121,7 @@ std::string markdown_report(const MutationRun& run) {
     std::string note = r.note;
     if (r.status == MutantStatus::equivalent) note = r.mutant.equivalent;
     if (note.empty()) note = r.mutant.description;
-    out += "| `" + r.mutant.id + "` | " + r.mutant.query + " | " + r.mutant.file + " | " +
+    out += "| `" + r.mutant.id + "` | " + r.mutant.query + " | " + cell(r.mutant.file) + " | " +
            std::string(to_string(r.status)) + " | " + cell(by) + " | " + (caught ? seconds_text(r.seconds_to_catch) : "") +
            " | " + (ran ? seconds_text(r.build_seconds) : "") + " | " + cell(note) + " |\n";
   }
@@ -133,7 +143,7 @@ std::string json_report(const MutationRun& run) {
   j["baseline_seconds"] = Json::object();
   for (const auto& [label, secs] : run.baseline) j["baseline_seconds"][label] = secs;
   j["excluded_tests"] = run.excluded_tests;
-  j["test_timeout_seconds"] = run.test_timeout;
+  j["test_time_limit"] = {{"factor_of_own_time", run.time_limit_factor}, {"floor_seconds", run.time_limit_floor}};
   j["setup_seconds"] = run.setup_seconds;
   j["seconds"] = run.seconds;
   j["score"] = {{"counted", s.counted},
@@ -146,6 +156,7 @@ std::string json_report(const MutationRun& run) {
     j["mutants"].push_back({{"id", r.mutant.id},
                             {"query", r.mutant.query},
                             {"file", r.mutant.file},
+                            {"kernel", r.mutant.kernel},
                             {"description", r.mutant.description},
                             {"status", std::string(to_string(r.status))},
                             {"check", r.check},

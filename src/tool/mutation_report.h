@@ -17,6 +17,7 @@ enum class MutantStatus {
   equivalent,          // declared equivalent in the catalogue: not run, left out of the score
   stale,               // its original text is not in the file exactly once: not run
   build_failed,        // the mutated tree does not build: not a valid mutant, left out of the score
+  not_executable,      // its code is a SIMD kernel this processor cannot run: not run, left out of the score
   not_run,             // the budget ran out before it could start
   error,               // the runner could not run a check (see note)
 };
@@ -46,7 +47,9 @@ struct MutationRun {
   std::vector<std::string> labels;
   std::vector<std::pair<std::string, double>> baseline;  // label -> seconds of the unmutated tree
   std::vector<std::string> excluded_tests;  // failing on the unmutated tree: left out of the mutant runs
-  double test_timeout = 0;  // seconds after which a test counted as failed
+  // A test counted as failed past time_limit_factor times its own time on the unmutated tree,
+  // and never before time_limit_floor seconds.
+  double time_limit_factor = 5, time_limit_floor = 0;
   double setup_seconds = 0;
   double seconds = 0;
   std::vector<MutantResult> results;  // in catalogue order

@@ -1,8 +1,9 @@
-// crosscheck replay DIR...: re-answers every stored case and reports each change: the library
-// now wrong, the exact reference answering otherwise, a second opinion behaving otherwise, or
-// the class changing. Exit 1 on any change (ctest's corpus label runs this), 2 on bad input.
+// crosscheck replay DIR...: re-answers every stored case and reports each change (see
+// harness/replay.h): the library now wrong, any party's whole answer or the exact verdict
+// otherwise than recorded, a party gone or new, or the class changing. Exit 1 on any change (ctest's corpus label runs this), 2 on bad input.
 #include <cstdio>
 
+#include "harness/replay.h"
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
@@ -17,37 +18,6 @@ struct ReplayArgs {
   bool quiet = false;
   bool accept = false;
 };
-
-std::string said(const Opinion& o) {
-  switch (o.status) {
-    case Opinion::Status::answered: return o.answer.hit ? "hit" : "miss";
-    case Opinion::Status::not_applicable: return "n/a";
-    case Opinion::Status::failed: return "failed";
-  }
-  return "?";
-}
-
-// What changed between the stored case and its replay, one line each.
-std::vector<std::string> changes(const Case& c, const Evaluation& now) {
-  std::vector<std::string> out;
-  if (now.verdict.parties[0].standing == Standing::wrong) out.push_back("the library is wrong: " + now.verdict.parties[0].why);
-  if (now.exact.answer.hit != c.exact.answer.hit || now.exact.contract != c.exact.contract) {
-    out.push_back(std::string("the exact reference changed: recorded ") + (c.exact.answer.hit ? "hit" : "miss") + ", now " +
-                  (now.exact.answer.hit ? "hit" : "miss"));
-  }
-  for (const Opinion& before : c.opinions) {
-    for (const Opinion& after : now.opinions) {
-      if (after.party != before.party) continue;
-      if (said(after) != said(before)) {
-        out.push_back(before.party + " changed its behaviour: recorded " + said(before) + ", now " + said(after));
-      }
-    }
-  }
-  if (now.verdict.cls != c.cls) {
-    out.push_back("class changed: recorded " + std::string(to_string(c.cls)) + ", now " + std::string(to_string(now.verdict.cls)));
-  }
-  return out;
-}
 
 int run(const ReplayArgs& args) {
   std::vector<std::filesystem::path> roots(args.dirs.begin(), args.dirs.end());
@@ -67,7 +37,7 @@ int run(const ReplayArgs& args) {
     }
     ++cases;
     const Evaluation now = evaluate_with_oracles(c->input);
-    const std::vector<std::string> what = changes(*c, now);
+    const std::vector<std::string> what = replay_changes(*c, now);
     if (what.empty()) {
       if (!args.quiet) std::printf("ok       %s  %s\n", file.string().c_str(), std::string(to_string(c->cls)).c_str());
       continue;

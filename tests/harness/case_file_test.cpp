@@ -3,7 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <cstring>
 #include <fstream>
+
+#include "harness/distinct_inputs.h"
 
 namespace cc::harness {
 namespace {
@@ -34,6 +37,97 @@ TEST(CaseFile, RoundTripsEveryField) {
   EXPECT_EQ(j["inputs"]["tmax"], "inf");
   EXPECT_EQ(back.provenance.case_index, 1234u);
   EXPECT_EQ(back.opinions[0].status, Opinion::Status::not_applicable);
+}
+
+// An answer with parameters, pairs and frames whose values all differ, and pairs (i, j) with
+// i != j, so that a swap shows.
+Answer distinct_answer(test::DistinctValues& values) {
+  Answer a;
+  a.hit = values.below(2) == 0;
+  for (std::uint64_t i = values.below(4); i > 0; --i) a.params.push_back(values.next());
+  const auto pairs = [&] {
+    std::vector<FacePair> out;
+    for (std::uint64_t i = values.below(4); i > 0; --i) {
+      const auto first = static_cast<std::uint32_t>(values.below(1000));
+      out.emplace_back(first, first + 1 + static_cast<std::uint32_t>(values.below(1000)));
+    }
+    return out;
+  };
+  a.pairs = pairs();
+  for (std::uint64_t f = values.below(4); f > 0; --f) a.frames.push_back(pairs());
+  return a;
+}
+
+std::vector<std::uint64_t> bits_of(const std::vector<double>& xs) {
+  std::vector<std::uint64_t> out;
+  for (double x : xs) {
+    std::uint64_t b = 0;
+    std::memcpy(&b, &x, sizeof b);
+    out.push_back(b);
+  }
+  return out;
+}
+
+void expect_same(const Answer& a, const Answer& b, const std::string& what) {
+  EXPECT_EQ(a.hit, b.hit) << what;
+  EXPECT_EQ(bits_of(a.params), bits_of(b.params)) << what;
+  EXPECT_EQ(a.pairs, b.pairs) << what;
+  EXPECT_EQ(a.frames, b.frames) << what;
+}
+
+// Every field of a case whose values all differ comes back from the file's text in its place:
+// the inputs of every kind (every double bit for bit, the shape and the options), every party's
+// answer, the exact verdict, the class, the margin, the provenance and the note.
+TEST(CaseFile, EveryFieldOfEveryKindRoundTripsThroughTheText) {
+  const std::string names[] = {"library.test_ray_aabbs", "libccd.GJK", "fcl.OBBd::overlap"};
+  for (QueryKind kind : kAllQueryKinds) {
+    for (std::uint64_t seed = 0; seed < 25; ++seed) {
+      test::DistinctValues values(seed * 31 + static_cast<std::uint64_t>(kind));
+      Case c;
+      c.input = test::distinct_input(kind, values, test::Reach::case_file);
+      c.library = distinct_answer(values);
+      c.exact.answer = distinct_answer(values);
+      c.exact.contract = static_cast<Contract>(values.below(3));
+      c.exact.decided = values.below(2) == 0;
+      c.exact.margin = values.next();
+      c.exact.note = values.below(2) ? "" : "note " + std::to_string(values.below(100));
+      for (const std::string& party : names) {
+        Opinion o{party, static_cast<Opinion::Status>(values.below(3)), {}, ""};
+        if (o.status == Opinion::Status::answered) o.answer = distinct_answer(values);
+        if (values.below(2)) o.detail = "detail " + std::to_string(values.below(100));
+        c.opinions.push_back(o);
+      }
+      c.cls = kAllClasses[values.below(std::size(kAllClasses))];
+      c.provenance = {values.below(2) ? "campaign" : "fuzz", values.below(1u << 20), values.below(1u << 20),
+                      "detail " + std::to_string(values.below(100))};
+      c.note = "note " + std::to_string(values.below(100));
+      const std::string what = std::string(name(kind)) + " seed " + std::to_string(seed);
+
+      const Case back = case_from_json(Json::parse(case_to_json(c).dump(2)));
+      Input in = c.input, in_back = back.input;
+      EXPECT_EQ(test::value_bits(in_back), test::value_bits(in)) << what << ": " << input_to_json(c.input).dump();
+      EXPECT_TRUE(in_back == in) << what << ": the shape or an option changed";
+      expect_same(back.library, c.library, what + " library");
+      expect_same(back.exact.answer, c.exact.answer, what + " exact");
+      EXPECT_EQ(back.exact.contract, c.exact.contract) << what;
+      EXPECT_EQ(back.exact.decided, c.exact.decided) << what;
+      EXPECT_EQ(bits_of({back.exact.margin}), bits_of({c.exact.margin})) << what;
+      EXPECT_EQ(back.exact.note, c.exact.note) << what;
+      ASSERT_EQ(back.opinions.size(), c.opinions.size()) << what;
+      for (std::size_t i = 0; i < c.opinions.size(); ++i) {
+        EXPECT_EQ(back.opinions[i].party, c.opinions[i].party) << what;
+        EXPECT_EQ(back.opinions[i].status, c.opinions[i].status) << what;
+        EXPECT_EQ(back.opinions[i].detail, c.opinions[i].detail) << what;
+        expect_same(back.opinions[i].answer, c.opinions[i].answer, what + " " + c.opinions[i].party);
+      }
+      EXPECT_EQ(back.cls, c.cls) << what;
+      EXPECT_EQ(back.provenance.source, c.provenance.source) << what;
+      EXPECT_EQ(back.provenance.seed, c.provenance.seed) << what;
+      EXPECT_EQ(back.provenance.case_index, c.provenance.case_index) << what;
+      EXPECT_EQ(back.provenance.detail, c.provenance.detail) << what;
+      EXPECT_EQ(back.note, c.note) << what;
+    }
+  }
 }
 
 TEST(CaseFile, IsNamedByAHashOfItsInputs) {

@@ -7,6 +7,9 @@
 #include "harness/generate.h"
 #include "harness/input_json.h"
 
+#include <algorithm>
+#include <set>
+
 namespace cc::harness {
 namespace {
 
@@ -68,6 +71,68 @@ TEST(Transform, RaysAndTrianglesAgainstBoxesHaveNothingToSwap) {
   EXPECT_FALSE(transform(RayAabbInput{}, Relation::swap_shapes, 0));
   EXPECT_FALSE(transform(TriObbInput{}, Relation::swap_shapes, 0));
   EXPECT_TRUE(transform(TriTriInput{}, Relation::swap_shapes, 0));
+}
+
+TEST(Transform, ReorderingATriangleTakesEachOfTheSixOrders) {
+  const Triangle t{{Vec3{1, 0, 0}, Vec3{0, 2, 0}, Vec3{0, 0, 3}}};
+  std::set<std::string> orders;
+  for (int p = 0; p < 6; ++p) {
+    const auto r = transform(TriAabbInput{t, {}}, Relation::permute_vertices, p);
+    ASSERT_TRUE(r);
+    const Triangle& u = std::get<TriAabbInput>(*r).tri;
+    orders.insert(text(TriTriInput{u, {}}));
+    EXPECT_TRUE(std::is_permutation(u.v.begin(), u.v.end(), t.v.begin()));
+  }
+  EXPECT_EQ(orders.size(), 6u);
+}
+
+// A reordering keeps what is reordered, as a multiset, and moves some of it; the answer's faces
+// or slots follow: pair (i, j) of the original names the same two things as the mapped pair of
+// the reordered query.
+TEST(Transform, ReorderingsMoveThingsAndTheAnswerFollows) {
+  Mesh a, b;
+  for (std::uint32_t f = 0; f < 9; ++f) {
+    for (Mesh* m : {&a, &b}) {
+      const double x = f + (m == &b ? 0.5 : 0);
+      m->vertices.insert(m->vertices.end(), {Vec3{x, 0, 0}, Vec3{x, 1, 0}, Vec3{x, 0, 1}});
+      m->faces.push_back({3 * f, 3 * f + 1, 3 * f + 2});
+    }
+  }
+  MeshPair m{triangles_mesh(a), triangles_mesh(b), {}, {}, {}};
+  const Input in = MeshMeshInput{m};
+  for (int parameter : {1, 77, 123456}) {
+    const auto r = transform(in, Relation::permute_faces, parameter);
+    ASSERT_TRUE(r);
+    const MeshPair& moved = *meshes_of(*r);
+    int displaced = 0;
+    for (std::uint32_t f = 0; f < 9; ++f) {
+      // Face f of a and face f of b, renamed by the mapping of the pair (f, f).
+      Answer one;
+      one.pairs = {{f, f}};
+      const FacePair to = mapped_answer(one, in, Relation::permute_faces, parameter).pairs[0];
+      EXPECT_EQ(moved.a.mesh->triangle(to.first), a.triangle(f));
+      EXPECT_EQ(moved.b.mesh->triangle(to.second), b.triangle(f));
+      displaced += to.first != f;
+    }
+    EXPECT_GT(displaced, 0);
+  }
+  BroadphaseInput scene;
+  scene.frames = {{Aabb{{0, 0, 0}, {1, 1, 1}}, std::nullopt, Aabb{{2, 0, 0}, {3, 1, 1}}, Aabb{{4, 0, 0}, {5, 1, 1}}}};
+  const auto r = transform(scene, Relation::permute_objects, 5);
+  ASSERT_TRUE(r);
+  const auto& frame = std::get<BroadphaseInput>(*r).frames[0];
+  Answer pair;
+  pair.frames = {{{0, 3}}};
+  const FacePair to = mapped_answer(pair, scene, Relation::permute_objects, 5).frames[0][0];
+  EXPECT_LT(to.first, to.second);
+  EXPECT_TRUE((frame[to.first] == scene.frames[0][0] && frame[to.second] == scene.frames[0][3]) ||
+              (frame[to.first] == scene.frames[0][3] && frame[to.second] == scene.frames[0][0]));
+  const KdopKdopInput k{18, {{1, 0, 0}, {2, 0, 0}, {3, 0, 0}, {4, 0, 0}}, {{5, 0, 0}, {6, 0, 0}}};
+  const auto shuffled = std::get<KdopKdopInput>(*transform(k, Relation::permute_points, 9));
+  EXPECT_TRUE(std::is_permutation(shuffled.a.begin(), shuffled.a.end(), k.a.begin()));
+  EXPECT_TRUE(std::is_permutation(shuffled.b.begin(), shuffled.b.end(), k.b.begin()));
+  EXPECT_FALSE(transform(SphereSphereInput{}, Relation::permute_points, 1));
+  EXPECT_FALSE(transform(RayAabbInput{}, Relation::permute_vertices, 1));
 }
 
 TEST(FlushExtremes, ZeroesTinyAndHugeValuesOnly) {

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include "harness/generate.h"
+#include "harness/input_json.h"
 #include "harness/library.h"
 #include "harness/mesh_query.h"
 #include "harness/shrink_faces.h"
@@ -49,6 +51,78 @@ TEST(Shrink, KeepsTheDisagreementAndSimplifiesTheValues) {
   const auto& s = std::get<SphereSphereInput>(r.input);
   EXPECT_GT(s.a.radius + s.b.radius, 1);  // still the planted disagreement
   EXPECT_LE(r.attempts, 4000);
+}
+
+// Keeping the signature, part by part: the planted evaluations below differ from the start's in
+// one part of the signature only (the class, the exact answer, a party's standing, what it said,
+// a party that was right), and only on about half of the candidates (by a hash of their inputs),
+// so the shrinker can make progress on the others. It must reject every candidate that changes
+// the part: the result keeps every part, compared part by part (not through signature_of).
+enum class Part { cls, exact_hit, library_standing, library_said, party_standing, party_said, right_party };
+
+Evaluation base_evaluation() {
+  Evaluation e;
+  e.library = {true, {}, {}, {}};
+  e.exact.answer = {true, {}, {}, {}};
+  e.exact.margin = 0x1p-45;
+  e.opinions = {{"fcl.OBBd::overlap", Opinion::Status::answered, {false, {}, {}, {}}, ""},
+                {"fcl.collide(Box,Box)", Opinion::Status::answered, {true, {}, {}, {}}, ""}};
+  e.verdict.cls = CaseClass::oracle_defect;
+  e.verdict.parties = {{"library", Standing::within_band, ""},
+                       {"fcl.OBBd::overlap", Standing::wrong, ""},
+                       {"fcl.collide(Box,Box)", Standing::right, ""}};
+  return e;
+}
+
+void change(Evaluation& e, Part part) {
+  switch (part) {
+    case Part::cls: e.verdict.cls = CaseClass::boundary; break;
+    case Part::exact_hit: e.exact.answer.hit = false; break;
+    case Part::library_standing: e.verdict.parties[0].standing = Standing::wrong; break;
+    case Part::library_said: e.library.hit = false; break;
+    case Part::party_standing: e.verdict.parties[1].standing = Standing::within_band; break;
+    case Part::party_said: e.opinions[0].answer.hit = true; break;
+    case Part::right_party: e.verdict.parties[2].standing = Standing::wrong; break;
+  }
+}
+
+// Every part of the signature, written out here.
+std::vector<std::string> parts_of(const Evaluation& e) {
+  std::vector<std::string> out = {std::string(to_string(e.verdict.cls)), e.exact.answer.hit ? "exact hit" : "exact miss",
+                                  e.library.hit ? "library hit" : "library miss"};
+  for (std::size_t i = 0; i < e.verdict.parties.size(); ++i) {
+    out.push_back(e.verdict.parties[i].party + " " + std::string(to_string(e.verdict.parties[i].standing)));
+    if (i > 0) out.push_back(e.verdict.parties[i].party + (e.opinions[i - 1].answer.hit ? " hit" : " miss"));
+  }
+  return out;
+}
+
+TEST(Shrink, KeepsEveryPartOfTheSignature) {
+  const Part parts[] = {Part::cls,           Part::exact_hit,      Part::library_standing, Part::library_said,
+                        Part::party_standing, Part::party_said,    Part::right_party};
+  for (QueryKind kind : {QueryKind::sphere_sphere, QueryKind::obb_obb, QueryKind::ray_aabb}) {
+    for (Part part : parts) {
+      for (std::uint64_t seed = 0; seed < 3; ++seed) {
+        RandomChoices choices(seed * 7 + 1);
+        const Input start = generate(kind, choices);
+        int changed = 0;
+        const Evaluator planted = [&](const Input& in) {
+          Evaluation e = base_evaluation();
+          if (std::hash<std::string>{}(input_to_json(in).dump()) % 2 == 0 && !(in == start)) {
+            change(e, part);
+            ++changed;
+          }
+          return e;
+        };
+        const ShrinkResult r = shrink(start, base_evaluation(), planted, 300, 20);
+        const std::string what = std::string(name(kind)) + " part " + std::to_string(static_cast<int>(part)) +
+                                 " seed " + std::to_string(seed);
+        EXPECT_EQ(parts_of(r.evaluation), parts_of(base_evaluation())) << what;
+        EXPECT_GT(changed, 0) << what << ": no candidate changed the part";
+        EXPECT_GT(r.accepted, 0) << what << ": no candidate was kept";
+      }
+    }
+  }
 }
 
 TEST(Shrink, RespectsTheAttemptBudget) {

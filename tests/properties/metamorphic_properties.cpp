@@ -1,13 +1,30 @@
-// Metamorphic properties, exact in floating point so no oracle is needed: swapping the two
-// shapes, permuting the axes, flipping the sign of an axis and scaling by a power of two give
-// the library's answer bit for bit (ray parameters included). Where a relation does not apply
+// Metamorphic relations, no oracle needed where they are exact in floating point: swapping the
+// two shapes, permuting the axes, flipping the sign of an axis and scaling by a power of two give
+// the library's answer bit for bit (ray parameters included), and so do the reorderings of what
+// the generators keep in order: a k-DOP's points, a scene's objects (pairs renamed), a mesh's
+// faces (pairs renamed; the leaf tests see the same triangles). Where a relation does not apply
 // (no second shape; a k-DOP direction set not closed under it: 16 under both, 24 under flips)
-// it is skipped; mesh queries take only the permutation of the world's axes. Scaling is checked
-// on inputs whose values lie in [2^-250, 2^250] (others flushed to 0), where no intermediate
-// result of the library underflows or overflows.
+// it is skipped. Scaling is checked on inputs whose values lie in [2^-250, 2^250] (others flushed
+// to 0), where no intermediate result of the library underflows or overflows.
+//
+// Three relations hold only as "equal, or another right answer", and the property checks that
+// much, so a real asymmetry still fails it:
+//  - reordering a triangle's vertices changes which edges the tests compute and so their
+//    rounding (a tri_tri 9 ulps apart is a hit one way, a miss the other): the answers must be
+//    equal, or both right within the library's band by the exact reference;
+//  - a first hit under reordered faces may be another pair: the same hit, and a pair of all
+//    the pairs of the reordered meshes;
+//  - the closest hit of a ray under reordered faces: the same hit and t, and the face renamed,
+//    or another face hit at that same t (ties go to the smallest index).
+// Reordering copies a mesh and builds its hierarchy again, so meshes of more than 512 faces in
+// all (FCL's env.obj) are left out of those relations.
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
+#include <algorithm>
+
+#include "collide/ray_mesh.h"
+#include "harness/evaluate.h"
 #include "harness/input_json.h"
 #include "harness/library.h"
 #include "harness/metamorphic.h"
@@ -27,6 +44,38 @@ struct Case {
 
 class Metamorphic : public ::testing::TestWithParam<Case> {};
 
+std::size_t faces_of(const Input& input) {
+  if (const MeshPair* m = meshes_of(input)) return m->a.mesh->size() + m->b.mesh->size();
+  if (const auto* ray = std::get_if<RayMeshInput>(&input)) return ray->mesh.mesh->size();
+  return 0;
+}
+
+// Whether the library is right on the input, or within its band, by the exact reference.
+bool library_right(const Input& input, const exact::ExactRationalReference& exact) {
+  return evaluate(input, exact, nullptr).verdict.parties[0].standing != Standing::wrong;
+}
+
+// The relations that hold as "equal, or another right answer" (see the top): whether `after`,
+// the answer to the transformed input, is such another right answer where `before` (the
+// original's, mapped) is not equal to it.
+bool another_right_answer(const Input& input, const Input& transformed, const Answer& before, const Answer& after,
+                          Relation relation, const exact::ExactRationalReference& exact) {
+  if (relation == Relation::permute_vertices) return library_right(input, exact) && library_right(transformed, exact);
+  if (relation != Relation::permute_faces || before.hit != after.hit) return false;
+  if (const auto* first = std::get_if<MeshMeshFirstInput>(&transformed)) {
+    const Answer all = ask_library(MeshMeshInput{first->meshes});
+    return after.pairs.size() == 1 && std::binary_search(all.pairs.begin(), all.pairs.end(), after.pairs[0]);
+  }
+  if (const auto* ray = std::get_if<RayMeshInput>(&transformed)) {
+    if (after.params != before.params || after.pairs.size() != 1) return false;
+    const Triangle t = ray->mesh.mesh->triangle(after.pairs[0].first);
+    const Mesh face{{t.v[0], t.v[1], t.v[2]}, {{0, 1, 2}}};
+    const RayMeshHit alone = ray_mesh_brute_force(face, ray->ray);
+    return alone.hit && alone.t == after.params[0];
+  }
+  return false;
+}
+
 TEST_P(Metamorphic, TheAnswerIsUnchanged) {
   const QueryKind kind = GetParam().kind;
   const Relation relation = GetParam().relation;  // not a structured binding: the lambda below captures it
@@ -34,7 +83,9 @@ TEST_P(Metamorphic, TheAnswerIsUnchanged) {
   const std::string property = std::string(name(kind)) + ": " + std::string(to_string(relation));
   Met met;
   int applied = 0;
-  const int cases = case_budget(kind, 1000);
+  // Reordering a mesh builds its two hierarchies again: fewer cases than the other relations.
+  const bool reorders = relation == Relation::permute_vertices || relation == Relation::permute_faces;
+  const int cases = case_budget(kind, 1000, reorders ? 60 : 200);
   const bool passed = check_property(property, kind, 0, cases, met, [&](const Input& generated) {
     const Input input = relation == Relation::scale ? flush_extremes(generated) : generated;
     met.count(features_of(input, exact.judge(input)));
@@ -44,12 +95,15 @@ TEST_P(Metamorphic, TheAnswerIsUnchanged) {
       case Relation::flip_axis: parameter = *rc::gen::inRange(0, 3); break;
       case Relation::scale: parameter = *rc::gen::element(-8, -3, -1, 1, 2, 7); break;
       case Relation::swap_shapes: break;
+      case Relation::permute_vertices: parameter = *rc::gen::inRange(1, 36); break;
+      default: parameter = *rc::gen::inRange(1, 1 << 30); break;
     }
+    if (reorders && faces_of(input) > 512) return;
     const auto transformed = transform(input, relation, parameter);
     if (!transformed) return;
     ++applied;
-    const Answer before = ask_library(input), after = ask_library(*transformed);
-    if (!(before == after)) {
+    const Answer before = mapped_answer(ask_library(input), input, relation, parameter), after = ask_library(*transformed);
+    if (!(before == after) && !another_right_answer(input, *transformed, before, after, relation, exact)) {
       RC_FAIL("the answer changed (" + std::to_string(before.hit) + " -> " + std::to_string(after.hit) +
               ") under parameter " + std::to_string(parameter) + "\n  inputs: " + input_to_json(input).dump());
     }
@@ -62,7 +116,7 @@ TEST_P(Metamorphic, TheAnswerIsUnchanged) {
 std::vector<Case> all_cases() {
   std::vector<Case> cases;
   for (QueryKind kind : kAllQueryKinds) {
-    for (Relation r : {Relation::swap_shapes, Relation::permute_axes, Relation::flip_axis, Relation::scale}) {
+    for (Relation r : kAllRelations) {
       if (relation_applies(kind, r)) cases.push_back({kind, r});
     }
   }

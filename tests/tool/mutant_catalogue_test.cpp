@@ -7,6 +7,7 @@
 
 #include <string>
 
+#include "collide/simd.h"
 #include "temp_folder.h"
 
 namespace cc::tool {
@@ -57,6 +58,33 @@ TEST(MutantCatalogue, ReadsEveryFieldInOrder) {
   EXPECT_EQ(flip.equivalent, "");  // optional: absent means counted
   EXPECT_EQ(mutants[1].id, "box.swap");
   EXPECT_EQ(mutants[1].equivalent, "f is symmetric");
+}
+
+TEST(MutantCatalogue, AKernelNamesTheSimdCodeAMutantBelongsTo) {
+  const Folder folder;
+  const auto mutants = read_catalogue(folder.write(
+      "mutants.json", catalogue_text(R"json({"id": "batch.avx2", "query": "ray_aabb", "file": "src/b.cpp",
+                                        "original": "x", "replacement": "y", "description": "d",
+                                        "kernel": "avx2"})json")));
+  ASSERT_EQ(mutants.size(), 1u);
+  EXPECT_EQ(mutants[0].kernel, "avx2");
+  EXPECT_NE(error_reading(catalogue_text(R"json({"id": "a", "query": "q", "file": "f", "original": "x",
+                                            "replacement": "y", "description": "d", "kernel": "neon"})json"))
+                .find(": /mutants/0/kernel: \"neon\" is not a kernel"),
+            std::string::npos);
+}
+
+TEST(MutantCatalogue, AMutantOfAKernelTheProcessorLacksIsNotExecutableHere) {
+  Mutant m;
+  EXPECT_EQ(not_executable_here(m), std::nullopt);  // no kernel: runs everywhere
+  for (simd::Kernel k : simd::kAllKernels) {
+    m.kernel = std::string(simd::to_string(k));
+    const auto why = not_executable_here(m);
+    EXPECT_EQ(why.has_value(), !simd::supported(k)) << m.kernel;
+    if (why) {
+      EXPECT_NE(why->find("this processor lacks"), std::string::npos) << *why;
+    }
+  }
 }
 
 TEST(MutantCatalogue, AnEmptyReplacementDeletesTheText) {

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
+#include <vector>
 
 namespace cc::tool {
 namespace {
@@ -44,7 +45,7 @@ MutationRun sample_run() {
   run.labels = {"corpus", "fuzz", "unit", "property"};
   run.baseline = {{"unit", 42}, {"property", 300}};
   run.excluded_tests = {"Broken.Test"};
-  run.test_timeout = 1500;
+  run.time_limit_floor = 10;
 
   MutantResult equivalent = result("e.equivalent", MutantStatus::equivalent);
   equivalent.mutant.equivalent = "both branches give the same double";
@@ -62,7 +63,10 @@ MutationRun sample_run() {
                  stale,
                  not_building,
                  result("h.not_run", MutantStatus::not_run),
-                 result("i.error", MutantStatus::error)};
+                 result("i.error", MutantStatus::error),
+                 result("j.avx512_only", MutantStatus::not_executable)};
+  run.results.back().note = "its code is the avx512 kernel, and this processor lacks AVX-512 F and DQ";
+  run.results.back().mutant.description = "`|x| < 1` for `|x| <= 1` in the avx512 kernel";
   return run;
 }
 
@@ -87,18 +91,20 @@ TEST(MutationReport, EveryStatusHasItsOwnName) {
   std::set<std::string> names;
   for (MutantStatus s : {MutantStatus::caught_by_ctest, MutantStatus::caught_by_campaign, MutantStatus::survived,
                          MutantStatus::equivalent, MutantStatus::stale, MutantStatus::build_failed,
-                         MutantStatus::not_run, MutantStatus::error}) {
+                         MutantStatus::not_run, MutantStatus::error, MutantStatus::not_executable}) {
     names.insert(std::string(to_string(s)));
   }
-  EXPECT_EQ(names.size(), 8u);
+  EXPECT_EQ(names.size(), 9u);
 }
 
 TEST(MutationReport, MarkdownHasTheScoresAndWhatWasLeftOut) {
   const std::string md = markdown_report(sample_run());
   EXPECT_TRUE(contains(md, "| ctest alone | 2 | 4 | 50.0% |")) << md;
   EXPECT_TRUE(contains(md, "| ctest + campaign | 3 | 4 | 75.0% |")) << md;
-  EXPECT_TRUE(contains(md, "1 equivalent, 1 stale, 1 not building, 1 not run (budget or interrupted), 1 runner errors"))
+  EXPECT_TRUE(contains(md, "1 equivalent, 1 stale, 1 not building, 1 not run (budget or interrupted), 1 runner errors, "
+                           "1 not executable here"))
       << md;
+  EXPECT_TRUE(contains(md, "past 5 times its own time on the unmutated tree, and at least 10 s")) << md;
   EXPECT_TRUE(contains(md, "corpus, fuzz, unit, property")) << md;
   EXPECT_TRUE(contains(md, "unit 42 s; property 300 s;")) << md;
   EXPECT_TRUE(contains(md, "`Broken.Test`")) << md;
@@ -114,13 +120,39 @@ TEST(MutationReport, MarkdownHasOneRowPerMutantWithWhatCaughtItAndWhen) {
   EXPECT_TRUE(contains(md, "the bug of d.survivor")) << md;               // a survivor's description
 }
 
-TEST(MutationReport, MarkdownCellsHoldNoPipeOrNewline) {
-  const std::string md = markdown_report(sample_run());
-  const auto at = md.find("| `g.not_building` |");
-  ASSERT_NE(at, std::string::npos);
+// The row of a mutant in the Markdown report, and its columns (split at unescaped pipes).
+std::vector<std::string> columns_of(const std::string& md, const std::string& id) {
+  const auto at = md.find("| `" + id + "` |");
+  if (at == std::string::npos) return {};
   const std::string row = md.substr(at, md.find('\n', at) - at);
-  EXPECT_EQ(std::count(row.begin(), row.end(), '|'), 9) << row;  // eight columns
-  EXPECT_TRUE(contains(row, "see build.log / with a pipe and a newline")) << row;
+  std::vector<std::string> out;
+  std::string current;
+  for (std::size_t i = 1; i < row.size(); ++i) {
+    if (row[i] == '|' && row[i - 1] != '\\') {
+      out.push_back(current);
+      current.clear();
+    } else {
+      current += row[i];
+    }
+  }
+  return out;
+}
+
+TEST(MutationReport, MarkdownCellsEscapePipesAndHoldNoNewline) {
+  const std::string md = markdown_report(sample_run());
+  const std::vector<std::string> cells = columns_of(md, "g.not_building");
+  ASSERT_EQ(cells.size(), 8u) << md;  // eight columns
+  EXPECT_EQ(cells[7], " see build.log \\| with a pipe and a newline ") << md;
+  EXPECT_EQ(columns_of(md, "j.avx512_only").size(), 8u) << md;
+}
+
+TEST(MutationReport, AMutantOfAKernelThisProcessorLacksIsSaidSo) {
+  const std::string md = markdown_report(sample_run());
+  const std::vector<std::string> cells = columns_of(md, "j.avx512_only");
+  ASSERT_EQ(cells.size(), 8u) << md;
+  EXPECT_EQ(cells[3], " not executable here ");
+  EXPECT_TRUE(contains(cells[7], "this processor lacks AVX-512 F and DQ")) << cells[7];
+  EXPECT_EQ(score_of(sample_run()).counted, 4);  // not a survivor: left out of the score
 }
 
 TEST(MutationReport, JsonHasTheScoresAndEveryMutant) {

@@ -1,0 +1,54 @@
+// The SIMD kernels of the library's batched routines: which instruction sets they are written
+// for, which of them this processor runs, and which one the routines use. By default that is the
+// best the processor has; a kernel can be forced (for the whole process) so that tests run every
+// kernel the machine supports against the scalar one.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace cc::simd {
+
+/// A kernel of a batched routine, by instruction set. Every batched routine has all of them,
+/// and they give the same answers bit for bit (the same IEEE double arithmetic in each lane).
+enum class Kernel { scalar, avx2, avx512 };
+inline constexpr Kernel kAllKernels[] = {Kernel::scalar, Kernel::avx2, Kernel::avx512};
+
+/// "scalar", "avx2", "avx512".
+std::string_view to_string(Kernel k);
+/// The kernel with that name, if any.
+std::optional<Kernel> kernel_named(std::string_view name);
+/// The processor features a kernel needs, e.g. "AVX-512 F and DQ"; "none" for scalar.
+std::string_view features_needed(Kernel k);
+
+/// Whether this processor (and its operating system) runs the kernel, checked at run time.
+/// Always true for scalar.
+bool supported(Kernel k);
+/// The kernels this processor runs, scalar first.
+std::vector<Kernel> supported_kernels();
+/// Why this processor cannot run the kernel ("this processor lacks AVX2"), or nothing.
+std::optional<std::string> unsupported_reason(Kernel k);
+
+/// The kernel batched routines use: the forced one, if any, else the best supported.
+Kernel selected();
+
+/// Makes every batched routine use `k` from now on, in every thread (nothing: the best supported
+/// again). A call already running finishes with the kernel it started with. Throws
+/// std::invalid_argument (with unsupported_reason) if this processor cannot run `k`.
+void force(std::optional<Kernel> k);
+
+/// Forces a kernel for its lifetime, then restores the choice before it.
+class ForcedKernel {
+ public:
+  explicit ForcedKernel(Kernel k);
+  ~ForcedKernel();
+  ForcedKernel(const ForcedKernel&) = delete;
+  ForcedKernel& operator=(const ForcedKernel&) = delete;
+
+ private:
+  std::optional<Kernel> previous_;
+};
+
+}  // namespace cc::simd

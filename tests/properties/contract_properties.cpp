@@ -1,0 +1,286 @@
+// The library's set-theoretic contracts against their definitions in exact arithmetic, through
+// its public headers only:
+//  - convex_hull: the extremes of linear functions over the points (along the 13 directions of
+//    the 26-DOP, the points' differences and the normals of their planes) are reached at its
+//    vertices, so the extreme points are among them; coincident points give one vertex;
+//  - fit_obb: every point lies in the box, whose axes are right-handed and orthonormal to
+//    within the OBB contract's tolerance;
+//  - kdop_corners: every corner lies in every slab of the k-DOP, and the corners reach every
+//    slab, to within 2^-46 of the bounds' magnitude;
+//  - rotation_radius, bounding_cube, fitted_box: the radius is no less than any vertex's
+//    distance, and both boxes hold the mesh placed by the pose, exactly and as apply() places it.
+// The point sets are coincident, collinear, coplanar or in general position, in a random order
+// (the extremes anywhere), with repeated points, at every scale the value source draws.
+#include <gtest/gtest.h>
+#include <rapidcheck.h>
+
+#include <algorithm>
+
+#include "collide/convex_hull.h"
+#include "collide/kdop.h"
+#include "collide/kdop_corners.h"
+#include "collide/obb_fit.h"
+#include "collide/object_bounds.h"
+#include "harness/number_text.h"
+#include "harness/rotation.h"
+#include "harness/values.h"
+#include "oracle/exact/rational.h"
+#include "properties/property.h"
+
+namespace cc::test {
+namespace {
+
+using exact::QVec3;
+using exact::Rational;
+using exact::rational;
+
+enum class Layout { coincident, collinear, coplanar, general };
+constexpr Layout kLayouts[] = {Layout::coincident, Layout::collinear, Layout::coplanar, Layout::general};
+const char* to_string(Layout l) {
+  switch (l) {
+    case Layout::coincident: return "coincident";
+    case Layout::collinear: return "collinear";
+    case Layout::coplanar: return "coplanar";
+    case Layout::general: return "general";
+  }
+  return "?";
+}
+
+// How often each layout was met; each must be.
+struct Layouts {
+  int count[4] = {0, 0, 0, 0};
+  void expect_each_met(const std::string& property) const {
+    for (Layout l : kLayouts) EXPECT_GT(count[static_cast<int>(l)], 0) << property << " never met " << to_string(l) << " points";
+  }
+};
+
+QVec3 q(const Vec3& v) { return rational(v); }
+
+std::string text(const std::vector<Vec3>& points) {
+  std::string out;
+  for (const Vec3& p : points) {
+    out += (out.empty() ? "(" : ", (") + harness::format_double(p.x) + " " + harness::format_double(p.y) + " " +
+           harness::format_double(p.z) + ")";
+  }
+  return out;
+}
+QVec3 q(const KdopDirection& d) { return {d.x, d.y, d.z}; }
+
+// The layout of points, decided exactly: the rank of their differences.
+Layout layout_of(const std::vector<Vec3>& points) {
+  std::vector<QVec3> d;
+  for (const Vec3& p : points) d.push_back(q(p) - q(points[0]));
+  const auto nonzero = std::find_if(d.begin(), d.end(), [](const QVec3& v) { return !exact::is_zero(v); });
+  if (nonzero == d.end()) return Layout::coincident;
+  const auto cross_nonzero = std::find_if(d.begin(), d.end(), [&](const QVec3& v) { return !exact::is_zero(cross(*nonzero, v)); });
+  if (cross_nonzero == d.end()) return Layout::collinear;
+  const QVec3 n = cross(*nonzero, *cross_nonzero);
+  for (const QVec3& v : d) {
+    if (sgn(dot(n, v)) != 0) return Layout::general;
+  }
+  return Layout::coplanar;
+}
+
+// Points in the layout asked for, from a base point and directions the value source draws, with
+// small integer and half coefficients (so they are exact), some repeated, shuffled.
+std::vector<Vec3> draw_points(harness::ValueSource& values, Layout layout) {
+  harness::Choices& c = values.choices();
+  const Vec3 base = values.point();
+  const Vec3 u = values.point(), v = values.point();
+  const std::size_t n = 1 + c.draw(10);
+  std::vector<Vec3> points;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (!points.empty() && c.chance(15)) {
+      points.push_back(points[c.draw(points.size())]);
+      continue;
+    }
+    const double a = values.small_int(8) * (c.chance(30) ? 0.5 : 1.0), b = values.small_int(8);
+    switch (layout) {
+      case Layout::coincident: points.push_back(base); break;
+      case Layout::collinear: points.push_back(base + a * u); break;
+      case Layout::coplanar: points.push_back(base + a * u + b * v); break;
+      case Layout::general: points.push_back(c.chance(70) ? values.point() : base + a * u + b * v); break;
+    }
+  }
+  for (std::size_t i = points.size(); i > 1; --i) std::swap(points[i - 1], points[c.draw(i)]);  // extremes anywhere
+  return points;
+}
+
+// Directions to try linear functions along: the 13 of the 26-DOP, and the points' differences
+// and their cross products (the normals of the point set's planes).
+std::vector<QVec3> directions(const std::vector<Vec3>& points) {
+  std::vector<QVec3> out;
+  for (const KdopDirection& d : kdop_directions<26>()) out.push_back(q(d));
+  for (std::size_t i = 1; i < points.size() && i < 5; ++i) {
+    out.push_back(q(points[i]) - q(points[0]));
+    for (std::size_t j = 1; j < i; ++j) out.push_back(cross(q(points[i]) - q(points[0]), q(points[j]) - q(points[0])));
+  }
+  return out;
+}
+
+TEST(Contracts, AConvexHullReachesEveryExtremeAtItsVertices) {
+  Layouts met;
+  const std::string property = "convex_hull's vertices and triangles";
+  const bool passed = check_property_with_choices(property, 1500, [&](harness::Choices& c) {
+    harness::ValueSource values(c, {.max_exponent = 8, .extreme = true, .huge = true});
+    const Layout layout = kLayouts[c.draw(4)];
+    const std::vector<Vec3> points = draw_points(values, layout);
+    const Layout actual = layout_of(points);
+    ++met.count[static_cast<int>(actual)];
+    const ConvexHull hull = convex_hull(points);
+    std::vector<QVec3> all, at_vertices;
+    for (const Vec3& p : points) all.push_back(q(p));
+    for (std::uint32_t i : hull.vertices) {
+      RC_ASSERT(i < points.size());
+      at_vertices.push_back(q(points[i]));
+    }
+    RC_ASSERT(!at_vertices.empty());
+    for (const QVec3& d : directions(points)) {
+      for (int sign : {1, -1}) {
+        Rational best = sign * dot(d, all[0]), best_at_vertex = sign * dot(d, at_vertices[0]);
+        for (const QVec3& p : all) best = std::max(best, Rational(sign * dot(d, p)));
+        for (const QVec3& p : at_vertices) best_at_vertex = std::max(best_at_vertex, Rational(sign * dot(d, p)));
+        if (best != best_at_vertex) {
+          RC_FAIL(std::string(to_string(actual)) + " points: an extreme along a direction is not at a vertex (" +
+                  std::to_string(hull.vertices.size()) + " vertices of " + std::to_string(points.size()) + " points): " +
+                  text(points));
+        }
+      }
+    }
+    if (actual == Layout::coincident) RC_ASSERT(hull.vertices.size() == 1u);
+    if (actual == Layout::coincident || actual == Layout::collinear) RC_ASSERT(hull.triangles.empty());
+    // Triangles of indices among the vertices. (Whether each lies exactly in a supporting plane
+    // is not checked: Qhull computes the facets in floating point, and a set flat to within a
+    // few subnormals gets facets that cut it by as much, or none.)
+    for (const auto& t : hull.triangles) {
+      for (std::uint32_t i : t) RC_ASSERT(std::find(hull.vertices.begin(), hull.vertices.end(), i) != hull.vertices.end());
+    }
+  });
+  EXPECT_TRUE(passed);
+  met.expect_each_met(property);
+}
+
+// A box holds what projects onto each of its axes within its half extent of its centre's
+// projection (as the separating-axis tests see it).
+bool holds(const Obb& b, const QVec3& p) {
+  const QVec3 d = p - q(b.center);
+  for (int k = 0; k < 3; ++k) {
+    if (abs(dot(q(b.axes.col[k]), d)) > rational(b.half[k])) return false;
+  }
+  return true;
+}
+
+TEST(Contracts, AFittedObbHoldsItsPointsWithOrthonormalAxes) {
+  Layouts met;
+  const std::string property = "fit_obb holds its points";
+  const bool passed = check_property_with_choices(property, 800, [&](harness::Choices& c) {
+    harness::ValueSource values(c, {.max_exponent = 8, .extreme = true, .huge = true});
+    const std::vector<Vec3> points = draw_points(values, kLayouts[c.draw(4)]);
+    ++met.count[static_cast<int>(layout_of(points))];
+    const Obb box = fit_obb(points);
+    for (const Vec3& p : points) {
+      if (!holds(box, q(p))) RC_FAIL("a point lies outside its fitted box: " + text(points));
+    }
+    // The header promises 2^-50, "well within" the OBB contract's tolerance; (0, 1, 2), (0, 0, 0)
+    // gets an axis of length 1 + 2^-51 (2^-50 + 2^-102 off): checked against the contract's.
+    const Rational tolerance = rational(kObbOrthonormalTolerance);
+    for (int i = 0; i < 3; ++i) {
+      for (int j = i; j < 3; ++j) {
+        Rational g = dot(q(box.axes.col[i]), q(box.axes.col[j]));
+        if (i == j) g -= 1;
+        if (abs(g) > tolerance) RC_FAIL("the axes are not orthonormal to within 2^-48: " + text(points));
+      }
+    }
+    if (sgn(dot(cross(q(box.axes.col[0]), q(box.axes.col[1])), q(box.axes.col[2]))) <= 0) RC_FAIL("the axes are left-handed: " + text(points));
+  });
+  EXPECT_TRUE(passed);
+  met.expect_each_met(property);
+}
+
+template <int K>
+void check_corners(const std::vector<Vec3>& points) {
+  const Kdop<K> dop = fit_kdop<K>(points);
+  const std::vector<Vec3> corners = kdop_corners(dop);
+  RC_ASSERT(!corners.empty());
+  double magnitude = 0;
+  for (int i = 0; i < K / 2; ++i) magnitude = std::max({magnitude, std::fabs(dop.lo[i]), std::fabs(dop.hi[i])});
+  const auto dirs = kdop_directions<K>();
+  for (int i = 0; i < K / 2; ++i) {
+    const QVec3 d = q(dirs[i]);
+    const Rational slack = rational(0x1p-46 * magnitude) * (std::abs(dirs[i].x) + std::abs(dirs[i].y) + std::abs(dirs[i].z));
+    const Rational lo = rational(dop.lo[i]), hi = rational(dop.hi[i]);
+    Rational least = dot(d, q(corners[0])), most = least;
+    for (const Vec3& c : corners) {
+      const Rational s = dot(d, q(c));
+      if (s < lo - slack || s > hi + slack) RC_FAIL("k = " + std::to_string(K) + ": a corner lies outside slab " + std::to_string(i));
+      least = std::min(least, s), most = std::max(most, s);
+    }
+    if (least > lo + slack || most < hi - slack) RC_FAIL("k = " + std::to_string(K) + ": the corners do not reach slab " + std::to_string(i));
+  }
+}
+
+TEST(Contracts, TheCornersOfAKdopSpanIt) {
+  Layouts met;
+  const std::string property = "kdop_corners span the k-DOP";
+  const bool passed = check_property_with_choices(property, 600, [&](harness::Choices& c) {
+    harness::ValueSource values(c, {.max_exponent = 8, .extreme = false, .huge = false});
+    const std::vector<Vec3> points = draw_points(values, kLayouts[c.draw(4)]);
+    ++met.count[static_cast<int>(layout_of(points))];
+    switch (c.draw(6)) {
+      case 0: check_corners<6>(points); break;
+      case 1: check_corners<14>(points); break;
+      case 2: check_corners<16>(points); break;
+      case 3: check_corners<18>(points); break;
+      case 4: check_corners<24>(points); break;
+      default: check_corners<26>(points);
+    }
+  });
+  EXPECT_TRUE(passed);
+  met.expect_each_met(property);
+}
+
+bool holds(const Aabb& b, const QVec3& p) {
+  for (int k = 0; k < 3; ++k) {
+    if (p[k] < rational(b.lo[k]) || p[k] > rational(b.hi[k])) return false;
+  }
+  return true;
+}
+
+QVec3 placed_exactly(const RigidTransform& t, const Vec3& v) {
+  QVec3 out = q(t.translation);
+  for (int j = 0; j < 3; ++j) out = out + rational(v[j]) * q(t.rotation.col[j]);
+  return out;
+}
+
+TEST(Contracts, AnObjectsBoxesHoldItsPlacedMesh) {
+  Layouts met;
+  const std::string property = "rotation_radius, bounding_cube and fitted_box hold the placed mesh";
+  const bool passed = check_property_with_choices(property, 800, [&](harness::Choices& c) {
+    harness::ValueSource values(c, {.max_exponent = 8, .extreme = true, .huge = false});
+    const std::vector<Vec3> points = draw_points(values, kLayouts[c.draw(4)]);
+    ++met.count[static_cast<int>(layout_of(points))];
+    Mesh mesh;
+    mesh.vertices = points;
+    for (std::uint32_t i = 0; i + 2 < points.size(); i += 3) mesh.faces.push_back({i, i + 1, i + 2});
+    const double radius = rotation_radius(mesh);
+    for (const Vec3& v : points) {
+      if (rational(radius) * rational(radius) < dot(q(v), q(v))) RC_FAIL("rotation_radius is below a vertex's distance: " + text(points));
+    }
+    RigidTransform pose;
+    pose.translation = values.point();
+    for (int rotations = 0; rotations < 3; ++rotations) {
+      pose.rotation = harness::draw_rotation(values);
+      const Aabb cube = bounding_cube(radius, pose), fitted = fitted_box(mesh, pose);
+      for (const Vec3& v : points) {
+        const QVec3 exactly = placed_exactly(pose, v), as_applied = q(apply(pose, v));
+        if (!holds(cube, exactly) || !holds(cube, as_applied)) RC_FAIL("the bounding cube does not hold a placed vertex: " + text(points) + " rotation " + text({pose.rotation.col[0], pose.rotation.col[1], pose.rotation.col[2]}) + " translation " + text({pose.translation}));
+        if (!holds(fitted, exactly) || !holds(fitted, as_applied)) RC_FAIL("the fitted box does not hold a placed vertex: " + text(points) + " rotation " + text({pose.rotation.col[0], pose.rotation.col[1], pose.rotation.col[2]}) + " translation " + text({pose.translation}));
+      }
+    }
+  });
+  EXPECT_TRUE(passed);
+  met.expect_each_met(property);
+}
+
+}  // namespace
+}  // namespace cc::test
