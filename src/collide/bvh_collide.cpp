@@ -18,9 +18,9 @@ Triangle moved(const RigidTransform& t, const Triangle& tri) {
 }
 
 // Moving b's vertices rounds each coordinate by at most transform_error_bound (2^-50 of b's
-// magnitude plus the translation); the approximate update's bounds carry below 2^-46 of the
-// same (see VolumeMover); a slab along a 3-term direction sums three coordinates' errors.
-// 2^-43 is used.
+// magnitude plus the translation); the approximate update's bounds carry below 2^-45 of the
+// same, times the slab direction's 1-norm (see VolumeMover); a slab along a 3-term direction
+// sums three coordinates' errors. 2^-43 is used.
 double update_pad(double magnitude, const RigidTransform& t) {
   return 0x1p-43 * (magnitude + max_abs(t.translation)) + fp::subnormal_slack;
 }
@@ -51,9 +51,9 @@ struct SlabCount<Kdop<K>> {
 //    m_i = R^T n_i, where h is the support of b's volume bounded through three of its slabs
 //    (kdop_cone, support_bound; for a box, exactly the support: the box around its moved
 //    corners). Errors, each times |n_i|_1 at most: m_i's rounding 2u M (M = b's magnitude,
-//    which bounds |x|_1 over every volume), the cone's residual 2^-47 M, support_bound's 18u M
-//    (the coefficients sum to at most 6 |m_i|_max), n_i . T's 2u |T| and the last sum's
-//    u (6 M + |T|), the leaf test's moving of a vertex 2u (M + |T|): below 2^-46 (M + |T|).
+//    which bounds |x|_1 over every volume), the cone's residual 2^-46 M, support_bound's 27u M
+//    (the coefficients sum to at most 9 |m_i|_max), n_i . T's 2u |T| and the last sum's
+//    u (9 M + |T|), the leaf test's moving of a vertex 2u (M + |T|): below 2^-45 (M + |T|).
 //  - exact: the moved hull points of the node (BuildOptions::hull_points), or all its vertices,
 //    re-fitted (fit_kdop rounds outward), then padded.
 template <class BV>

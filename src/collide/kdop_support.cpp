@@ -58,9 +58,10 @@ std::vector<Face> hull_faces() {
 // The face whose smallest coefficient is largest (the first with all coefficients >= 0, which
 // some face has in exact arithmetic), its coefficients clamped at 0. Each coefficient is off
 // by at most 4u |inverse row|_1 |m|_max before clamping (the inverse's rounding, the products'
-// and sum3's), and clamping moves it by no more; with |inverse row|_1 <= 2 for every face of
-// these direction sets (kdop_support_test checks it) and |s_j|_1 <= 3 per component of the
-// combination, the combination is off by at most 3 * 16u |m|_max < 2^-47 |m|_max.
+// and sum3's), and clamping moves it by no more; |inverse row|_1 is at most 3 over the faces of
+// these direction sets (2 for k = 6, 14, 26), and each component of the combination sums three
+// terms, so the combination is off by at most 3 * 24u |m|_max < 2^-46 |m|_max. The
+// coefficients sum to at most 9 |m|_max.
 template <int K>
 KdopCone<K> kdop_cone(const Vec3& m) {
   static const std::vector<Face> faces = hull_faces<K>();

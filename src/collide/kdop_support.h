@@ -16,7 +16,8 @@ namespace cc {
 /// slabs meet at a vertex of it, as for every box; otherwise it lies a little above.
 ///  - The three are the corners of a face of the convex hull of the normalised normals, which
 ///    cover every direction; for a box, the octant of m, with c_j = |m_j| exactly.
-///  - Rounded: the combination differs from m by at most 2^-47 max|m_k| in each component.
+///  - Rounded: the combination differs from m by at most 2^-46 max|m_k| in each component; the
+///    coefficients sum to at most 9 max|m_k|.
 ///  - m finite; m = 0 gives c = 0.
 template <int K>
 struct KdopCone {

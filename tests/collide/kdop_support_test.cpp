@@ -44,7 +44,7 @@ void expect_cones_combine_to_their_direction() {
       ASSERT_TRUE(cone.normal[j] >= 0 && cone.normal[j] < K);
       sum = sum + exact::rational(cone.coefficient[j]) * half_space_normal<K>(cone.normal[j]);
     }
-    const Rational allowed = exact::rational(0x1p-47 * max_abs(m));
+    const Rational allowed = exact::rational(0x1p-46 * max_abs(m));
     const exact::QVec3 residual = exact::rational(m) - sum;
     for (int k = 0; k < 3; ++k) {
       ASSERT_LE(abs(residual[k]), allowed) << "k = " << K << ", m = " << m.x << " " << m.y << " " << m.z;
@@ -84,7 +84,7 @@ void expect_bounds_hold_the_points() {
       const double bound = support_bound(dop, cone);
       double terms = 0;  // 3u sum c_j |bound_j| plus the residual's reach
       for (int j = 0; j < 3; ++j) terms += cone.coefficient[j] * 12;
-      const Rational slack = exact::rational(3 * fp::u * terms + 0x1p-47 * max_abs(m) * 12);
+      const Rational slack = exact::rational(3 * fp::u * terms + 0x1p-46 * max_abs(m) * 12);
       for (const Vec3& p : points) {
         ASSERT_LE(dot(exact::rational(m), exact::rational(p)), exact::rational(bound) + slack) << "k = " << K;
       }

@@ -6,7 +6,7 @@
 //  - fit_obb: every point lies in the box, whose axes are right-handed and orthonormal to
 //    within the OBB contract's tolerance;
 //  - kdop_cone, support_bound: the cone's nonnegative combination is its direction to within
-//    2^-47 of it, and the bound is at least every point's projection (up to its own rounding);
+//    2^-46 of it, and the bound is at least every point's projection (up to its own rounding);
 //  - rotation_radius, bounding_cube, fitted_box: the radius is no less than any vertex's
 //    distance, and both boxes hold the mesh placed by the pose, exactly and as apply() places it.
 // The point sets are coincident, collinear, coplanar or in general position, in a random order
@@ -216,7 +216,7 @@ void check_support(const std::vector<Vec3>& points, const Vec3& m) {
     sum = sum + rational(cone.coefficient[j]) * half_space_normal<K>(h);
     reach += cone.coefficient[j] * std::fabs(h < K / 2 ? dop.hi[h] : dop.lo[h - K / 2]);
   }
-  const Rational off = rational(0x1p-47 * max_abs(m));
+  const Rational off = rational(0x1p-46 * max_abs(m));
   const QVec3 residual = q(m) - sum;
   for (int k = 0; k < 3; ++k) {
     if (abs(residual[k]) > off) RC_FAIL("k = " + std::to_string(K) + ": the cone does not combine to its direction");
