@@ -1,12 +1,16 @@
 // Hierarchies, library against FCL with the same volume type:
-//  - bvh_build/<mesh>/<bv>: build time and bytes per triangle, for env.obj (2180 triangles) and a
-//    procedural torus of 99,856 triangles. Library: build_bvh with the default options (top
-//    down, longest side, midpoint, one triangle per leaf). FCL: BVHModel with its default
-//    splitter (bench/fcl_models.h).
+//  - bvh_build/<mesh>/<bv>: build time and bytes per triangle, for env.obj (2180 triangles) and
+//    procedural tori of 10,000 and 99,856 triangles (the growth from one to the other). Library:
+//    build_bvh with the default options (top down, longest side, midpoint, one triangle per
+//    leaf). FCL: BVHModel with its default splitter (bench/fcl_models.h).
+//  - bvh_build/<mesh>/<bv>_with_hull_points: the library's Aabb and k-DOP builds with the hull points
+//    that only the exact update needs (BuildOptions::hull_points), which FCL has no counterpart
+//    of.
 //  - bvh_all_pairs/env_rob/<bv>: env.obj against rob.obj, all colliding triangle pairs, over the
 //    poses of `crosscheck bvh-report` (100 drawn as FCL's test draws them, 100 brought to near
-//    contact, seed 1): library collide() (all pairs, approximate update, descent into a) against
-//    oracle/fcl's fcl_collide_meshes with the same volume type (OBBd, AABBd, KDOPd<18>).
+//    contact, seed 1): library collide() (all pairs, approximate update, descent into the larger
+//    volume, the rule FCL's traversal follows) against oracle/fcl's fcl_collide_meshes with the
+//    same volume type (OBBd, AABBd, KDOPd<18>).
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -30,6 +34,8 @@
 namespace cc::bench {
 namespace {
 
+const CollideOptions kAllPairsOptions{CollisionMode::all_pairs, BvUpdate::approximate, Descent::larger};
+
 struct BvCase {
   harness::BvType lib;
   FclBv fcl;
@@ -50,7 +56,7 @@ std::size_t bvh_bytes(const Bvh<BV>& t) {
     return p.points.capacity() * sizeof(Vec3) + p.range.capacity() * sizeof(p.range[0]);
   };
   return t.nodes.capacity() * sizeof(BvhNode<BV>) + t.order.capacity() * sizeof(std::uint32_t) +
-         t.triangles.capacity() * sizeof(Triangle) + points(t.corners) + points(t.hull_points);
+         t.faces.capacity() * sizeof(t.faces[0]) + t.vertices.capacity() * sizeof(Vec3) + points(t.hull_points);
 }
 
 std::filesystem::path corpora_root() {
@@ -68,30 +74,36 @@ std::shared_ptr<const Mesh> load(const char* name) {
   return harness::load_mesh_file(*path);
 }
 
-// The library's builds of the large mesh take seconds each (convex hulls per node, by Qhull),
-// so they run lib_repetitions times, FCL's fcl_repetitions times.
-void register_build(const std::string& mesh_name, std::shared_ptr<const Mesh> mesh, int lib_repetitions,
-                    int fcl_repetitions) {
+void register_build(const std::string& mesh_name, std::shared_ptr<const Mesh> mesh, int repetitions) {
   const double triangles = static_cast<double>(mesh->size());
-  for (const BvCase& c : kCases) {
-    const std::string name = "bvh_build/" + mesh_name + "/" + std::string(to_string(c.fcl));
-    benchmark::RegisterBenchmark((name + "/lib").c_str(), [=](benchmark::State& state) {
+  const auto library = [=](const std::string& name, harness::BvType bv, BuildOptions options) {
+    benchmark::RegisterBenchmark(name.c_str(), [=](benchmark::State& state) {
       std::size_t bytes = 0;
       for (auto _ : state) {
-        harness::with_bv_type(c.lib, [&]<class BV>() {
-          const Bvh<BV> tree = build_bvh<BV>(*mesh, BuildOptions{});
+        harness::with_bv_type(bv, [&]<class BV>() {
+          const Bvh<BV> tree = build_bvh<BV>(*mesh, options);
           bytes = bvh_bytes(tree);
         });
       }
       state.counters["items_per_iter"] = 1;
       state.counters["bytes_per_triangle"] = static_cast<double>(bytes) / triangles;
-    })->Iterations(1)->Repetitions(lib_repetitions)->Unit(benchmark::kMillisecond);
+    })->Iterations(1)->Repetitions(repetitions)->Unit(benchmark::kMillisecond);
+  };
+  for (const BvCase& c : kCases) {
+    const std::string name = "bvh_build/" + mesh_name + "/" + std::string(to_string(c.fcl));
+    library(name + "/lib", c.lib, BuildOptions{});
     benchmark::RegisterBenchmark((name + "/fcl").c_str(), [=](benchmark::State& state) {
       std::size_t bytes = 0;
       for (auto _ : state) bytes = build_fcl_model(c.fcl, *mesh);
       state.counters["items_per_iter"] = 1;
       state.counters["bytes_per_triangle"] = static_cast<double>(bytes) / triangles;
-    })->Iterations(1)->Repetitions(fcl_repetitions)->Unit(benchmark::kMillisecond);
+    })->Iterations(1)->Repetitions(repetitions)->Unit(benchmark::kMillisecond);
+  }
+  BuildOptions with_hull_points;
+  with_hull_points.hull_points = true;
+  for (const BvCase& c : kCases) {
+    if (c.lib == harness::BvType::obb) continue;
+    library("bvh_build/" + mesh_name + "/" + std::string(to_string(c.fcl)) + "_with_hull_points/lib", c.lib, with_hull_points);
   }
 }
 
@@ -131,7 +143,7 @@ void register_all_pairs(std::shared_ptr<const Mesh> env, std::shared_ptr<const M
       *trees = [a, b, poses] {
         std::size_t pairs = 0;
         for (const harness::MeshPair& m : *poses) {
-          pairs += collide(*a, m.pose_a, *b, m.pose_b, CollideOptions{}).pairs.size();
+          pairs += collide(*a, m.pose_a, *b, m.pose_b, kAllPairsOptions).pairs.size();
         }
         return pairs;
       };
@@ -162,12 +174,14 @@ void register_all_pairs(std::shared_ptr<const Mesh> env, std::shared_ptr<const M
 
 void register_hierarchy_benchmarks() {
   const auto env = load("env.obj"), rob = load("rob.obj");
-  register_build("env", env, 5, 5);
+  register_build("env", env, 5);
   harness::ProceduralMesh torus;
   torus.shape = harness::ProceduralMesh::Shape::torus;
   torus.seed = seed();
-  torus.resolution = 158;  // 4 n^2 = 99,856 triangles
-  register_build("torus100k", std::make_shared<const Mesh>(harness::make_mesh(torus)), 1, 3);
+  torus.resolution = 50;  // 4 n^2 = 10,000 triangles
+  register_build("torus10k", std::make_shared<const Mesh>(harness::make_mesh(torus)), 5);
+  torus.resolution = 158;  // 99,856 triangles
+  register_build("torus100k", std::make_shared<const Mesh>(harness::make_mesh(torus)), 5);
   register_all_pairs(env, rob);
 }
 

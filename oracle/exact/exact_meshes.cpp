@@ -31,22 +31,23 @@ double magnitude_of(const MeshPair& m) {
   return mag;
 }
 
-// Each triangle's bounding box in the world, computed in floating point and widened by a bound
-// on its rounding (3 products and 3 sums per coordinate: 2^-50 of their magnitude is ample)
-// plus `reach`.
-std::vector<Aabb> world_boxes(const Mesh& mesh, const RigidTransform& pose, double reach) {
+std::vector<FloatTriangle> float_triangles(const Mesh& mesh, const RigidTransform& pose) {
+  std::vector<FloatTriangle> out;
+  out.reserve(mesh.size());
+  for (std::size_t f = 0; f < mesh.size(); ++f) out.push_back(float_triangle(mesh.triangle(f), pose));
+  return out;
+}
+
+// Each triangle's bounding box in the world, widened by its rounding bound plus `reach`.
+std::vector<Aabb> world_boxes(const std::vector<FloatTriangle>& triangles, double reach) {
   std::vector<Aabb> boxes;
-  boxes.reserve(mesh.size());
-  for (std::size_t f = 0; f < mesh.size(); ++f) {
+  boxes.reserve(triangles.size());
+  for (const FloatTriangle& t : triangles) {
     Aabb box{{INFINITY, INFINITY, INFINITY}, {-INFINITY, -INFINITY, -INFINITY}};
-    for (const Vec3& v : mesh.triangle(f).v) {
+    for (const Vec3& v : t.v) {
       for (int i = 0; i < 3; ++i) {
-        const Vec3 r = pose.rotation.row(i);
-        const double x = r.x * v.x + r.y * v.y + r.z * v.z + pose.translation[i];
-        const double err = 0x1p-50 * (std::fabs(r.x * v.x) + std::fabs(r.y * v.y) + std::fabs(r.z * v.z) +
-                                      std::fabs(pose.translation[i])) + 0x1p-1000;
-        box.lo[i] = std::min(box.lo[i], x - err - reach);
-        box.hi[i] = std::max(box.hi[i], x + err + reach);
+        box.lo[i] = std::min(box.lo[i], v[i] - t.error - reach);
+        box.hi[i] = std::max(box.hi[i], v[i] + t.error + reach);
       }
     }
     boxes.push_back(box);
@@ -115,8 +116,9 @@ harness::ExactVerdict judge_meshes(const MeshPair& m) {
   if (auto why = meshes_outside_domain(m)) return unspecified(*why);
   const double scale = scale_of(magnitude_of(m));
   const double reach = 0.5 * kNearMargin * scale;  // each box, so a gap up to kNearMargin * scale
-  const std::vector<FacePair> candidates =
-      overlapping(world_boxes(*m.a.mesh, m.pose_a, reach), world_boxes(*m.b.mesh, m.pose_b, reach));
+  const std::vector<FloatTriangle> float_a = float_triangles(*m.a.mesh, m.pose_a),
+                                   float_b = float_triangles(*m.b.mesh, m.pose_b);
+  const std::vector<FacePair> candidates = overlapping(world_boxes(float_a, reach), world_boxes(float_b, reach));
 
   harness::ExactVerdict v;
   if (candidates.size() > kMaxNearPairs) {
@@ -128,7 +130,9 @@ harness::ExactVerdict judge_meshes(const MeshPair& m) {
   }
   v.unlisted_margin = -kNearMargin;
   PlacedVertices a(*m.a.mesh, m.pose_a), b(*m.b.mesh, m.pose_b);
+  const double apart = kNearMargin * scale * (1 + 0x1p-20);
   for (const FacePair& p : candidates) {
+    if (certainly_apart(float_a[p.first], float_b[p.second], apart)) continue;  // unlisted either way
     const SatResult r = exact_sat(a.triangle(p.first, "A"), b.triangle(p.second, "B"));
     const double margin = r.margin / scale;
     if (r.hit) v.answer.pairs.push_back(p);
@@ -140,6 +144,79 @@ harness::ExactVerdict judge_meshes(const MeshPair& m) {
     if (std::fabs(pm.margin) < std::fabs(v.margin)) v.margin = pm.margin;
   }
   return v;
+}
+
+FloatTriangle float_triangle(const Triangle& tri, const RigidTransform& pose) {
+  FloatTriangle t;
+  for (int k = 0; k < 3; ++k) {
+    const Vec3& v = tri.v[k];
+    for (int i = 0; i < 3; ++i) {
+      const Vec3 r = pose.rotation.row(i);
+      t.v[k][i] = r.x * v.x + r.y * v.y + r.z * v.z + pose.translation[i];
+      const double err = 0x1p-50 * (std::fabs(r.x * v.x) + std::fabs(r.y * v.y) + std::fabs(r.z * v.z) +
+                                    std::fabs(pose.translation[i])) + 0x1p-1000;
+      t.error = std::max(t.error, err);
+    }
+  }
+  return t;
+}
+
+// From the triangles placed in floating point, with bounds on every rounding (u = 2^-53; D, P
+// the largest direction and vertex coordinates, eta the placement error):
+//  - a direction (an edge) is off by at most e = 2 eta + 2u D per component; a zero edge in
+//    exact arithmetic joins equal vertices of the mesh and is computed as zero too;
+//  - a cross product of two by at most e_c = 4 D e + 2 e^2 + 6u D^2 per component;
+//  - a projection onto it by at most e_p = 3 e_c (P + eta) + 3 C eta + 9u C P (C its largest
+//    component), so the gap by 2 e_p plus its own rounding;
+//  - the rank of the directions is 3 (exact_sat then tries the cross product of every pair of
+//    them) when a triple product exceeds its bound 3 (e_c (D + e) + C e) + 9u C D;
+//  - the conditioning |d_i| |d_j| is at most (|d_i| (1 + 4u) + 2e)(|d_j| (1 + 4u) + 2e).
+// `threshold` carries a cushion of 2^-20 for exact_sat's own roundings of the separation.
+bool certainly_apart(const FloatTriangle& a, const FloatTriangle& b, double threshold) {
+  constexpr double u = fp::u;
+  std::array<Vec3, 6> dirs;
+  int n = 0;
+  double D = 0, P = 0;
+  for (const FloatTriangle* t : {&a, &b}) {
+    for (int k = 0; k < 3; ++k) {
+      const Vec3 e = t->v[(k + 1) % 3] - t->v[k];
+      P = std::max(P, max_abs(t->v[k]));
+      if (e.x == 0 && e.y == 0 && e.z == 0) continue;
+      dirs[n++] = e;
+      D = std::max(D, max_abs(e));
+    }
+  }
+  const double eta = std::max(a.error, b.error);
+  const double e = 2 * eta + 2 * u * D;
+  const double e_c = 4 * D * e + 2 * e * e + 6 * u * D * D;
+  bool rank3 = false;
+  for (int i = 0; i < n && !rank3; ++i) {
+    for (int j = i + 1; j < n && !rank3; ++j) {
+      const Vec3 c = cross(dirs[i], dirs[j]);
+      const double C = max_abs(c);
+      for (int k = j + 1; k < n && !rank3; ++k) {
+        rank3 = std::fabs(dot(c, dirs[k])) > 3 * (e_c * (D + e) + C * e) + 9 * u * C * D;
+      }
+    }
+  }
+  if (!rank3) return false;
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      const Vec3 c = cross(dirs[i], dirs[j]);
+      const double C = max_abs(c);
+      if (C == 0) continue;
+      double a_lo = INFINITY, a_hi = -INFINITY, b_lo = INFINITY, b_hi = -INFINITY;
+      for (const Vec3& v : a.v) a_lo = std::min(a_lo, dot(c, v)), a_hi = std::max(a_hi, dot(c, v));
+      for (const Vec3& v : b.v) b_lo = std::min(b_lo, dot(c, v)), b_hi = std::max(b_hi, dot(c, v));
+      const double gap = std::max(b_lo - a_hi, a_lo - b_hi);
+      const double e_p = 3 * e_c * (P + eta) + 3 * C * eta + 9 * u * C * P;
+      const double gap_low = gap - 2 * e_p - 2 * u * std::fabs(gap);
+      const double length_i = std::sqrt(dot(dirs[i], dirs[i])) * (1 + 4 * u) + 2 * e;
+      const double length_j = std::sqrt(dot(dirs[j], dirs[j])) * (1 + 4 * u) + 2 * e;
+      if (gap_low > threshold * (length_i * length_j * (1 + 4 * u))) return true;
+    }
+  }
+  return false;
 }
 
 std::pair<ExactShape, ExactShape> placed_triangles(const MeshPair& m, const FacePair& pair) {

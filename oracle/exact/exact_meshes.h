@@ -2,6 +2,7 @@
 // triangles whose bounding boxes come near tested by the exact separating-axis test.
 #pragma once
 
+#include <array>
 #include <optional>
 #include <string>
 #include <utility>
@@ -30,6 +31,21 @@ std::optional<std::string> meshes_outside_domain(const harness::MeshPair& m);
 /// The verdict on all pairs: the exact pair set and the margins of every pair near contact;
 /// undecided beyond kMaxNearPairs candidates.
 harness::ExactVerdict judge_meshes(const harness::MeshPair& m);
+
+/// A triangle placed by a pose in floating point, and a bound on the error of every coordinate.
+struct FloatTriangle {
+  std::array<Vec3, 3> v;
+  double error = 0;
+};
+FloatTriangle float_triangle(const Triangle& triangle, const RigidTransform& pose);
+
+/// The cheap filter in front of the exact test: true only when exact_sat on the exactly placed
+/// triangles certainly finds them apart with a separation (its largest gap over a candidate
+/// axis divided by the axis's conditioning, see SatResult) above `threshold` times 1 - 2^-40.
+/// judge_meshes skips such pairs, which it would leave unlisted: the verdict is the same. False
+/// when unsure (the directions may not span space, the gap is near the threshold, the rounding
+/// bounds are too wide).
+bool certainly_apart(const FloatTriangle& a, const FloatTriangle& b, double threshold);
 
 /// The two triangles of a pair, each placed exactly by its pose.
 std::pair<ExactShape, ExactShape> placed_triangles(const harness::MeshPair& m, const harness::FacePair& pair);

@@ -3,7 +3,6 @@
 
 #include "collide/bvh_topology.h"
 #include "collide/convex_hull.h"
-#include "collide/kdop_corners.h"
 
 namespace cc {
 
@@ -39,11 +38,6 @@ namespace detail {
 
 std::array<Vec3, 3> face_points(const Mesh& mesh, std::uint32_t face) { return mesh.triangle(face).v; }
 
-Vec3 centroid(const Mesh& mesh, std::uint32_t face) {
-  const auto p = face_points(mesh, face);
-  return (1.0 / 3) * (p[0] + p[1] + p[2]);
-}
-
 Topology layout(const LinkedTree& tree) {
   Topology t;
   if (tree.root < 0) return t;
@@ -78,78 +72,133 @@ Topology layout(const LinkedTree& tree) {
 
 namespace {
 
-template <class BV>
-constexpr bool kRefittable = !std::is_same_v<BV, Obb>;
+bool lexicographic_less(const Vec3& a, const Vec3& b) {
+  return a.x != b.x ? a.x < b.x : (a.y != b.y ? a.y < b.y : a.z < b.z);
+}
 
-constexpr std::size_t kKeepWhole = 64;
-
-std::vector<Vec3> corners_of(const Aabb& b) {
+// Points that include every vertex of the convex hull of `points`, each once: the vertices of
+// fast_convex_hull, which leaves out only points certainly inside.
+std::vector<Vec3> hull_points_of(std::vector<Vec3> points) {
+  std::sort(points.begin(), points.end(), lexicographic_less);
+  points.erase(std::unique(points.begin(), points.end()), points.end());
+  if (points.size() <= 4) return points;
   std::vector<Vec3> out;
-  for (int i = 0; i < 8; ++i) out.push_back({(i & 1) ? b.hi.x : b.lo.x, (i & 2) ? b.hi.y : b.lo.y, (i & 4) ? b.hi.z : b.lo.z});
+  for (std::uint32_t v : fast_convex_hull(points).vertices) out.push_back(points[v]);
   return out;
 }
-template <int K>
-std::vector<Vec3> corners_of(const Kdop<K>& d) {
-  return kdop_corners(d);
-}
 
-void append(NodePoints& np, std::size_t node, std::span<const Vec3> points) {
-  np.range[node] = {static_cast<std::uint32_t>(np.points.size()), static_cast<std::uint32_t>(points.size())};
-  np.points.insert(np.points.end(), points.begin(), points.end());
-}
-
-// Fits every node's volume, children before parents. A node's hull comes from its children's
-// hull points; Aabb and k-DOPs merge the children (which equals fitting their triangles,
-// exactly); OBBs take axes from the node's hull and extents over all its triangles' vertices.
+// The hierarchy's arrays from a topology: the mesh's vertices, each slot's face, the nodes with
+// their slots (volumes fitted later).
 template <class BV>
-Bvh<BV> fit(const Mesh& mesh, detail::Topology t) {
-  using Traits = BoundingVolume<BV>;
+Bvh<BV> lay_out(const Mesh& mesh, detail::Topology t) {
   Bvh<BV> bvh;
   bvh.order = std::move(t.order);
-  for (std::uint32_t f : bvh.order) {
-    bvh.triangles.push_back(mesh.triangle(f));
-    for (const Vec3& v : bvh.triangles.back().v) bvh.magnitude = std::max(bvh.magnitude, norm1(v));
-  }
+  bvh.vertices = mesh.vertices;
+  bvh.faces.reserve(bvh.order.size());
+  for (std::uint32_t f : bvh.order) bvh.faces.push_back(mesh.faces[f]);
   bvh.nodes.resize(t.nodes.size());
-  std::vector<std::vector<Vec3>> hull(t.nodes.size());
-  const auto vertices_of = [&bvh](const BvhNode<BV>& n) {
-    std::vector<Vec3> points;
-    for (std::uint32_t s = n.first; s < n.first + n.count; ++s) {
-      points.insert(points.end(), bvh.triangles[s].v.begin(), bvh.triangles[s].v.end());
-    }
-    return points;
-  };
-  for (std::size_t i = t.nodes.size(); i-- > 0;) {
+  for (std::size_t i = 0; i < t.nodes.size(); ++i) {
     BvhNode<BV>& n = bvh.nodes[i];
     n.left = t.nodes[i].left, n.right = t.nodes[i].right, n.first = t.nodes[i].first, n.count = t.nodes[i].count;
-    std::vector<Vec3> candidates = n.leaf() ? vertices_of(n) : hull[n.left];
-    if (!n.leaf()) candidates.insert(candidates.end(), hull[n.right].begin(), hull[n.right].end());
-    if constexpr (std::is_same_v<BV, Obb>) {
-      const ConvexHull h = convex_hull(candidates);
-      for (std::uint32_t v : h.vertices) hull[i].push_back(candidates[v]);
-      n.bv = fit_obb(obb_axes(candidates, h), vertices_of(n));
-      for (const Vec3& c : corners(n.bv)) bvh.magnitude = std::max(bvh.magnitude, norm1(c));
-    } else {
-      // The exact update needs a superset of the hull's vertices: small sets are kept whole,
-      // larger ones pruned to their hull (Qhull costs more to start than a few points do).
-      if (candidates.size() <= kKeepWhole) {
-        hull[i] = std::move(candidates);
-      } else {
-        const ConvexHull h = convex_hull(candidates);
-        for (std::uint32_t v : h.vertices) hull[i].push_back(candidates[v]);
-      }
-      n.bv = n.leaf() ? Traits::fit(hull[i]) : Traits::merge(bvh.nodes[n.left].bv, bvh.nodes[n.right].bv);
-    }
   }
-  if constexpr (kRefittable<BV>) {
-    bvh.corners.range.resize(bvh.nodes.size());
-    bvh.hull_points.range.resize(bvh.nodes.size());
-    for (std::size_t i = 0; i < bvh.nodes.size(); ++i) {
-      const std::vector<Vec3> c = corners_of(bvh.nodes[i].bv);
-      for (const Vec3& p : c) bvh.magnitude = std::max(bvh.magnitude, norm1(p));
-      append(bvh.corners, i, c);
-      append(bvh.hull_points, i, hull[i]);
+  return bvh;
+}
+
+// The vertices of a node's triangles (appended to `out`).
+template <class BV>
+void append_vertices(const Bvh<BV>& bvh, const BvhNode<BV>& n, std::vector<Vec3>& out) {
+  for (std::uint32_t s = n.first; s < n.first + n.count; ++s) {
+    for (std::uint32_t v : bvh.faces[s]) out.push_back(bvh.vertices[v]);
+  }
+}
+
+// Aabb and k-DOPs: leaves fitted to their vertices, other nodes merged from their children
+// (which equals fitting their triangles, exactly). Every point of every volume lies in the
+// root's box (its x, y, z slabs), whose farthest corner bounds the magnitude.
+template <class BV>
+void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points) {
+  using Traits = BoundingVolume<BV>;
+  std::vector<Vec3> points;
+  if (keep_hull_points) bvh.hull_points.range.resize(bvh.nodes.size());
+  for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
+    BvhNode<BV>& n = bvh.nodes[i];
+    points.clear();
+    if (n.leaf()) {
+      append_vertices(bvh, n, points);
+      n.bv = Traits::fit(points);
+    } else {
+      n.bv = Traits::merge(bvh.nodes[n.left].bv, bvh.nodes[n.right].bv);
     }
+    if (!keep_hull_points) continue;
+    if (!n.leaf()) {
+      for (std::int32_t child : {n.left, n.right}) {
+        const auto c = bvh.hull_points.of(static_cast<std::size_t>(child));
+        points.insert(points.end(), c.begin(), c.end());
+      }
+    }
+    const std::vector<Vec3> hull = hull_points_of(points);
+    bvh.hull_points.range[i] = {static_cast<std::uint32_t>(bvh.hull_points.points.size()),
+                                static_cast<std::uint32_t>(hull.size())};
+    bvh.hull_points.points.insert(bvh.hull_points.points.end(), hull.begin(), hull.end());
+  }
+  bvh.hull_points.points.shrink_to_fit();
+  if (bvh.nodes.empty()) return;
+  const BV& root = bvh.nodes[0].bv;
+  double far[3];  // slabs 0, 1, 2 of a k-DOP are x, y, z
+  for (int k = 0; k < 3; ++k) far[k] = std::max(std::fabs(root.lo[k]), std::fabs(root.hi[k]));
+  bvh.magnitude = fp::sum3(far[0], far[1], far[2]);
+}
+
+// OBBs, children before parents: the node's convex hull by fast_convex_hull on its candidates,
+// the distinct vertices its children kept (a leaf: of its triangles); the axes from the hull's
+// surface (obb_axes), the extents over the candidates. fast_convex_hull keeps every point it
+// does not certify inside the hull of those it keeps, so a node's vertices all lie in the hull
+// of its candidates, and a box that holds the candidates holds them. In reverse pre-order a node
+// comes right after its left subtree, which came right after its right subtree: the children's
+// kept vertices are the last two sets on a stack, side by side.
+void fit_obbs(Bvh<Obb>& bvh) {
+  std::vector<Vec3> stack, kept;
+  std::vector<std::size_t> sizes;  // of the sets on the stack
+  for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
+    BvhNode<Obb>& n = bvh.nodes[i];
+    std::size_t count = 0;
+    if (n.leaf()) {
+      const std::size_t before = stack.size();
+      append_vertices(bvh, n, stack);
+      count = stack.size() - before;
+    } else {
+      count = sizes.back();
+      sizes.pop_back();
+      count += sizes.back();
+      sizes.pop_back();
+    }
+    const std::span<Vec3> candidates = std::span(stack).last(count);
+    std::sort(candidates.begin(), candidates.end(), lexicographic_less);
+    const std::span<const Vec3> distinct =
+        candidates.first(static_cast<std::size_t>(std::unique(candidates.begin(), candidates.end()) - candidates.begin()));
+    const ConvexHull h = fast_convex_hull(distinct);
+    n.bv = fit_obb(obb_axes(distinct, h), distinct);
+    kept.clear();
+    for (std::uint32_t v : h.vertices) kept.push_back(distinct[v]);
+    stack.resize(stack.size() - count);
+    stack.insert(stack.end(), kept.begin(), kept.end());
+    sizes.push_back(kept.size());
+    // Every point of the box (the vertices among them) has norm1 at most that of its center plus
+    // its half extents times their axes' norm1.
+    const Obb& b = n.bv;
+    const double reach = fp::sum3(b.half.x * norm1(b.axes.col[0]), b.half.y * norm1(b.axes.col[1]),
+                                  b.half.z * norm1(b.axes.col[2]));
+    bvh.magnitude = std::max(bvh.magnitude, norm1(b.center) + reach);
+  }
+}
+
+template <class BV>
+Bvh<BV> fit(const Mesh& mesh, detail::Topology t, const BuildOptions& options) {
+  Bvh<BV> bvh = lay_out<BV>(mesh, std::move(t));
+  if constexpr (std::is_same_v<BV, Obb>) {
+    fit_obbs(bvh);
+  } else {
+    fit_refittable(bvh, options.hull_points);
   }
   return bvh;
 }
@@ -159,9 +208,10 @@ Bvh<BV> fit(const Mesh& mesh, detail::Topology t) {
 template <class BV>
 Bvh<BV> build_bvh(const Mesh& mesh, const BuildOptions& options) {
   switch (options.strategy) {
-    case BuildStrategy::top_down: return fit<BV>(mesh, detail::top_down_topology<BV>(mesh, options));
-    case BuildStrategy::bottom_up: return fit<BV>(mesh, detail::layout(detail::bottom_up_tree<BV>(mesh)));
-    case BuildStrategy::incremental: return fit<BV>(mesh, detail::layout(detail::incremental_tree<BV>(mesh)));
+    case BuildStrategy::top_down: return fit<BV>(mesh, detail::top_down_topology<BV>(mesh, options), options);
+    case BuildStrategy::bottom_up: return fit<BV>(mesh, detail::layout(detail::bottom_up_tree<BV>(mesh)), options);
+    case BuildStrategy::incremental:
+      return fit<BV>(mesh, detail::layout(detail::incremental_tree<BV>(mesh)), options);
   }
   return {};
 }

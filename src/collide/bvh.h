@@ -2,7 +2,9 @@
 // top-down, bottom-up or by incremental insertion.
 #pragma once
 
+#include <array>
 #include <cstdint>
+#include <span>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -44,6 +46,10 @@ struct BuildOptions {
   /// Top-down: a node with at most this many triangles is a leaf (OBBTree: 1; k-DOP trees
   /// keep a few). Bottom-up and incremental trees have one triangle per leaf.
   int leaf_size = 1;
+  /// Aabb and k-DOP trees: also keep, per node, points that include every vertex of the convex
+  /// hull of its triangles (Bvh::hull_points), which the exact update moves. Without them the
+  /// exact update moves every vertex of the node's triangles (the same volume, more work).
+  bool hull_points = false;
   friend bool operator==(const BuildOptions&, const BuildOptions&) = default;
 };
 
@@ -63,25 +69,35 @@ struct NodePoints {
   std::span<const Vec3> of(std::size_t node) const { return {points.data() + range[node].first, range[node].second}; }
 };
 
-/// A binary hierarchy: nodes[0] is the root (no nodes for an empty mesh); every node's volume
-/// contains, in exact arithmetic, every triangle of its slots. Triangle slot s holds
-/// triangles[s], which is face order[s] of the mesh.
+/// A binary hierarchy: nodes[0] is the root (no nodes for an empty mesh), every node before
+/// its children (depth-first pre-order, so node n's left child is n + 1); every node's volume
+/// contains, in exact arithmetic, every triangle of its slots. Triangle slot s is face order[s]
+/// of the mesh, stored as its three indices into `vertices` (a copy of the mesh's).
 template <class BV>
 struct Bvh {
   std::vector<BvhNode<BV>> nodes;
   std::vector<std::uint32_t> order;
-  std::vector<Triangle> triangles;
-  /// The largest norm1 of any vertex, corner or hull point the tree stores (for error bounds).
+  std::vector<std::array<std::uint32_t, 3>> faces;  // per slot
+  std::vector<Vec3> vertices;
+  /// At least the norm1 of every vertex, hull point and point of any node's volume (for error
+  /// bounds).
   double magnitude = 0;
-  /// Aabb and k-DOP trees only (empty for Obb): per node, the corners of its volume (for the
-  /// approximate update) and points among its triangles' vertices that include every vertex
-  /// of their convex hull (for the exact update; all of them for small nodes).
-  NodePoints corners, hull_points;
+  /// Only when built with BuildOptions::hull_points (Aabb and k-DOP trees), else empty: per node,
+  /// points among its triangles' vertices that include every vertex of their convex hull (all
+  /// of them for small nodes).
+  NodePoints hull_points;
+
+  Triangle triangle(std::size_t slot) const {
+    const auto& f = faces[slot];
+    return {{vertices[f[0]], vertices[f[1]], vertices[f[2]]}};
+  }
 };
 
 /// Builds the hierarchy of a valid mesh (see mesh_problem). Every strategy gives the same
 /// kind of tree: binary, each triangle in exactly one leaf, each node's volume fitted to the
-/// triangles below it (OBBs from their convex hull, see fit_obb).
+/// triangles below it (Aabb and k-DOPs the smallest; OBBs with the axes of the convex hull of
+/// the node's triangles, as fit_obb, and extents over their vertices). The convex hull of a
+/// node comes from its children's hull points, never from all of its triangles.
 template <class BV>
 Bvh<BV> build_bvh(const Mesh& mesh, const BuildOptions& options);
 

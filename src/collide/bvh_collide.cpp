@@ -1,8 +1,8 @@
 #include "collide/bvh_collide.h"
 
 #include <algorithm>
-#include <optional>
 
+#include "collide/kdop_support.h"
 #include "collide/triangle_triangle.h"
 
 namespace cc {
@@ -17,16 +17,15 @@ Triangle moved(const RigidTransform& t, const Triangle& tri) {
   return {{apply(t, tri.v[0]), apply(t, tri.v[1]), apply(t, tri.v[2])}};
 }
 
-// Moving b's points rounds each coordinate by at most transform_error_bound (2^-50 of the
-// magnitude plus the translation), once for a triangle's vertex and once for a corner; corners
-// carry their own error of 2^-46 of b's magnitude (kdop_corners); a slab along a 3-term
-// direction sums three coordinates' errors. That is below 0.9 * 2^-44; 2^-43 is used.
+// Moving b's vertices rounds each coordinate by at most transform_error_bound (2^-50 of b's
+// magnitude plus the translation); the approximate update's bounds carry below 2^-45 of the
+// same, times the slab direction's 1-norm (see VolumeMover); a slab along a 3-term direction
+// sums three coordinates' errors. 2^-43 is used.
 double update_pad(double magnitude, const RigidTransform& t) {
   return 0x1p-43 * (magnitude + max_abs(t.translation)) + fp::subnormal_slack;
 }
 
-Obb moved_box(const Bvh<Obb>& b, std::size_t node, const RigidTransform& t, double pad) {
-  const Obb& box = b.nodes[node].bv;
+Obb moved_box(const Obb& box, const RigidTransform& t, double pad) {
   Obb out;
   out.center = apply(t, box.center);
   for (int i = 0; i < 3; ++i) out.axes.col[i] = t.rotation * box.axes.col[i];
@@ -34,46 +33,124 @@ Obb moved_box(const Bvh<Obb>& b, std::size_t node, const RigidTransform& t, doub
   return out;
 }
 
-// Aabb and k-DOPs: re-fitted around moved points, each slab widened by pad times the 1-norm
-// of its direction.
-// `points` is scratch space (kept by the caller so that a query does not allocate per update).
+// The slabs of the k-DOP a volume is re-fitted as: 3 for a box (an Aabb is the 6-DOP; an Obb
+// is moved instead and uses none).
 template <class BV>
-BV refitted(const Bvh<BV>& b, std::size_t node, const RigidTransform& t, double pad, BvUpdate update,
-            std::vector<Vec3>& points) {
-  const std::span<const Vec3> source = update == BvUpdate::approximate ? b.corners.of(node) : b.hull_points.of(node);
-  points.clear();
-  for (const Vec3& p : source) points.push_back(apply(t, p));
-  BV v = BoundingVolume<BV>::fit(points);
-  if constexpr (std::is_same_v<BV, Aabb>) {
-    v.lo = v.lo - Vec3{pad, pad, pad};
-    v.hi = v.hi + Vec3{pad, pad, pad};
-  } else {
-    const auto dirs = kdop_directions<2 * BV::kSlabs>();
-    for (int i = 0; i < BV::kSlabs; ++i) {
-      const double w = pad * (std::abs(dirs[i].x) + std::abs(dirs[i].y) + std::abs(dirs[i].z));
-      v.lo[i] -= w, v.hi[i] += w;
+struct SlabCount {
+  static constexpr int value = 3;
+};
+template <int K>
+struct SlabCount<Kdop<K>> {
+  static constexpr int value = K / 2;
+};
+
+// Brings volumes of b into a's frame for one relative transform t (b to a), each slab widened
+// by pad times the 1-norm of its direction.
+//  - Obb: moved by t.
+//  - approximate: slab i of the moved volume, along n_i, is [-h(-m_i), h(m_i)] + n_i . T with
+//    m_i = R^T n_i, where h is the support of b's volume bounded through three of its slabs
+//    (kdop_cone, support_bound; for a box, exactly the support: the box around its moved
+//    corners). Errors, each times |n_i|_1 at most: m_i's rounding 2u M (M = b's magnitude,
+//    which bounds |x|_1 over every volume), the cone's residual 2^-46 M, support_bound's 27u M
+//    (the coefficients sum to at most 9 |m_i|_max), n_i . T's 2u |T| and the last sum's
+//    u (9 M + |T|), the leaf test's moving of a vertex 2u (M + |T|): below 2^-45 (M + |T|).
+//  - exact: the moved hull points of the node (BuildOptions::hull_points), or all its vertices,
+//    re-fitted (fit_kdop rounds outward), then padded.
+template <class BV>
+class VolumeMover {
+ public:
+  VolumeMover(const Bvh<BV>& b, const RigidTransform& t, BvUpdate update)
+      : b_(b), t_(t), update_(update), pad_(update_pad(b.magnitude, t)) {
+    if constexpr (!std::is_same_v<BV, Obb>) {
+      if (update_ != BvUpdate::approximate) return;
+      const auto dirs = kdop_directions<2 * kSlabs>();
+      for (int i = 0; i < kSlabs; ++i) {
+        const Vec3 n{double(dirs[i].x), double(dirs[i].y), double(dirs[i].z)};
+        const Vec3 m = transpose_times(t.rotation, n);
+        upper_[i] = kdop_cone<2 * kSlabs>(m);
+        lower_[i] = upper_[i];  // -m: the opposite normals, the same coefficients
+        for (int& h : lower_[i].normal) h = h < kSlabs ? h + kSlabs : h - kSlabs;
+        offset_[i] = dot(n, t.translation);
+        width_[i] = pad_ * norm1(n);
+      }
     }
   }
-  return v;
-}
+
+  BV operator()(std::size_t node) const {
+    const BV& v = b_.nodes[node].bv;
+    if constexpr (std::is_same_v<BV, Obb>) {
+      return moved_box(v, t_, pad_);
+    } else if constexpr (std::is_same_v<BV, Aabb>) {
+      Kdop<6> box;
+      box.lo = {v.lo.x, v.lo.y, v.lo.z}, box.hi = {v.hi.x, v.hi.y, v.hi.z};
+      const Kdop<6> m = move(box, node);
+      return {{m.lo[0], m.lo[1], m.lo[2]}, {m.hi[0], m.hi[1], m.hi[2]}};
+    } else {
+      return move(v, node);
+    }
+  }
+
+ private:
+  static constexpr int kSlabs = SlabCount<BV>::value;
+  using Dop = Kdop<2 * kSlabs>;
+
+  Dop move(const Dop& dop, std::size_t node) const {
+    Dop out;
+    if (update_ == BvUpdate::approximate) {
+      for (int i = 0; i < kSlabs; ++i) {
+        out.lo[i] = (-support_bound(dop, lower_[i]) + offset_[i]) - width_[i];
+        out.hi[i] = (support_bound(dop, upper_[i]) + offset_[i]) + width_[i];
+      }
+      return out;
+    }
+    std::vector<Vec3> points;
+    const auto add = [&](const Vec3& p) { points.push_back(apply(t_, p)); };
+    if (!b_.hull_points.range.empty()) {
+      for (const Vec3& p : b_.hull_points.of(node)) add(p);
+    } else {
+      const BvhNode<BV>& n = b_.nodes[node];
+      for (std::uint32_t s = n.first; s < n.first + n.count; ++s) {
+        for (std::uint32_t v : b_.faces[s]) add(b_.vertices[v]);
+      }
+    }
+    out = fit_kdop<2 * kSlabs>(points);
+    const auto dirs = kdop_directions<2 * kSlabs>();
+    for (int i = 0; i < kSlabs; ++i) {
+      const double w = pad_ * (std::abs(dirs[i].x) + std::abs(dirs[i].y) + std::abs(dirs[i].z));
+      out.lo[i] -= w, out.hi[i] += w;
+    }
+    return out;
+  }
+
+  const Bvh<BV>& b_;
+  RigidTransform t_;
+  BvUpdate update_;
+  double pad_;
+  std::array<KdopCone<2 * kSlabs>, kSlabs> upper_, lower_;
+  std::array<double, kSlabs> offset_{}, width_{};
+};
 
 template <class BV>
 class Traversal {
  public:
   Traversal(const Bvh<BV>& a, const RigidTransform& pose_a, const Bvh<BV>& b, const RigidTransform& pose_b,
             const CollideOptions& options)
-      : a_(a), b_(b), t_(relative(pose_a, pose_b)), options_(options) {
-    pad_ = update_pad(b.magnitude, t_);
-    volumes_.resize(b.nodes.size());
-    triangles_.resize(b.triangles.size());
+      : a_(a), b_(b), t_(relative(pose_a, pose_b)), options_(options), mover_(b, t_, options.update),
+        volume_slot_(b.nodes.size(), -1), triangle_slot_(b.faces.size(), -1) {
+    volumes_.reserve(b.nodes.size());
   }
 
   CollisionResult run() {
     if (a_.nodes.empty() || b_.nodes.empty()) return std::move(result_);
-    std::vector<std::pair<std::int32_t, std::int32_t>> stack{{0, 0}};
-    while (!stack.empty()) {
-      const auto [na, nb] = stack.back();
-      stack.pop_back();
+    // Pairs of nodes still to test, as a stack that grows by doubling (push_back is not inlined).
+    std::vector<std::pair<std::int32_t, std::int32_t>> stack(64);
+    std::size_t size = 0;
+    const auto push = [&](std::int32_t na, std::int32_t nb) {
+      if (size == stack.size()) stack.resize(2 * size);
+      stack[size++] = {na, nb};
+    };
+    for (push(0, 0); size > 0;) {
+      const auto [na, nb] = stack[--size];
       const BvhNode<BV>& x = a_.nodes[na];
       const BvhNode<BV>& y = b_.nodes[nb];
       ++result_.counters.bv_tests;
@@ -81,11 +158,11 @@ class Traversal {
       if (x.leaf() && y.leaf()) {
         if (test_leaves(x, y)) break;
       } else if (descend_b(x, y)) {
-        stack.push_back({na, y.right});
-        stack.push_back({na, y.left});
+        push(na, y.right);
+        push(na, y.left);
       } else {
-        stack.push_back({x.right, nb});
-        stack.push_back({x.left, nb});
+        push(x.right, nb);
+        push(x.left, nb);
       }
     }
     std::sort(result_.pairs.begin(), result_.pairs.end());
@@ -102,28 +179,31 @@ class Traversal {
   // b's volume in a's frame, computed once per node and query (a's descent tests the same node
   // of b against many of a's). Moving an OBB is not an update (n_u counts refits only).
   const BV& volume_of(std::int32_t nb) {
-    if (!volumes_[nb]) {
-      if constexpr (std::is_same_v<BV, Obb>) {
-        volumes_[nb] = moved_box(b_, nb, t_, pad_);
-      } else {
-        volumes_[nb] = refitted(b_, nb, t_, pad_, options_.update, points_);
-        ++result_.counters.bv_updates;
-      }
+    std::int32_t& slot = volume_slot_[nb];
+    if (slot < 0) {
+      slot = static_cast<std::int32_t>(volumes_.size());
+      volumes_.push_back(mover_(static_cast<std::size_t>(nb)));
+      if constexpr (!std::is_same_v<BV, Obb>) ++result_.counters.bv_updates;
     }
-    return *volumes_[nb];
+    return volumes_[slot];
   }
 
-  const Triangle& triangle_of(std::uint32_t slot) {
-    if (!triangles_[slot]) triangles_[slot] = moved(t_, b_.triangles[slot]);
-    return *triangles_[slot];
+  const Triangle& triangle_of(std::uint32_t s) {
+    std::int32_t& slot = triangle_slot_[s];
+    if (slot < 0) {
+      slot = static_cast<std::int32_t>(triangles_.size());
+      triangles_.push_back(moved(t_, b_.triangle(s)));
+    }
+    return triangles_[slot];
   }
 
   // Tests every triangle pair of two leaves; true when the query is answered (first hit).
   bool test_leaves(const BvhNode<BV>& x, const BvhNode<BV>& y) {
     for (std::uint32_t s = x.first; s < x.first + x.count; ++s) {
+      const Triangle ta = a_.triangle(s);
       for (std::uint32_t r = y.first; r < y.first + y.count; ++r) {
         ++result_.counters.primitive_tests;
-        if (!test_triangle_triangle(a_.triangles[s], triangle_of(r))) continue;
+        if (!test_triangle_triangle(ta, triangle_of(r))) continue;
         result_.pairs.emplace_back(a_.order[s], b_.order[r]);
         if (options_.mode == CollisionMode::first_hit) return true;
       }
@@ -135,10 +215,10 @@ class Traversal {
   const Bvh<BV>& b_;
   RigidTransform t_;
   CollideOptions options_;
-  double pad_ = 0;
-  std::vector<std::optional<BV>> volumes_;
-  std::vector<Vec3> points_;  // scratch for refitted()
-  std::vector<std::optional<Triangle>> triangles_;
+  VolumeMover<BV> mover_;
+  std::vector<std::int32_t> volume_slot_, triangle_slot_;  // index into volumes_, triangles_; -1 until moved
+  std::vector<BV> volumes_;
+  std::vector<Triangle> triangles_;
   CollisionResult result_;
 };
 
@@ -152,12 +232,7 @@ CollisionResult collide(const Bvh<BV>& a, const RigidTransform& pose_a, const Bv
 
 template <class BV>
 BV moved_volume(const Bvh<BV>& b, std::size_t node, const RigidTransform& t, BvUpdate update) {
-  if constexpr (std::is_same_v<BV, Obb>) {
-    return moved_box(b, node, t, update_pad(b.magnitude, t));
-  } else {
-    std::vector<Vec3> points;
-    return refitted(b, node, t, update_pad(b.magnitude, t), update, points);
-  }
+  return VolumeMover<BV>(b, t, update)(node);
 }
 
 std::vector<std::pair<std::uint32_t, std::uint32_t>> collide_brute_force(const Mesh& a, const RigidTransform& pose_a,

@@ -19,7 +19,7 @@ enum class CollisionMode { first_hit, all_pairs };
 /// cover the rounding of the transform, so they contain b's moved triangles as the leaf test
 /// sees them.
 enum class BvUpdate {
-  approximate,  // refit around the moved corners of the original volume (Klosowski et al.)
+  approximate,  // refit around the moved original volume (Klosowski et al.; see moved_volume)
   exact,        // refit around the moved vertices of the convex hull of the node's triangles
 };
 
@@ -71,9 +71,17 @@ CollisionResult collide(const Bvh<BV>& a, const RigidTransform& pose_a, const Bv
                         const CollideOptions& options);
 
 /// The volume of b's node in a's frame as collide() tests it, for b moved by t (relative to a):
-/// an OBB moved by t; an Aabb or k-DOP re-fitted as `update` says. Padded by 2^-43 of b's
-/// magnitude plus |t's translation|, so that it contains, in exact arithmetic, the node's
-/// triangles moved as the leaf test sees them (each vertex by apply(t, v)).
+///  - Obb: moved by t.
+///  - Aabb and k-DOP, approximate: each slab bounds the moved original volume, through three of
+///    its slabs per direction (kdop_cone): for an Aabb the box around its moved corners; for a
+///    k-DOP the k-DOP around its moved polytope when its slabs meet at vertices as the cones
+///    assume, a little larger otherwise. No corners are stored or computed.
+///  - Aabb and k-DOP, exact: re-fitted around the node's moved hull points, if the tree has them
+///    (BuildOptions::hull_points), else around all the node's moved vertices (the same volume
+///    up to rounding, at the cost of every vertex).
+/// Padded by 2^-43 of b's magnitude plus |t's translation| (times the 1-norm of a k-DOP's slab
+/// direction), so that it contains, in exact arithmetic, the node's triangles moved as the leaf
+/// test sees them (each vertex by apply(t, v)).
 template <class BV>
 BV moved_volume(const Bvh<BV>& b, std::size_t node, const RigidTransform& t, BvUpdate update);
 

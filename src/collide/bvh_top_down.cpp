@@ -1,8 +1,9 @@
-// Top-down building: fit a volume to a node's triangles, split them along one axis of its
-// frame, recurse. Gottschalk's OBBTree is longest_side + midpoint with one triangle per leaf;
-// Klosowski's k-DOP trees choose the axis by min_sum, min_max, splatter or longest_side.
+// Top-down building: find a node's frame and extent, split its triangles along one axis of the
+// frame, recurse. The triangles are kept in one array (with their centroids) and each split
+// partitions the node's range of it in place, so a level of the tree costs one or two passes
+// over the triangles. Gottschalk's OBBTree is longest_side + midpoint with one triangle per
+// leaf; Klosowski's k-DOP trees choose the axis by min_sum, min_max, splatter or longest_side.
 #include <algorithm>
-#include <numeric>
 #include <span>
 
 #include "collide/bvh_topology.h"
@@ -10,83 +11,141 @@
 namespace cc::detail {
 namespace {
 
+// A triangle being sorted into the tree.
+struct Item {
+  Triangle triangle;
+  Vec3 centroid;  // rounded, as (1/3) (v0 + v1 + v2)
+  std::uint32_t face;
+};
+
+// Where a node's triangles lie in a frame: the frame's axes, and the least and greatest
+// projection of their vertices on each.
+struct Extent {
+  Mat3 axes;
+  Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  double midpoint(int k) const { return 0.5 * (lo[k] + hi[k]); }
+  BvSize size() const { return box_size(0.5 * (hi - lo)); }
+};
+
 template <class BV>
 class TopDown {
  public:
-  TopDown(const Mesh& mesh, const BuildOptions& options) : mesh_(mesh), options_(options) {
-    for (std::uint32_t f = 0; f < mesh.size(); ++f) centroids_.push_back(centroid(mesh, f));
+  TopDown(const Mesh& mesh, const BuildOptions& options) : options_(options) {
+    items_.reserve(mesh.size());
+    for (std::uint32_t f = 0; f < mesh.size(); ++f) {
+      const Triangle t = mesh.triangle(f);
+      items_.push_back({t, (1.0 / 3) * (t.v[0] + t.v[1] + t.v[2]), f});
+    }
   }
 
+  // Nodes in depth-first pre-order: a node is split as soon as it is made, its left child is
+  // made next.
   Topology build() {
     Topology t;
-    t.order.resize(mesh_.size());
-    std::iota(t.order.begin(), t.order.end(), 0u);
-    if (mesh_.size() == 0) return t;
-    t.nodes.push_back({-1, -1, 0, static_cast<std::uint32_t>(mesh_.size())});
-    for (std::vector<std::int32_t> unsplit{0}; !unsplit.empty();) {
-      const std::int32_t n = unsplit.back();
-      unsplit.pop_back();
-      if (split_node(t, n)) unsplit.insert(unsplit.end(), {t.nodes[n].left, t.nodes[n].right});
+    struct Pending {
+      std::uint32_t first, count;
+      std::int32_t parent;
+    };
+    const auto leaf_size = static_cast<std::uint32_t>(std::max(options_.leaf_size, 1));
+    std::vector<Pending> stack;
+    if (!items_.empty()) stack.push_back({0, static_cast<std::uint32_t>(items_.size()), -1});
+    while (!stack.empty()) {
+      const Pending p = stack.back();
+      stack.pop_back();
+      const auto n = static_cast<std::int32_t>(t.nodes.size());
+      t.nodes.push_back({-1, -1, p.first, p.count});
+      if (p.parent >= 0) (t.nodes[p.parent].left < 0 ? t.nodes[p.parent].left : t.nodes[p.parent].right) = n;
+      if (p.count <= leaf_size) continue;
+      const std::uint32_t left = split_node(std::span(items_).subspan(p.first, p.count));
+      stack.push_back({p.first + left, p.count - left, n});
+      stack.push_back({p.first, left, n});
     }
-    return reorder(t);
+    t.order.reserve(items_.size());
+    for (const Item& item : items_) t.order.push_back(item.face);
+    return t;
   }
 
  private:
-  using Traits = BoundingVolume<BV>;
+  using Items = std::span<Item>;
+  static constexpr bool kObb = std::is_same_v<BV, Obb>;
 
-  using Faces = std::span<std::uint32_t>;
-
-  BV fit_faces(std::span<const std::uint32_t> faces) const {
-    std::vector<Vec3> points;
-    points.reserve(3 * faces.size());
-    for (std::uint32_t f : faces) {
-      const auto p = face_points(mesh_, f);
-      points.insert(points.end(), p.begin(), p.end());
+  // Aabb and k-DOPs: the coordinate axes (the x, y, z slabs of a k-DOP are its box). Obb: the
+  // principal axes of the vertices (their covariance, as FCL splits), which cost one pass;
+  // the node's own box, fitted later from its convex hull, is not known before its children.
+  Mat3 frame_of(std::span<const Item> items) const {
+    if constexpr (!kObb) {
+      return Mat3::identity();
+    } else {
+      const Vec3 origin = items[0].triangle.v[0];
+      Vec3 sum{0, 0, 0};
+      std::array<double, 6> square{};  // xx, yy, zz, xy, yz, zx
+      for (const Item& item : items) {
+        for (const Vec3& v : item.triangle.v) {
+          const Vec3 d = v - origin;
+          sum = sum + d;
+          square[0] += d.x * d.x, square[1] += d.y * d.y, square[2] += d.z * d.z;
+          square[3] += d.x * d.y, square[4] += d.y * d.z, square[5] += d.z * d.x;
+        }
+      }
+      const double n = 3.0 * static_cast<double>(items.size());
+      const Vec3 mean = (1 / n) * sum;
+      return principal_axes({square[0] / n - mean.x * mean.x, square[1] / n - mean.y * mean.y,
+                             square[2] / n - mean.z * mean.z, square[3] / n - mean.x * mean.y,
+                             square[4] / n - mean.y * mean.z, square[5] / n - mean.z * mean.x});
     }
-    return Traits::fit(points);
   }
 
-  double projection(std::uint32_t face, const Vec3& axis) const { return dot(centroids_[face], axis); }
+  static Extent extent_of(std::span<const Item> items, const Mat3& axes) {
+    Extent e{axes};
+    for (const Item& item : items) {
+      for (const Vec3& v : item.triangle.v) {
+        const Vec3 s = kObb ? transpose_times(axes, v) : v;
+        for (int k = 0; k < 3; ++k) e.lo[k] = std::min(e.lo[k], s[k]), e.hi[k] = std::max(e.hi[k], s[k]);
+      }
+    }
+    return e;
+  }
 
-  // Reorders the faces so that the first ones lie before the split point along `axis`; returns
+  static double projection(const Item& item, const Vec3& axis) { return dot(item.centroid, axis); }
+
+  // Reorders the items so that the first ones lie before the split point along `axis`; returns
   // how many, in (0, size). Falls back to the median when the point leaves one side empty
   // (all centroids on one side, or all equal: then the halves are arbitrary).
-  std::uint32_t split(Faces faces, const Vec3& axis, double midpoint) const {
-    const auto count = static_cast<std::uint32_t>(faces.size());
-    const auto begin = faces.begin(), end = faces.end();
-    const auto less = [&](std::uint32_t a, std::uint32_t b) { return projection(a, axis) < projection(b, axis); };
+  std::uint32_t split(Items items, const Vec3& axis, double midpoint) const {
+    const auto count = static_cast<std::uint32_t>(items.size());
     double at = midpoint;
     if (options_.point == SplitPoint::mean) {
       double sum = 0;
-      for (auto it = begin; it != end; ++it) sum += projection(*it, axis);
+      for (const Item& item : items) sum += projection(item, axis);
       at = sum / count;
     }
     if (options_.point != SplitPoint::median) {
-      const auto middle = std::partition(begin, end, [&](std::uint32_t f) { return projection(f, axis) < at; });
-      const auto left = static_cast<std::uint32_t>(middle - begin);
+      const auto middle = std::partition(items.begin(), items.end(), [&](const Item& i) { return projection(i, axis) < at; });
+      const auto left = static_cast<std::uint32_t>(middle - items.begin());
       if (left > 0 && left < count) return left;
     }
     const std::uint32_t half = count / 2;
-    std::nth_element(begin, begin + half, end, less);
+    std::nth_element(items.begin(), items.begin() + half, items.end(),
+                     [&](const Item& a, const Item& b) { return projection(a, axis) < projection(b, axis); });
     return half;
   }
 
-  int choose_axis(Faces faces, const BV& bv) const {
-    const Mat3 axes = Traits::axes(bv);
-    const Vec3 half = Traits::half(bv);
+  int choose_axis(Items items, const Extent& e) const {
     switch (options_.axis) {
-      case SplitAxis::longest_side:
+      case SplitAxis::longest_side: {
+        const Vec3 half = 0.5 * (e.hi - e.lo);
         return half.x >= half.y && half.x >= half.z ? 0 : (half.y >= half.z ? 1 : 2);
+      }
       case SplitAxis::splatter: {
         int best = 0;
         double best_variance = -1;
         for (int k = 0; k < 3; ++k) {
           double sum = 0, sum2 = 0;
-          for (std::uint32_t f : faces) {
-            const double p = projection(f, axes.col[k]);
+          for (const Item& item : items) {
+            const double p = projection(item, e.axes.col[k]);
             sum += p, sum2 += p * p;
           }
-          const double n = static_cast<double>(faces.size());
+          const double n = static_cast<double>(items.size());
           const double variance = sum2 / n - (sum / n) * (sum / n);
           if (variance > best_variance) best_variance = variance, best = k;
         }
@@ -94,13 +153,15 @@ class TopDown {
       }
       case SplitAxis::min_sum:
       case SplitAxis::min_max: {
+        // The children's sizes: their boxes in the node's frame.
         int best = 0;
         BvSize best_cost{INFINITY, INFINITY};
+        std::vector<Item> trial;
         for (int k = 0; k < 3; ++k) {
-          std::vector<std::uint32_t> trial(faces.begin(), faces.end());
-          const std::uint32_t left = split(trial, axes.col[k], midpoint_along(bv, k));
-          const BvSize a = Traits::size(fit_faces(std::span(trial).first(left)));
-          const BvSize b = Traits::size(fit_faces(std::span(trial).subspan(left)));
+          trial.assign(items.begin(), items.end());
+          const std::uint32_t left = split(trial, e.axes.col[k], e.midpoint(k));
+          const BvSize a = extent_of(std::span(trial).first(left), e.axes).size();
+          const BvSize b = extent_of(std::span(trial).subspan(left), e.axes).size();
           const BvSize cost = options_.axis == SplitAxis::min_sum ? a + b : std::max(a, b);
           if (cost < best_cost) best_cost = cost, best = k;
         }
@@ -110,48 +171,15 @@ class TopDown {
     return 0;
   }
 
-  static double midpoint_along(const BV& bv, int k) { return dot(Traits::center(bv), Traits::axes(bv).col[k]); }
-
-  // Splits node n into two children, or returns false when it is a leaf.
-  bool split_node(Topology& t, std::int32_t n) {
-    const std::uint32_t first = t.nodes[n].first, count = t.nodes[n].count;
-    if (count <= static_cast<std::uint32_t>(std::max(options_.leaf_size, 1))) return false;
-    const Faces faces = std::span(t.order).subspan(first, count);
-    const BV bv = fit_faces(faces);
-    const int k = choose_axis(faces, bv);
-    const std::uint32_t left = split(faces, Traits::axes(bv).col[k], midpoint_along(bv, k));
-    const auto l = static_cast<std::int32_t>(t.nodes.size());
-    t.nodes.push_back({-1, -1, first, left});
-    t.nodes.push_back({-1, -1, first + left, count - left});
-    t.nodes[n].left = l, t.nodes[n].right = l + 1;
-    return true;
+  // Splits a node's items in two; returns the size of the first part, in (0, size).
+  std::uint32_t split_node(Items items) const {
+    const Extent e = extent_of(items, frame_of(items));
+    const int k = choose_axis(items, e);
+    return split(items, e.axes.col[k], e.midpoint(k));
   }
 
-  // The nodes were created parent first but siblings side by side; renumber them in pre-order.
-  static Topology reorder(const Topology& t) {
-    Topology out;
-    out.order = t.order;
-    std::vector<std::int32_t> stack{0};
-    std::vector<std::int32_t> renumbered(t.nodes.size(), -1);
-    std::vector<std::int32_t> visit;
-    while (!stack.empty()) {
-      const std::int32_t n = stack.back();
-      stack.pop_back();
-      renumbered[n] = static_cast<std::int32_t>(visit.size());
-      visit.push_back(n);
-      if (t.nodes[n].left >= 0) stack.push_back(t.nodes[n].right), stack.push_back(t.nodes[n].left);
-    }
-    for (std::int32_t n : visit) {
-      Topology::Node node = t.nodes[n];
-      if (node.left >= 0) node.left = renumbered[node.left], node.right = renumbered[node.right];
-      out.nodes.push_back(node);
-    }
-    return out;
-  }
-
-  const Mesh& mesh_;
   BuildOptions options_;
-  std::vector<Vec3> centroids_;
+  std::vector<Item> items_;
 };
 
 }  // namespace

@@ -35,9 +35,8 @@ struct LinkedTree {
 /// Lays out a linked tree in depth-first pre-order, so every subtree's faces are contiguous.
 Topology layout(const LinkedTree& tree);
 
-/// The points of a face, its centroid (rounded).
+/// The points of a face.
 std::array<Vec3, 3> face_points(const Mesh& mesh, std::uint32_t face);
-Vec3 centroid(const Mesh& mesh, std::uint32_t face);
 
 template <class BV>
 Topology top_down_topology(const Mesh& mesh, const BuildOptions& options);

@@ -32,4 +32,17 @@ struct ConvexHull {
 
 ConvexHull convex_hull(std::span<const Vec3> points);
 
+/// The same shape in floating point, fast (quickhull, O(n log n) expected, no library call), for
+/// fitting (an OBB's axes from the hull's surface) and for the points a hull keeps:
+///  - `triangles`: a closed surface of facets whose vertices are among the points, convex up to
+///    rounding (a point within 2^-40 of the points' extent plus 2^-44 of their magnitude of a
+///    facet's plane counts as inside it); flat points: the polygon, covered on both sides;
+///    collinear or coincident: none.
+///  - `vertices`: every point the hull may need, in exact arithmetic: a point is left out only
+///    when it lies, certainly, strictly inside a tetrahedron of points kept (four orientations
+///    beyond their rounding bound). So the hull of `vertices` holds every point exactly. Flat
+///    and collinear points: all of them.
+/// Points must be finite and distinct (repeated points are harmless but slow it down).
+ConvexHull fast_convex_hull(std::span<const Vec3> points);
+
 }  // namespace cc

@@ -8,45 +8,43 @@ namespace {
 
 using Matrix = Eigen::Matrix3d;
 
-Eigen::Vector3d eigen(const Vec3& v) { return {v.x, v.y, v.z}; }
+// The symmetric 3x3 matrix with entries xx, yy, zz, xy, yz, zx.
+using Symmetric = std::array<double, 6>;
 
-// Sum over the hull's triangles of area/12 (9 m m^T + p p^T + q q^T + r r^T), with m the centroid,
-// and the hull's area and area-weighted centroid; coordinates relative to `origin`.
-struct SurfaceMoments {
-  Matrix second = Matrix::Zero();
-  Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
-  double area = 0;
-};
-
-SurfaceMoments surface_moments(std::span<const Vec3> points, const ConvexHull& hull, const Vec3& origin) {
-  SurfaceMoments s;
-  for (const auto& t : hull.triangles) {
-    const Eigen::Vector3d p = eigen(points[t[0]] - origin), q = eigen(points[t[1]] - origin),
-                          r = eigen(points[t[2]] - origin);
-    const double area = 0.5 * (q - p).cross(r - p).norm();
-    const Eigen::Vector3d m = (p + q + r) / 3;
-    s.second += area / 12 * (9 * m * m.transpose() + p * p.transpose() + q * q.transpose() + r * r.transpose());
-    s.centroid += area * m;
-    s.area += area;
-  }
-  return s;
+void add_outer(Symmetric& m, double w, const Vec3& v) {
+  m[0] += w * v.x * v.x, m[1] += w * v.y * v.y, m[2] += w * v.z * v.z;
+  m[3] += w * v.x * v.y, m[4] += w * v.y * v.z, m[5] += w * v.z * v.x;
 }
 
-Matrix covariance(std::span<const Vec3> points, const ConvexHull& hull, const Vec3& origin) {
-  const SurfaceMoments s = surface_moments(points, hull, origin);
-  if (s.area > 0) {
-    const Eigen::Vector3d mean = s.centroid / s.area;
-    return s.second / s.area - mean * mean.transpose();
+// The covariance of the hull's surface (each triangle weighted by its area: the sum of
+// area/12 (9 m m^T + p p^T + q q^T + r r^T), m the centroid, over the area, minus the mean's
+// outer product); coordinates relative to `origin`. With no area, the points' own covariance
+// (a segment's direction, or nothing for one point).
+Symmetric covariance(std::span<const Vec3> points, const ConvexHull& hull, const Vec3& origin) {
+  Symmetric second{};
+  Vec3 centroid{0, 0, 0};
+  double area = 0;
+  for (const auto& t : hull.triangles) {
+    const Vec3 p = points[t[0]] - origin, q = points[t[1]] - origin, r = points[t[2]] - origin;
+    const Vec3 n = cross(q - p, r - p);
+    const double a = 0.5 * std::sqrt(dot(n, n));
+    const Vec3 m = (1.0 / 3) * (p + q + r);
+    add_outer(second, 0.75 * a, m);
+    for (const Vec3& v : {p, q, r}) add_outer(second, a / 12, v);
+    centroid = centroid + a * m;
+    area += a;
   }
-  // No area: the points' own covariance (a segment's direction, or nothing for one point).
-  Matrix c = Matrix::Zero();
-  Eigen::Vector3d mean = Eigen::Vector3d::Zero();
-  for (const Vec3& p : points) mean += eigen(p - origin);
-  mean /= static_cast<double>(points.size());
-  for (const Vec3& p : points) {
-    const Eigen::Vector3d d = eigen(p - origin) - mean;
-    c += d * d.transpose();
+  Symmetric c{};
+  if (area > 0) {
+    const Vec3 mean = (1 / area) * centroid;
+    for (int i = 0; i < 6; ++i) c[i] = second[i] / area;
+    add_outer(c, -1, mean);
+    return c;
   }
+  Vec3 mean{0, 0, 0};
+  for (const Vec3& p : points) mean = mean + (p - origin);
+  mean = (1 / static_cast<double>(points.size())) * mean;
+  for (const Vec3& p : points) add_outer(c, 1, (p - origin) - mean);
   return c;
 }
 
@@ -55,10 +53,15 @@ Vec3 normalized(const Vec3& v) {
   return (1 / n) * v;
 }
 
-// Right-handed orthonormal axes from the eigenvectors (Gram-Schmidt on the two largest).
-Mat3 axes_of(const Matrix& cov) {
+}  // namespace
+
+// Gram-Schmidt on the eigenvectors of the two largest eigenvalues.
+Mat3 principal_axes(const std::array<double, 6>& m) {
+  Matrix cov;
+  cov << m[0], m[3], m[5], m[3], m[1], m[4], m[5], m[4], m[2];
   if (cov.isZero(0)) return Mat3::identity();  // a single point: any frame, the simplest
-  Eigen::SelfAdjointEigenSolver<Matrix> solver(cov);
+  Eigen::SelfAdjointEigenSolver<Matrix> solver;
+  solver.computeDirect(cov);
   const Matrix& v = solver.eigenvectors();  // columns, by increasing eigenvalue
   const Vec3 major{v(0, 2), v(1, 2), v(2, 2)}, middle{v(0, 1), v(1, 1), v(2, 1)};
   if (solver.info() != Eigen::Success || !finite(major) || !finite(middle)) return Mat3::identity();
@@ -67,22 +70,22 @@ Mat3 axes_of(const Matrix& cov) {
   return Mat3::from_columns(a0, a1, cross(a0, a1));
 }
 
-}  // namespace
-
 Mat3 obb_axes(std::span<const Vec3> points, const ConvexHull& hull) {
-  return axes_of(covariance(points, hull, points[0]));
+  return principal_axes(covariance(points, hull, points[0]));
 }
 
 Obb fit_obb(std::span<const Vec3> points) { return fit_obb(obb_axes(points, convex_hull(points)), points); }
 
 Obb fit_obb(const Mat3& axes, std::span<const Vec3> points) {
-  Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
-  double magnitude = 0;
+  Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY}, largest{0, 0, 0};
   for (const Vec3& p : points) {
     const Vec3 s = transpose_times(axes, p);
-    for (int i = 0; i < 3; ++i) lo[i] = std::min(lo[i], s[i]), hi[i] = std::max(hi[i], s[i]);
-    magnitude = std::max(magnitude, norm1(p));
+    for (int i = 0; i < 3; ++i) {
+      lo[i] = std::min(lo[i], s[i]), hi[i] = std::max(hi[i], s[i]);
+      largest[i] = std::max(largest[i], std::fabs(p[i]));
+    }
   }
+  const double magnitude = norm1(largest);  // at least every point's norm1
   Obb box;
   box.axes = axes;
   const Vec3 mid = 0.5 * (lo + hi);

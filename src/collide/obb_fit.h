@@ -12,7 +12,8 @@ namespace cc {
 /// covariance of the convex hull's surface (each hull triangle weighted by its area, Eigen's
 /// self-adjoint solver), its extents those of the points along the axes.
 ///  - Conservative: every point lies in the box in exact arithmetic. The half extents are
-///    widened by 2^-44 of the points' magnitude, which covers the rounding of the projections
+///    widened by 2^-44 of the points' magnitude (the sum over the coordinates of their largest
+///    magnitude, at least every point's norm1), which covers the rounding of the projections
 ///    and the axes' deviation from orthonormal.
 ///  - Axes: right-handed and orthonormal to within 2^-50 (well within kObbOrthonormalTolerance).
 ///  - Flat points (a triangle, a plate): the polygon's covariance, so one axis is the normal.
@@ -26,6 +27,11 @@ Obb fit_obb(std::span<const Vec3> points);
 Mat3 obb_axes(std::span<const Vec3> points, const ConvexHull& hull);
 /// ... and the smallest box with those axes that contains the points (padded as above).
 Obb fit_obb(const Mat3& axes, std::span<const Vec3> points);
+
+/// Right-handed orthonormal axes (to within 2^-50) along the eigenvectors of the symmetric
+/// matrix with entries xx, yy, zz, xy, yz, zx (a covariance), the largest eigenvalue's first,
+/// then the middle one's: the identity for the zero matrix or when no eigenvectors are found.
+Mat3 principal_axes(const std::array<double, 6>& symmetric);
 
 /// The 8 corners of the box: center +- half_0 axis_0 +- half_1 axis_1 +- half_2 axis_2, rounded.
 std::array<Vec3, 8> corners(const Obb& box);

@@ -143,9 +143,10 @@ class RayTraversal {
     bool any = false;
     for (std::uint32_t s = node.first; s < node.first + node.count; ++s) {
       ++result_.counters.triangle_tests;
-      const RayTriangleHit h = intersect(bvh_.triangles[s]);
+      const Triangle triangle = bvh_.triangle(s);
+      const RayTriangleHit h = intersect(triangle);
       if (!h.hit) continue;
-      records_.add(bounds::RayMeshFaceHit{ray_, bvh_.triangles[s], h.t, pad_terms_});
+      records_.add(bounds::RayMeshFaceHit{ray_, triangle, h.t, pad_terms_});
       any = true;
       const std::uint32_t face = bvh_.order[s];
       if (!result_.hit || h.t < result_.t || (h.t == result_.t && face < result_.face)) {

@@ -10,7 +10,7 @@ struct Entry {
   std::weak_ptr<const Mesh> mesh;
   std::shared_ptr<const void> bvh;
 };
-using Key = std::tuple<const Mesh*, std::string, BuildStrategy, SplitAxis, SplitPoint, int>;
+using Key = std::tuple<const Mesh*, std::string, BuildStrategy, SplitAxis, SplitPoint, int, bool>;
 
 std::map<Key, Entry>& cache() {
   static std::map<Key, Entry> entries;
@@ -22,7 +22,8 @@ std::map<Key, Entry>& cache() {
 template <class BV>
 std::shared_ptr<const Bvh<BV>> cached_bvh(const std::shared_ptr<const Mesh>& mesh, const BuildOptions& options) {
   auto& entries = cache();
-  const Key key{mesh.get(), BoundingVolume<BV>::name(), options.strategy, options.axis, options.point, options.leaf_size};
+  const Key key{mesh.get(),   BoundingVolume<BV>::name(), options.strategy,   options.axis,
+                options.point, options.leaf_size,         options.hull_points};
   if (auto it = entries.find(key); it != entries.end()) {
     if (it->second.mesh.lock() == mesh) return std::static_pointer_cast<const Bvh<BV>>(it->second.bvh);
     entries.erase(it);  // a mesh that died, and another one now at its address
@@ -33,11 +34,17 @@ std::shared_ptr<const Bvh<BV>> cached_bvh(const std::shared_ptr<const Mesh>& mes
   return bvh;
 }
 
+BuildOptions build_options(const LibraryBvh& library) {
+  BuildOptions o = library.build;
+  o.hull_points = library.update == BvUpdate::exact;
+  return o;
+}
+
 CollisionResult library_collide(const MeshPair& m, CollisionMode mode) {
   const CollideOptions options{mode, m.library.update, m.library.descent};
   return with_bv_type(m.library.bv, [&]<class BV>() {
-    const auto a = cached_bvh<BV>(m.a.mesh, m.library.build);
-    const auto b = cached_bvh<BV>(m.b.mesh, m.library.build);
+    const auto a = cached_bvh<BV>(m.a.mesh, build_options(m.library));
+    const auto b = cached_bvh<BV>(m.b.mesh, build_options(m.library));
     return collide(*a, m.pose_a, *b, m.pose_b, options);
   });
 }

@@ -14,6 +14,10 @@ namespace cc::harness {
 template <class BV>
 std::shared_ptr<const Bvh<BV>> cached_bvh(const std::shared_ptr<const Mesh>& mesh, const BuildOptions& options);
 
+/// The options to build a case's hierarchies with: the case's, with hull points when its update
+/// is the exact one (BuildOptions::hull_points).
+BuildOptions build_options(const LibraryBvh& library);
+
 /// The library's answer to a mesh query, with its counters: both meshes' hierarchies of the
 /// case's type and build, walked with its update and descent options.
 CollisionResult library_collide(const MeshPair& meshes, CollisionMode mode);

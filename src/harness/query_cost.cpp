@@ -54,15 +54,15 @@ UnitCosts unit_costs(const Bvh<BV>& a, const Bvh<BV>& b, const RigidTransform& t
   c.bv_test = per_call_ns(repeats, [&](std::size_t i) {
     return Traits::overlap(a.nodes[na[i % na.size()]].bv, moved[(i / na.size() + i) % moved.size()]);
   });
-  const auto ta = spread(a.triangles.size()), tb = spread(b.triangles.size());
+  const auto ta = spread(a.faces.size()), tb = spread(b.faces.size());
   std::vector<Triangle> moved_triangles;
   for (std::size_t s : tb) {
-    Triangle tri = b.triangles[s];
+    Triangle tri = b.triangle(s);
     for (Vec3& v : tri.v) v = apply(t, v);
     moved_triangles.push_back(tri);
   }
   c.primitive_test = per_call_ns(repeats, [&](std::size_t i) {
-    return test_triangle_triangle(a.triangles[ta[i % ta.size()]], moved_triangles[(i / ta.size() + i) % moved_triangles.size()]);
+    return test_triangle_triangle(a.triangle(ta[i % ta.size()]), moved_triangles[(i / ta.size() + i) % moved_triangles.size()]);
   });
   return c;
 }
@@ -71,8 +71,8 @@ UnitCosts unit_costs(const Bvh<BV>& a, const Bvh<BV>& b, const RigidTransform& t
 
 UnitCosts measure_unit_costs(const MeshPair& m, int repeats) {
   return with_bv_type(m.library.bv, [&]<class BV>() {
-    const auto a = cached_bvh<BV>(m.a.mesh, m.library.build);
-    const auto b = cached_bvh<BV>(m.b.mesh, m.library.build);
+    const auto a = cached_bvh<BV>(m.a.mesh, build_options(m.library));
+    const auto b = cached_bvh<BV>(m.b.mesh, build_options(m.library));
     return unit_costs(*a, *b, relative(m.pose_a, m.pose_b), m.library.update, repeats);
   });
 }

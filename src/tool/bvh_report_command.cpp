@@ -81,8 +81,8 @@ Tally run_library(const harness::LibraryBvh& library, const std::vector<Pose>& p
            std::string(to_string(library.update));
   harness::with_bv_type(library.bv, [&]<class BV>() {
     const auto start = Clock::now();
-    const Bvh<BV> a = build_bvh<BV>(*poses[0].m.a.mesh, library.build);
-    const Bvh<BV> b = build_bvh<BV>(*poses[0].m.b.mesh, library.build);
+    const Bvh<BV> a = build_bvh<BV>(*poses[0].m.a.mesh, harness::build_options(library));
+    const Bvh<BV> b = build_bvh<BV>(*poses[0].m.b.mesh, harness::build_options(library));
     t.build_ms = ms_since(start);
     for (const Pose& p : poses) {
       const auto q = Clock::now();

@@ -118,7 +118,7 @@ TYPED_TEST(BvhCollideTest, MovedVolumesHoldTheMovedTriangles) {
       const TypeParam v = moved_volume(b, n, t, update);
       // A degenerate moved triangle inside it overlaps it (checked with the library's own test).
       for (std::uint32_t s = b.nodes[n].first; s < b.nodes[n].first + b.nodes[n].count; ++s) {
-        for (const Vec3& p : b.triangles[s].v) {
+        for (const Vec3& p : b.triangle(s).v) {
           const Vec3 q = apply(t, p);
           const std::vector<Vec3> point{q};
           if constexpr (std::is_same_v<TypeParam, Obb>) {

@@ -74,8 +74,8 @@ void expect_well_formed(const Mesh& mesh, const Bvh<BV>& bvh, const BuildOptions
       EXPECT_EQ(l.count + r.count, node.count);
     }
     for (std::uint32_t s = node.first; s < node.first + node.count; ++s) {
-      EXPECT_EQ(bvh.triangles[s], mesh.triangle(bvh.order[s]));
-      for (const Vec3& v : bvh.triangles[s].v) ASSERT_TRUE(holds(node.bv, v)) << "node " << n << " slot " << s;
+      EXPECT_EQ(bvh.triangle(s), mesh.triangle(bvh.order[s]));
+      for (const Vec3& v : bvh.triangle(s).v) ASSERT_TRUE(holds(node.bv, v)) << "node " << n << " slot " << s;
     }
   }
 }
@@ -106,17 +106,53 @@ TYPED_TEST(BvhTest, IdenticalTrianglesStillSplit) {
   for (const BuildOptions& o : every_build()) expect_well_formed(same, build_bvh<TypeParam>(same, o), o);
 }
 
-TYPED_TEST(BvhTest, RefittingPointsAreKeptForAabbAndKdopTrees) {
+TYPED_TEST(BvhTest, TrianglesAreTheMeshsIndicesInSlotOrderAndArraysAreSizedExactly) {
+  // A shared-vertex mesh: the hierarchy keeps the mesh's vertices and, per slot, its face.
+  Mesh grid;
+  for (int i = 0; i < 5; ++i) {
+    for (int j = 0; j < 5; ++j) grid.vertices.push_back({double(i), double(j), 0.25 * i * j});
+  }
+  for (std::uint32_t i = 0; i < 4; ++i) {
+    for (std::uint32_t j = 0; j < 4; ++j) {
+      grid.faces.push_back({5 * i + j, 5 * i + j + 5, 5 * i + j + 1});
+      grid.faces.push_back({5 * i + j + 1, 5 * i + j + 5, 5 * i + j + 6});
+    }
+  }
+  for (const BuildOptions& o : every_build()) {
+    const Bvh<TypeParam> b = build_bvh<TypeParam>(grid, o);
+    EXPECT_EQ(b.vertices, grid.vertices);
+    for (std::size_t s = 0; s < b.faces.size(); ++s) EXPECT_EQ(b.faces[s], grid.faces[b.order[s]]);
+    EXPECT_EQ(b.vertices.capacity(), b.vertices.size());
+    EXPECT_EQ(b.faces.capacity(), grid.size());
+    EXPECT_EQ(b.order.capacity(), grid.size());
+    EXPECT_EQ(b.nodes.capacity(), b.nodes.size());
+    expect_well_formed(grid, b, o);
+  }
+}
+
+TYPED_TEST(BvhTest, HullPointsOnlyOnRequestAndOnlyForAabbAndKdopTrees) {
   const Mesh sphere = make_mesh({Shape::sphere, 0, 5, 1.0});
-  const Bvh<TypeParam> b = build_bvh<TypeParam>(sphere, {});
+  const Bvh<TypeParam> lean = build_bvh<TypeParam>(sphere, {});
+  EXPECT_TRUE(lean.hull_points.points.empty());
+  EXPECT_TRUE(lean.hull_points.range.empty());
+  BuildOptions o;
+  o.hull_points = true;
+  const Bvh<TypeParam> b = build_bvh<TypeParam>(sphere, o);
   if constexpr (std::is_same_v<TypeParam, Obb>) {
-    EXPECT_TRUE(b.corners.points.empty());
+    EXPECT_TRUE(b.hull_points.points.empty());
   } else {
-    ASSERT_EQ(b.corners.range.size(), b.nodes.size());
     ASSERT_EQ(b.hull_points.range.size(), b.nodes.size());
-    // The root's hull points are on the sphere (its convex hull's vertices), at most all of them.
-    EXPECT_LE(b.hull_points.of(0).size(), 3 * sphere.size());
-    for (const Vec3& p : b.hull_points.of(0)) EXPECT_NEAR(std::sqrt(dot(p, p)), 1.0, 1e-12);
+    // The root's hull points are on the sphere (its convex hull's vertices), each once.
+    const auto root = b.hull_points.of(0);
+    EXPECT_LE(root.size(), 3 * sphere.size());
+    EXPECT_GE(root.size(), 4u);
+    for (const Vec3& p : root) EXPECT_NEAR(std::sqrt(dot(p, p)), 1.0, 1e-12);
+    // A leaf's are its triangle's distinct vertices.
+    for (std::size_t n = 0; n < b.nodes.size(); ++n) {
+      if (b.nodes[n].leaf()) {
+        EXPECT_LE(b.hull_points.of(n).size(), 3u);
+      }
+    }
   }
   EXPECT_GE(b.magnitude, 1.0);
 }

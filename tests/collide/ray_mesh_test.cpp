@@ -135,7 +135,7 @@ TYPED_TEST(RayMeshTest, VolumeEntriesBoundTheirTrianglesHits) {
         const BvhNode<TypeParam>& node = bvh.nodes[n];
         const RayVolumeEntry entry = ray_volume_entry(node.bv, r, pad);
         for (std::uint32_t s = node.first; s < node.first + node.count; ++s) {
-          const RayTriangleHit h = intersect_ray_triangle(r, bvh.triangles[s]);
+          const RayTriangleHit h = intersect_ray_triangle(r, bvh.triangle(s));
           if (!h.hit) continue;
           ASSERT_TRUE(entry.hit) << "node " << n << " slot " << s << " " << describe(r);
           ASSERT_LE(entry.t, h.t) << "node " << n << " slot " << s << " " << describe(r);

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <random>
 
 #include "collide/bvh_collide.h"
 #include "harness/mesh_files.h"
@@ -13,6 +14,71 @@
 
 namespace cc::exact {
 namespace {
+
+QVec3 placed_exactly(const RigidTransform& pose, const Vec3& v) {
+  QVec3 out;
+  for (int i = 0; i < 3; ++i) out[i] = dot(rational(pose.rotation.row(i)), rational(v)) + rational(pose.translation[i]);
+  return out;
+}
+
+Mat3 rotation(double a, double b, double c) {
+  const Mat3 x = Mat3::from_columns({1, 0, 0}, {0, std::cos(a), std::sin(a)}, {0, -std::sin(a), std::cos(a)});
+  const Mat3 z = Mat3::from_columns({std::cos(b), std::sin(b), 0}, {-std::sin(b), std::cos(b), 0}, {0, 0, 1});
+  const Mat3 y = Mat3::from_columns({std::cos(c), 0, -std::sin(c)}, {0, 1, 0}, {std::sin(c), 0, std::cos(c)});
+  Mat3 r;
+  for (int k = 0; k < 3; ++k) r.col[k] = x * (z * (y * Mat3::identity().col[k]));
+  return r;
+}
+
+// The filter claims a separation above the threshold only when exact_sat finds one: on triangle
+// pairs apart by about the threshold (both sides of it, along face normals and across edges),
+// far apart, touching and crossing, degenerate (segments, points), small next to their
+// placement, each placed by its own rotation.
+TEST(CertainlyApart, ClaimsOnlyWhatTheExactTestFinds) {
+  std::mt19937_64 random(3);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  const double threshold = 0x1p-20;
+  int claimed = 0, claimed_near = 0, cases = 0;
+  for (int trial = 0; trial < 3000; ++trial) {
+    const auto point = [&] { return Vec3{uniform(random), uniform(random), uniform(random)}; };
+    Triangle a{{point(), point(), point()}}, b{{point(), point(), point()}};
+    if (trial % 5 == 1) b.v[2] = b.v[1];                       // a segment
+    if (trial % 7 == 2) a.v[1] = a.v[2] = a.v[0];             // a point
+    // b moved apart from a along a's normal by about the threshold times a small factor.
+    const Vec3 n = cross(a.v[1] - a.v[0], a.v[2] - a.v[0]);
+    const double norm = std::sqrt(dot(n, n));
+    if (norm > 0 && trial % 3 == 0) {
+      const Vec3 unit = (1 / norm) * n;
+      const double up = threshold * std::ldexp(1.0, static_cast<int>(trial % 9) - 3);
+      // b tilted above a: its lowest vertex `up` above a's plane, the others higher.
+      const Vec3 base = (1.0 / 3) * (a.v[0] + a.v[1] + a.v[2]);
+      for (int k = 0; k < 3; ++k) {
+        const Vec3 q = 0.3 * point();
+        b.v[k] = base + (q - dot(q, unit) * unit) + (up + (k ? std::fabs(uniform(random)) : 0.0)) * unit;
+      }
+      if (trial % 2) {
+        for (int k = 0; k < 3; ++k) b.v[k] = a.v[k] + up * unit;  // a's copy lifted by up: flat, not claimed
+      }
+    }
+    const double far = std::ldexp(1.0, static_cast<int>(trial % 11));
+    const RigidTransform pa{rotation(uniform(random), uniform(random), uniform(random)), far * point()};
+    const RigidTransform pb = trial % 4 ? pa : RigidTransform{rotation(uniform(random), 2, 1), pa.translation};
+    ++cases;
+    if (!certainly_apart(float_triangle(a, pa), float_triangle(b, pb), threshold)) continue;
+    ++claimed;
+    const SatResult r = exact_sat(rational_triangle_shape(placed_exactly(pa, a.v[0]), placed_exactly(pa, a.v[1]),
+                                                          placed_exactly(pa, a.v[2]), "A"),
+                                  rational_triangle_shape(placed_exactly(pb, b.v[0]), placed_exactly(pb, b.v[1]),
+                                                          placed_exactly(pb, b.v[2]), "B"));
+    ASSERT_FALSE(r.hit) << "trial " << trial;
+    ASSERT_GT(-r.margin, threshold * (1 - 0x1p-40)) << "trial " << trial;
+    claimed_near += -r.margin < 8 * threshold;
+  }
+  std::cout << "certainly_apart: " << claimed << " of " << cases << " pairs claimed apart, " << claimed_near
+            << " of them within 8 times the threshold" << std::endl;
+  EXPECT_GT(claimed, cases / 4);
+  EXPECT_GT(claimed_near, cases / 100);
+}
 
 using harness::Contract;
 using harness::FacePair;

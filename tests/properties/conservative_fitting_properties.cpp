@@ -2,7 +2,8 @@
 //  - every input point lies inside the fitted k-DOP, for every direction set;
 //  - the convex hull's vertices hold every point (their hull contains it), and collinear or
 //    coincident points give exactly their ends, on points in general position, on a line, in a
-//    plane, on one point, and on points nudged a few ulps off a line or plane.
+//    plane, on one point, and on points nudged a few ulps off a line or plane; so do the
+//    vertices of fast_convex_hull (which drops only points it certifies inside).
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
@@ -161,29 +162,45 @@ std::vector<Vec3> hull_input(harness::Choices& c, int& dimension, bool& nudged) 
   return points;
 }
 
+// The hull of a hull's vertices holds every point, exactly.
+void expect_vertices_hold_every_point(const std::vector<Vec3>& points, const ConvexHull& hull,
+                                      std::vector<exact::QVec3>& vertices) {
+  std::vector<bool> seen(points.size(), false);
+  vertices.clear();
+  for (std::uint32_t v : hull.vertices) {
+    RC_ASSERT(v < points.size());
+    RC_ASSERT(!seen[v]);
+    seen[v] = true;
+    vertices.push_back(exact::rational(points[v]));
+  }
+  RC_ASSERT(!vertices.empty());
+  for (const auto& t : hull.triangles) RC_ASSERT(t[0] < points.size() && t[1] < points.size() && t[2] < points.size());
+  const ExactHull exact_hull(vertices);
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    if (!exact_hull.holds(exact::rational(points[i]))) RC_FAIL("point " + std::to_string(i) + " lies outside the hull of the vertices");
+  }
+}
+
 TEST(ConvexHull, TheVerticesHoldEveryPointExactly) {
   std::array<int, 4> met_dimension{};
-  int met_nudged_off = 0, met_undecided = 0, cases = 0;
+  int met_nudged_off = 0, met_undecided = 0, met_dropped = 0, cases = 0;
   const bool passed = check_property_with_choices("the convex hull holds every point", 2000, [&](harness::Choices& c) {
     int built_dimension = 0;
     bool nudged = false;
-    const std::vector<Vec3> points = hull_input(c, built_dimension, nudged);
-    const ConvexHull hull = convex_hull(points);
+    std::vector<Vec3> points = hull_input(c, built_dimension, nudged);
     std::vector<exact::QVec3> all, vertices;
     for (const Vec3& p : points) all.push_back(exact::rational(p));
-    std::vector<bool> seen(points.size(), false);
-    for (std::uint32_t v : hull.vertices) {
-      RC_ASSERT(v < points.size());
-      RC_ASSERT(!seen[v]);
-      seen[v] = true;
-      vertices.push_back(all[v]);
-    }
-    RC_ASSERT(!vertices.empty());
-    for (const auto& t : hull.triangles) RC_ASSERT(t[0] < points.size() && t[1] < points.size() && t[2] < points.size());
-    const ExactHull exact_hull(vertices);
-    for (std::size_t i = 0; i < all.size(); ++i) {
-      if (!exact_hull.holds(all[i])) RC_FAIL("point " + std::to_string(i) + " lies outside the hull of the vertices");
-    }
+    // fast_convex_hull, on the distinct points: its vertices too hold every point.
+    std::vector<Vec3> distinct = points;
+    std::sort(distinct.begin(), distinct.end(), [](const Vec3& a, const Vec3& b) {
+      return a.x != b.x ? a.x < b.x : (a.y != b.y ? a.y < b.y : a.z < b.z);
+    });
+    distinct.erase(std::unique(distinct.begin(), distinct.end()), distinct.end());
+    const ConvexHull fast = fast_convex_hull(distinct);
+    expect_vertices_hold_every_point(distinct, fast, vertices);
+    met_dropped += fast.vertices.size() < distinct.size();
+    const ConvexHull hull = convex_hull(points);
+    expect_vertices_hold_every_point(points, hull, vertices);
     const AffineHull input = affine_hull(all);
     ++cases, ++met_dimension[input.dimension];
     met_nudged_off += nudged && input.dimension > std::min(built_dimension, 3);
@@ -215,9 +232,11 @@ TEST(ConvexHull, TheVerticesHoldEveryPointExactly) {
   EXPECT_TRUE(passed);
   std::cout << "convex hull: " << cases << " cases; dimensions 0-3: " << met_dimension[0] << ", " << met_dimension[1]
             << ", " << met_dimension[2] << ", " << met_dimension[3] << "; nudged off their line or plane: "
-            << met_nudged_off << "; collinear beyond exact decision (every point kept): " << met_undecided << std::endl;
+            << met_nudged_off << "; collinear beyond exact decision (every point kept): " << met_undecided
+            << "; fast_convex_hull dropped points: " << met_dropped << std::endl;
   for (int d = 0; d < 4; ++d) EXPECT_GT(met_dimension[d], cases / 20) << "points of dimension " << d;
   EXPECT_GT(met_nudged_off, cases / 50) << "points nudged off a point, line or plane";
+  EXPECT_GT(met_dropped, cases / 20) << "fast_convex_hull never left a point out";
 }
 
 }  // namespace

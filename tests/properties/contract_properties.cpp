@@ -5,8 +5,8 @@
 //    vertices, so the extreme points are among them; coincident points give one vertex;
 //  - fit_obb: every point lies in the box, whose axes are right-handed and orthonormal to
 //    within the OBB contract's tolerance;
-//  - kdop_corners: every corner lies in every slab of the k-DOP, and the corners reach every
-//    slab, to within 2^-46 of the bounds' magnitude;
+//  - kdop_cone, support_bound: the cone's nonnegative combination is its direction to within
+//    2^-46 of it, and the bound is at least every point's projection (up to its own rounding);
 //  - rotation_radius, bounding_cube, fitted_box: the radius is no less than any vertex's
 //    distance, and both boxes hold the mesh placed by the pose, exactly and as apply() places it.
 // The point sets are coincident, collinear, coplanar or in general position, in a random order
@@ -18,7 +18,7 @@
 
 #include "collide/convex_hull.h"
 #include "collide/kdop.h"
-#include "collide/kdop_corners.h"
+#include "collide/kdop_support.h"
 #include "collide/obb_fit.h"
 #include "collide/object_bounds.h"
 #include "harness/number_text.h"
@@ -198,41 +198,55 @@ TEST(Contracts, AFittedObbHoldsItsPointsWithOrthonormalAxes) {
 }
 
 template <int K>
-void check_corners(const std::vector<Vec3>& points) {
+QVec3 half_space_normal(int h) {
+  const KdopDirection d = kdop_directions<K>()[h % (K / 2)];
+  const int sign = h < K / 2 ? 1 : -1;
+  return {sign * d.x, sign * d.y, sign * d.z};
+}
+
+template <int K>
+void check_support(const std::vector<Vec3>& points, const Vec3& m) {
   const Kdop<K> dop = fit_kdop<K>(points);
-  const std::vector<Vec3> corners = kdop_corners(dop);
-  RC_ASSERT(!corners.empty());
-  double magnitude = 0;
-  for (int i = 0; i < K / 2; ++i) magnitude = std::max({magnitude, std::fabs(dop.lo[i]), std::fabs(dop.hi[i])});
-  const auto dirs = kdop_directions<K>();
-  for (int i = 0; i < K / 2; ++i) {
-    const QVec3 d = q(dirs[i]);
-    const Rational slack = rational(0x1p-46 * magnitude) * (std::abs(dirs[i].x) + std::abs(dirs[i].y) + std::abs(dirs[i].z));
-    const Rational lo = rational(dop.lo[i]), hi = rational(dop.hi[i]);
-    Rational least = dot(d, q(corners[0])), most = least;
-    for (const Vec3& c : corners) {
-      const Rational s = dot(d, q(c));
-      if (s < lo - slack || s > hi + slack) RC_FAIL("k = " + std::to_string(K) + ": a corner lies outside slab " + std::to_string(i));
-      least = std::min(least, s), most = std::max(most, s);
-    }
-    if (least > lo + slack || most < hi - slack) RC_FAIL("k = " + std::to_string(K) + ": the corners do not reach slab " + std::to_string(i));
+  const KdopCone<K> cone = kdop_cone<K>(m);
+  QVec3 sum{0, 0, 0};
+  double reach = 0;  // sum c_j |bound_j|
+  for (int j = 0; j < 3; ++j) {
+    const int h = cone.normal[j];
+    RC_ASSERT(cone.coefficient[j] >= 0);
+    sum = sum + rational(cone.coefficient[j]) * half_space_normal<K>(h);
+    reach += cone.coefficient[j] * std::fabs(h < K / 2 ? dop.hi[h] : dop.lo[h - K / 2]);
+  }
+  const Rational off = rational(0x1p-46 * max_abs(m));
+  const QVec3 residual = q(m) - sum;
+  for (int k = 0; k < 3; ++k) {
+    if (abs(residual[k]) > off) RC_FAIL("k = " + std::to_string(K) + ": the cone does not combine to its direction");
+  }
+  double largest = 0;
+  for (const Vec3& p : points) largest = std::max(largest, norm1(p));
+  const Rational slack = rational(3 * 0x1p-53 * reach) + off * rational(2 * largest);
+  const Rational bound = rational(support_bound(dop, cone));
+  for (const Vec3& p : points) {
+    if (dot(q(m), q(p)) > bound + slack) RC_FAIL("k = " + std::to_string(K) + ": a point reaches beyond the support bound");
   }
 }
 
-TEST(Contracts, TheCornersOfAKdopSpanIt) {
+TEST(Contracts, TheSupportBoundOfAKdopHoldsItsPoints) {
   Layouts met;
-  const std::string property = "kdop_corners span the k-DOP";
+  const std::string property = "support_bound holds the k-DOP's points";
   const bool passed = check_property_with_choices(property, 600, [&](harness::Choices& c) {
     harness::ValueSource values(c, {.max_exponent = 8, .extreme = false, .huge = false});
     const std::vector<Vec3> points = draw_points(values, kLayouts[c.draw(4)]);
     ++met.count[static_cast<int>(layout_of(points))];
+    // Along a drawn direction, or the difference of two of the points (a direction in which
+    // both may be extreme).
+    const Vec3 m = c.chance(50) || points.size() < 2 ? values.point() : points[0] - points[points.size() - 1];
     switch (c.draw(6)) {
-      case 0: check_corners<6>(points); break;
-      case 1: check_corners<14>(points); break;
-      case 2: check_corners<16>(points); break;
-      case 3: check_corners<18>(points); break;
-      case 4: check_corners<24>(points); break;
-      default: check_corners<26>(points);
+      case 0: check_support<6>(points, m); break;
+      case 1: check_support<14>(points, m); break;
+      case 2: check_support<16>(points, m); break;
+      case 3: check_support<18>(points, m); break;
+      case 4: check_support<24>(points, m); break;
+      default: check_support<26>(points, m);
     }
   });
   EXPECT_TRUE(passed);
