@@ -28,7 +28,7 @@
 #include "harness/mesh_files.h"
 #include "harness/mesh_poses.h"
 #include "harness/mesh_query.h"
-#include "harness/procedural_mesh.h"
+#include "collide/procedural_mesh.h"
 #include "oracle/fcl/parties.h"
 
 namespace cc::bench {
@@ -175,13 +175,13 @@ void register_all_pairs(std::shared_ptr<const Mesh> env, std::shared_ptr<const M
 void register_hierarchy_benchmarks() {
   const auto env = load("env.obj"), rob = load("rob.obj");
   register_build("env", env, 5);
-  harness::ProceduralMesh torus;
-  torus.shape = harness::ProceduralMesh::Shape::torus;
+  ProceduralMesh torus;
+  torus.shape = ProceduralMesh::Shape::torus;
   torus.seed = seed();
   torus.resolution = 50;  // 4 n^2 = 10,000 triangles
-  register_build("torus10k", std::make_shared<const Mesh>(harness::make_mesh(torus)), 5);
+  register_build("torus10k", std::make_shared<const Mesh>(make_mesh(torus)), 5);
   torus.resolution = 158;  // 99,856 triangles
-  register_build("torus100k", std::make_shared<const Mesh>(harness::make_mesh(torus)), 5);
+  register_build("torus100k", std::make_shared<const Mesh>(make_mesh(torus)), 5);
   register_all_pairs(env, rob);
 }
 

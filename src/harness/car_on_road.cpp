@@ -2,7 +2,7 @@
 
 #include <cmath>
 
-#include "harness/procedural_mesh.h"
+#include "collide/procedural_mesh.h"
 
 namespace cc::harness {
 namespace {

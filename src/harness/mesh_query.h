@@ -10,7 +10,7 @@
 #include "collide/bvh_collide.h"
 #include "collide/mesh.h"
 #include "collide/rigid_transform.h"
-#include "harness/procedural_mesh.h"
+#include "collide/procedural_mesh.h"
 
 namespace cc::harness {
 

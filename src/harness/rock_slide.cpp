@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "harness/procedural_mesh.h"
+#include "collide/procedural_mesh.h"
 
 namespace cc::harness {
 namespace {

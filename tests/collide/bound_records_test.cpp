@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "harness/procedural_mesh.h"
+#include "collide/procedural_mesh.h"
 
 namespace cc {
 namespace {
@@ -97,7 +97,7 @@ TEST(BoundRecords, TriangleTestsRecordTheirAxesAndTheirChangeOfFrame) {
 }
 
 TEST(BoundRecords, RaysOnMeshesRecordTheirSlabsAndHits) {
-  const Mesh mesh = harness::make_mesh({harness::ProceduralMesh::Shape::torus, 1, 6, 2.0, 0, 0});
+  const Mesh mesh = make_mesh({ProceduralMesh::Shape::torus, 1, 6, 2.0, 0, 0});
   const Bvh<Obb> bvh = build_bvh<Obb>(mesh, {});
   const Ray ray{{10, 0.5, 0.25}, {-1, 0, 0}};
   bounds::Records records;

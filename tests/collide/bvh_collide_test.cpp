@@ -5,13 +5,12 @@
 #include <algorithm>
 #include <cmath>
 
-#include "harness/procedural_mesh.h"
+#include "collide/procedural_mesh.h"
 
 namespace cc {
 namespace {
 
-using harness::make_mesh;
-using Shape = harness::ProceduralMesh::Shape;
+using Shape = ProceduralMesh::Shape;
 using Pairs = std::vector<std::pair<std::uint32_t, std::uint32_t>>;
 
 Mat3 rotation(double a, double b, double c) {

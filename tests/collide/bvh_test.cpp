@@ -4,13 +4,11 @@
 
 #include <algorithm>
 
-#include "harness/procedural_mesh.h"
+#include "collide/procedural_mesh.h"
 
 namespace cc {
 namespace {
 
-using harness::make_mesh;
-using harness::ProceduralMesh;
 using Shape = ProceduralMesh::Shape;
 
 template <class BV>

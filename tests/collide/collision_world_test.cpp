@@ -5,12 +5,11 @@
 #include <random>
 
 #include "collide/box_pairs.h"
-#include "harness/procedural_mesh.h"
+#include "collide/procedural_mesh.h"
 
 namespace cc {
 namespace {
 
-using harness::ProceduralMesh;
 
 struct Scene {
   std::vector<std::shared_ptr<const Mesh>> meshes;
@@ -20,8 +19,8 @@ struct Scene {
 Scene random_scene(std::uint64_t seed, int n) {
   std::mt19937_64 random(seed);
   std::uniform_real_distribution<double> unit(0, 1);
-  const auto sphere = std::make_shared<const Mesh>(harness::make_mesh({ProceduralMesh::Shape::sphere, 1, 5, 1.0}));
-  const auto torus = std::make_shared<const Mesh>(harness::make_mesh({ProceduralMesh::Shape::torus, 2, 5, 0.8}));
+  const auto sphere = std::make_shared<const Mesh>(make_mesh({ProceduralMesh::Shape::sphere, 1, 5, 1.0}));
+  const auto torus = std::make_shared<const Mesh>(make_mesh({ProceduralMesh::Shape::torus, 2, 5, 0.8}));
   Scene s;
   for (int i = 0; i < n; ++i) {
     s.meshes.push_back(i % 2 ? sphere : torus);

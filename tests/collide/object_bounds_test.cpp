@@ -5,7 +5,7 @@
 #include <cmath>
 #include <random>
 
-#include "harness/procedural_mesh.h"
+#include "collide/procedural_mesh.h"
 
 namespace cc {
 namespace {
@@ -28,7 +28,7 @@ bool holds(const Aabb& b, const Vec3& p) { return test_aabb_aabb(b, {p, p}); }
 
 TEST(ObjectBounds, TheCubeAndTheFittedBoxHoldThePlacedMesh) {
   std::mt19937_64 random(5);
-  const Mesh mesh = harness::make_mesh({harness::ProceduralMesh::Shape::torus, 1, 8, 3.0, 0, 0});
+  const Mesh mesh = make_mesh({ProceduralMesh::Shape::torus, 1, 8, 3.0, 0, 0});
   const double radius = rotation_radius(mesh);
   for (int i = 0; i < 100; ++i) {
     const RigidTransform pose = random_pose(random);

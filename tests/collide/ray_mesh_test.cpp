@@ -8,14 +8,13 @@
 #include <random>
 #include <string>
 
-#include "harness/procedural_mesh.h"
-#include "harness/seeded_random.h"
+#include "collide/procedural_mesh.h"
+#include "collide/seeded_random.h"
 
 namespace cc {
 namespace {
 
-using harness::make_mesh;
-using Shape = harness::ProceduralMesh::Shape;
+using Shape = ProceduralMesh::Shape;
 
 template <class BV>
 class RayMeshTest : public ::testing::Test {};
@@ -37,7 +36,7 @@ std::string describe(const Ray& r) {
   return buf;
 }
 
-using Random = harness::SeededRandom;
+using Random = SeededRandom;
 
 Vec3 in_cube(Random& random, double h) { return {random.between(-h, h), random.between(-h, h), random.between(-h, h)}; }
 

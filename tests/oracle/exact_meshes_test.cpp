@@ -129,8 +129,8 @@ TEST(JudgeMeshes, ThePosesPlaceTheMeshesExactly) {
 
 TEST(JudgeMeshes, AgreesWithBruteForceFarFromContact) {
   MeshPair m;
-  m.a = harness::procedural_mesh({harness::ProceduralMesh::Shape::sphere, 1, 8, 1.0});
-  m.b = harness::procedural_mesh({harness::ProceduralMesh::Shape::torus, 2, 8, 1.0});
+  m.a = harness::procedural_mesh({ProceduralMesh::Shape::sphere, 1, 8, 1.0});
+  m.b = harness::procedural_mesh({ProceduralMesh::Shape::torus, 2, 8, 1.0});
   m.pose_b.translation = {0.75, 0.125, 0.25};
   const harness::ExactVerdict v = judge_meshes(m);
   const auto brute = collide_brute_force(*m.a.mesh, m.pose_a, *m.b.mesh, m.pose_b);

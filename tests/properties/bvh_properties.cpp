@@ -20,7 +20,7 @@
 #include "harness/input_json.h"
 #include "harness/mesh_collide.h"
 #include "harness/mesh_poses.h"
-#include "harness/procedural_mesh.h"
+#include "collide/procedural_mesh.h"
 #include "oracle/exact/exact_meshes.h"
 #include "oracle/exact/rational.h"
 #include "properties/property.h"

@@ -1,12 +1,12 @@
-#include "harness/procedural_mesh.h"
+#include "collide/procedural_mesh.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include "harness/seeded_random.h"
+#include "collide/seeded_random.h"
 
-namespace cc::harness {
+namespace cc {
 
 std::string_view to_string(ProceduralMesh::Shape shape) {
   switch (shape) {
@@ -157,4 +157,4 @@ Mesh make_mesh(const ProceduralMesh& recipe) {
   return mesh;
 }
 
-}  // namespace cc::harness
+}  // namespace cc

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <random>
 
-namespace cc::harness {
+namespace cc {
 
 class SeededRandom {
  public:
@@ -20,4 +20,4 @@ class SeededRandom {
   std::mt19937_64 engine_;
 };
 
-}  // namespace cc::harness
+}  // namespace cc

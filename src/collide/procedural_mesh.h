@@ -1,4 +1,6 @@
-// Meshes made from a seed: for scale, and for shapes FCL's test meshes lack.
+// Meshes made from a seed (a sphere, a torus, a terrain, a plate, a soup with segments and points):
+// for scale, for shapes a user's own meshes lack, and for the harness's mesh cases, whose case
+// files name a recipe.
 #pragma once
 
 #include <cstdint>
@@ -7,7 +9,7 @@
 
 #include "collide/mesh.h"
 
-namespace cc::harness {
+namespace cc {
 
 /// A recipe for a mesh. The same recipe gives the same mesh bit for bit on any machine with
 /// the same libm (the sphere and the torus use sin and cos).
@@ -35,4 +37,4 @@ std::optional<ProceduralMesh::Shape> shape_named(std::string_view name);
 /// centred on the origin. resolution is clamped to [1, 200].
 Mesh make_mesh(const ProceduralMesh& recipe);
 
-}  // namespace cc::harness
+}  // namespace cc

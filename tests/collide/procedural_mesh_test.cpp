@@ -1,7 +1,7 @@
 // make_mesh: every shape is the same bit for bit for the same recipe (and another for another
 // seed where a seed is used), has the face count its resolution gives, is valid and within its
 // size of the origin; degenerate_percent makes segments and points; shape names round-trip.
-#include "harness/procedural_mesh.h"
+#include "collide/procedural_mesh.h"
 
 #include <gtest/gtest.h>
 
@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace cc::harness {
+namespace cc {
 namespace {
 
 using Shape = ProceduralMesh::Shape;
@@ -240,4 +240,4 @@ TEST(ProceduralMesh, ShapeNamesRoundTrip) {
 }
 
 }  // namespace
-}  // namespace cc::harness
+}  // namespace cc

@@ -1,0 +1,42 @@
+# ctest's `library.installed_package_consumer`: installs the library alone from BUILD_DIR
+# (`cmake --install --component collide`) into WORK/prefix, checks that the package names
+# nothing of FCL, libccd, GMP or the harness, then configures, builds and runs the consumer
+# project (this folder) against it. Arguments: -DBUILD_DIR=... -DWORK=... -DSOURCE=...
+foreach(var BUILD_DIR WORK SOURCE)
+  if(NOT DEFINED ${var})
+    message(FATAL_ERROR "run.cmake needs -D${var}=...")
+  endif()
+endforeach()
+file(REMOVE_RECURSE ${WORK})
+
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT status EQUAL 0)
+    message(FATAL_ERROR "failed (${status}): ${ARGN}\n${out}\n${err}")
+  endif()
+  set(output "${out}" PARENT_SCOPE)
+endfunction()
+
+run(${CMAKE_COMMAND} --install ${BUILD_DIR} --component collide --prefix ${WORK}/prefix)
+file(GLOB_RECURSE installed RELATIVE ${WORK}/prefix ${WORK}/prefix/*)
+foreach(f ${installed})
+  if(NOT f MATCHES "^include/crosscheck/collide/[a-z0-9_]+\\.h$|^lib[0-9]*/(x86_64-linux-gnu/)?(libcrosscheck_collide\\.a|cmake/crosscheck/crosscheck[A-Za-z-]*\\.cmake)$")
+    message(FATAL_ERROR "the library's install holds a file that is not the library's: ${f}")
+  endif()
+endforeach()
+file(GLOB_RECURSE package_files ${WORK}/prefix/*.cmake)
+foreach(f ${package_files})
+  file(READ ${f} text)
+  if(text MATCHES "fcl|libccd|CCD|gmp|GMP|crosscheck_harness|crosscheck_exact|rapidcheck|GTest")
+    message(FATAL_ERROR "the installed package ${f} names a dependency the library must not have: ${CMAKE_MATCH_0}")
+  endif()
+endforeach()
+
+run(${CMAKE_COMMAND} -S ${SOURCE} -B ${WORK}/build -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${WORK}/prefix)
+run(${CMAKE_COMMAND} --build ${WORK}/build)
+file(READ ${WORK}/build/build.ninja ninja)
+if(ninja MATCHES "libfcl|libccd|libgmp|crosscheck_harness|crosscheck_exact|crosscheck_fcl")
+  message(FATAL_ERROR "the consumer's build names ${CMAKE_MATCH_0}")
+endif()
+run(${WORK}/build/consumer)
+message(STATUS "${output}")
