@@ -20,6 +20,7 @@ void add_fuzz_commands(CLI::App& app, int& exit_code);
 void add_bvh_report_command(CLI::App& app, int& exit_code);
 void add_scene_command(CLI::App& app, int& exit_code);
 void add_car_command(CLI::App& app, int& exit_code);
+void add_maze_command(CLI::App& app, int& exit_code);
 void add_mutate_command(CLI::App& app, int& exit_code);
 
 }  // namespace cc::tool
