@@ -96,24 +96,36 @@ DyadicPoint placed_dyadic(const RigidTransform& pose, const Vec3& v) {
   return p;
 }
 
+namespace {
+
+// The index among the 20 of each triple i < j < k of the six edges (-1 elsewhere).
+struct TripleIndex {
+  std::array<std::array<std::array<int, 6>, 6>, 6> of{};
+  constexpr TripleIndex() {
+    int index = 0;
+    for (int i = 0; i < 6; ++i) {
+      for (int j = 0; j < 6; ++j) {
+        for (int k = 0; k < 6; ++k) of[i][j][k] = -1;
+      }
+    }
+    for (int i = 0; i < 6; ++i) {
+      for (int j = i + 1; j < 6; ++j) {
+        for (int k = j + 1; k < 6; ++k) of[i][j][k] = index++;
+      }
+    }
+  }
+};
+constexpr TripleIndex kTriple;
+
+int triple_index(int i, int j, int k) { return kTriple.of[i][j][k]; }
+
+}  // namespace
+
 void TriangleSat::cross(Vec& out, const Vec& u, const Vec& v) {
   for (int i = 0; i < 3; ++i) {
     const int j = (i + 1) % 3, k = (i + 2) % 3;
     mpz_mul(out[i].get_mpz_t(), u[j].get_mpz_t(), v[k].get_mpz_t());
     mpz_submul(out[i].get_mpz_t(), u[k].get_mpz_t(), v[j].get_mpz_t());
-  }
-}
-
-void TriangleSat::project(const Vec& axis, int first, mpz_class& lo, mpz_class& hi) {
-  dot(lo, axis, points_[first]);
-  hi = lo;
-  for (int k = first + 1; k < first + 3; ++k) {
-    dot(other_, axis, points_[k]);
-    if (other_ < lo) {
-      lo = other_;
-    } else if (other_ > hi) {
-      hi = other_;
-    }
   }
 }
 
@@ -123,9 +135,45 @@ void TriangleSat::dot(mpz_class& out, const Vec& u, const Vec& v) {
   mpz_addmul(out.get_mpz_t(), u[2].get_mpz_t(), v[2].get_mpz_t());
 }
 
-// exact_sat's steps (convex_sat.cpp), on integers: with the points on 2^E, directions are on
-// 2^E, their cross products on 2^2E, projections onto those on 2^3E; for coplanar directions the
+// [e_i, e_j, e_k] into out (0 when two indices are equal or an edge is zero).
+void TriangleSat::triple(mpz_class& out, int i, int j, int k) {
+  if (i == j || j == k || i == k) {
+    out = 0;
+    return;
+  }
+  bool odd = false;  // the permutation that sorts (i, j, k)
+  if (i > j) std::swap(i, j), odd = !odd;
+  if (j > k) std::swap(j, k), odd = !odd;
+  if (i > j) std::swap(i, j), odd = !odd;
+  out = triples_[triple_index(i, j, k)];
+  if (odd) mpz_neg(out.get_mpz_t(), out.get_mpz_t());
+}
+
+void TriangleSat::gap_from(const mpz_class& t0, const mpz_class& t2, const mpz_class& t3, const mpz_class& t5,
+                           const mpz_class& w) {
+  // a's vertices relative to a0 project to 0, t0, -t2; b's to w, w + t3, w - t5.
+  const auto extremes = [&](const mpz_class& x, const mpz_class& y, mpz_class& lo, mpz_class& hi) {
+    mpz_neg(other_.get_mpz_t(), y.get_mpz_t());
+    lo = 0, hi = 0;
+    for (const mpz_class* v : {&x, static_cast<const mpz_class*>(&other_)}) {
+      if (*v < lo) lo = *v;
+      if (*v > hi) hi = *v;
+    }
+  };
+  extremes(t0, t2, lo_a_, hi_a_);
+  extremes(t3, t5, lo_b_, hi_b_);
+  lo_b_ += w, hi_b_ += w;
+  mpz_sub(gap_.get_mpz_t(), lo_b_.get_mpz_t(), hi_a_.get_mpz_t());
+  mpz_sub(other_.get_mpz_t(), lo_a_.get_mpz_t(), hi_b_.get_mpz_t());
+  if (other_ > gap_) mpz_swap(other_.get_mpz_t(), gap_.get_mpz_t());
+}
+
+// exact_sat's steps (convex_sat.cpp), on integers: with the points on 2^E, edges are on 2^E,
+// their cross products on 2^2E, projections onto those on 2^3E; for coplanar directions the
 // plane normal n is on 2^2E, the in-plane normals n x d on 2^3E, projections onto them on 2^4E.
+// A projection is taken relative to a's first vertex: along a cross product of edges e_i x e_j,
+// the other vertices' offsets project to triple products [e_i, e_j, e_k] of the six edges (20 of
+// them, each computed once), and b's first vertex to one product with w = b0 - a0.
 std::optional<TriangleSatVerdict> TriangleSat::operator()(const std::array<const DyadicPoint*, 3>& a,
                                                           const std::array<const DyadicPoint*, 3>& b) {
   const std::array<const DyadicPoint*, 6> all{a[0], a[1], a[2], b[0], b[1], b[2]};
@@ -137,55 +185,69 @@ std::optional<TriangleSatVerdict> TriangleSat::operator()(const std::array<const
                    static_cast<unsigned long>(all[k]->exponent - least));
     }
   }
-  // The nonzero edges v[i + 1] - v[i] of a, then of b, and their lengths.
+  for (int i = 0; i < 3; ++i) mpz_sub(w_[i].get_mpz_t(), points_[3][i].get_mpz_t(), points_[0][i].get_mpz_t());
+  // The edges v[i + 1] - v[i] of a (0, 1, 2), then of b (3, 4, 5); the directions are the
+  // nonzero ones, in that order.
   int n = 0;
-  std::array<Magnitude, 6> lengths;
-  for (int t = 0; t < 2; ++t) {
-    for (int i = 0; i < 3; ++i) {
-      Vec& d = directions_[n];
-      for (int k = 0; k < 3; ++k) {
-        mpz_sub(d[k].get_mpz_t(), points_[3 * t + (i + 1) % 3][k].get_mpz_t(), points_[3 * t + i][k].get_mpz_t());
-      }
-      if (sgn(d[0]) == 0 && sgn(d[1]) == 0 && sgn(d[2]) == 0) continue;
-      dot(squares_[n], d, d);
-      lengths[n] = length_of(squares_[n], least, scratch_);
-      ++n;
+  std::array<int, 6> direction;  // edge of each direction
+  std::array<bool, 6> zero{};
+  std::array<Magnitude, 6> lengths;  // per direction
+  for (int e = 0; e < 6; ++e) {
+    const int t = e / 3, i = e % 3;
+    for (int k = 0; k < 3; ++k) {
+      mpz_sub(edges_[e][k].get_mpz_t(), points_[3 * t + (i + 1) % 3][k].get_mpz_t(), points_[3 * t + i][k].get_mpz_t());
     }
+    zero[e] = sgn(edges_[e][0]) == 0 && sgn(edges_[e][1]) == 0 && sgn(edges_[e][2]) == 0;
+    if (zero[e]) continue;
+    dot(squares_[n], edges_[e], edges_[e]);
+    lengths[n] = length_of(squares_[n], least, scratch_);
+    direction[n++] = e;
   }
-  // Rank: 3 when some cross product of two directions has a nonzero product with a third.
+  // Cross products of every pair of directions, and triple products of every three; rank 3 when
+  // one of those is nonzero.
   int pairs = 0;
-  std::array<std::pair<int, int>, 15> pair_of;
-  bool spans = false, flat = false;
+  std::array<std::pair<int, int>, 15> pair_of;  // directions
+  bool flat = false, spans = false;
   for (int i = 0; i < n; ++i) {
     for (int j = i + 1; j < n; ++j) {
       Vec& c = crosses_[pairs];
-      cross(c, directions_[i], directions_[j]);
+      cross(c, edges_[direction[i]], edges_[direction[j]]);
       pair_of[pairs++] = {i, j};
-      if (sgn(c[0]) == 0 && sgn(c[1]) == 0 && sgn(c[2]) == 0) continue;
-      flat = true;
-      for (int k = 0; k < n && !spans; ++k) {
-        dot(product_, c, directions_[k]);
-        spans = sgn(product_) != 0;
+      const bool nonzero = sgn(c[0]) != 0 || sgn(c[1]) != 0 || sgn(c[2]) != 0;
+      flat |= nonzero;
+      for (int k = j + 1; k < n; ++k) {
+        mpz_class& t = triples_[triple_index(direction[i], direction[j], direction[k])];
+        if (nonzero) {
+          dot(t, c, edges_[direction[k]]);
+        } else {
+          t = 0;
+        }
+        spans |= sgn(t) != 0;
       }
     }
   }
   if (!flat) return std::nullopt;  // rank 1 or 0
+  for (int e = 0; e < 6; ++e) {  // triples with a zero edge
+    if (!zero[e]) continue;
+    for (int i = 0; i < 6; ++i) {
+      for (int j = i + 1; j < 6; ++j) {
+        if (i != e && j != e) {
+          int x = i, y = j, z = e;
+          if (z < y) std::swap(y, z);
+          if (y < x) std::swap(x, y);
+          triples_[triple_index(x, y, z)] = 0;
+        }
+      }
+    }
+  }
   TriangleSatVerdict verdict;
   verdict.rank = spans ? 3 : 2;
 
-  // Each candidate's gap max(b.lo - a.hi, a.lo - b.hi).
-  const auto gap = [&](const Vec& axis) {
-    project(axis, 0, lo_a_, hi_a_);
-    project(axis, 3, lo_b_, hi_b_);
-    mpz_sub(gap_.get_mpz_t(), lo_b_.get_mpz_t(), hi_a_.get_mpz_t());
-    mpz_sub(other_.get_mpz_t(), lo_a_.get_mpz_t(), hi_b_.get_mpz_t());
-    if (other_ > gap_) mpz_swap(other_.get_mpz_t(), gap_.get_mpz_t());
-  };
   double best_separation = -std::numeric_limits<double>::infinity();
   double worst_overlap = std::numeric_limits<double>::infinity();
   bool separated = false;
+  // The gap (in gap_, on 2^(axis_exponent + E)) along an axis: separating or overlapping.
   const auto consider = [&](const Vec& axis, long axis_exponent, const Magnitude& conditioning) {
-    gap(axis);
     const Magnitude g = nearest(gap_, axis_exponent + least, scratch_);
     if (sgn(gap_) > 0) {
       separated = true;
@@ -196,10 +258,21 @@ std::optional<TriangleSatVerdict> TriangleSat::operator()(const std::array<const
       worst_overlap = std::min(worst_overlap, overlap);
     }
   };
+  // Along e_i x e_j: the triple products with the edges a0->a1, a2->a0, b0->b1, b2->b0.
+  const auto along_cross = [&](int p) {
+    const int i = direction[pair_of[p].first], j = direction[pair_of[p].second];
+    triple(t_[0], i, j, 0);
+    triple(t_[1], i, j, 2);
+    triple(t_[2], i, j, 3);
+    triple(t_[3], i, j, 5);
+    dot(product_, crosses_[p], w_);
+    gap_from(t_[0], t_[1], t_[2], t_[3], product_);
+  };
   if (verdict.rank == 3) {
     for (int p = 0; p < pairs; ++p) {
       const Vec& c = crosses_[p];
       if (sgn(c[0]) == 0 && sgn(c[1]) == 0 && sgn(c[2]) == 0) continue;
+      along_cross(p);
       consider(c, 2 * least, lengths[pair_of[p].first] * lengths[pair_of[p].second]);
     }
   } else {
@@ -217,11 +290,17 @@ std::optional<TriangleSatVerdict> TriangleSat::operator()(const std::array<const
       other_ *= squares_[j];
       if (product_ > other_) best = p;
     }
-    normal_ = crosses_[best];
     const Magnitude normal_conditioning = lengths[pair_of[best].first] * lengths[pair_of[best].second];
-    consider(normal_, 2 * least, normal_conditioning);
+    along_cross(best);
+    consider(crosses_[best], 2 * least, normal_conditioning);
     for (int k = 0; k < n; ++k) {
-      cross(axis_, normal_, directions_[k]);
+      cross(axis_, crosses_[best], edges_[direction[k]]);
+      dot(t_[0], axis_, edges_[0]);
+      dot(t_[1], axis_, edges_[2]);
+      dot(t_[2], axis_, edges_[3]);
+      dot(t_[3], axis_, edges_[5]);
+      dot(product_, axis_, w_);
+      gap_from(t_[0], t_[1], t_[2], t_[3], product_);
       consider(axis_, 3 * least, normal_conditioning * lengths[k]);
     }
   }

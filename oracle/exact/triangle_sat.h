@@ -43,14 +43,20 @@ class TriangleSat {
   using Vec = std::array<mpz_class, 3>;
   void cross(Vec& out, const Vec& u, const Vec& v);
   void dot(mpz_class& out, const Vec& u, const Vec& v);
-  // lo, hi: the least and the greatest projection of points_[first, first + 3) on the axis.
-  void project(const Vec& axis, int first, mpz_class& lo, mpz_class& hi);
+  // out = [e_i, e_j, e_k], the triple product of three edges, from triples_.
+  void triple(mpz_class& out, int i, int j, int k);
+  // gap_ = max(b.lo - a.hi, a.lo - b.hi) along an axis, from the projections of the edges
+  // a0->a1 (t0), a2->a0 (t2), b0->b1 (t3), b2->b0 (t5) and of w = b0 - a0.
+  void gap_from(const mpz_class& t0, const mpz_class& t2, const mpz_class& t3, const mpz_class& t5,
+                const mpz_class& w);
 
-  std::array<Vec, 6> points_;      // a's vertices, then b's, on one power of two
-  std::array<Vec, 6> directions_;  // the nonzero edges
-  std::array<Vec, 15> crosses_;    // of every pair of directions
+  std::array<Vec, 6> points_;    // a's vertices, then b's, on one power of two
+  std::array<Vec, 6> edges_;     // a's edges v[i + 1] - v[i], then b's
+  std::array<Vec, 15> crosses_;  // of every pair of nonzero edges
+  std::array<mpz_class, 20> triples_;  // [e_i, e_j, e_k], i < j < k
   std::array<mpz_class, 6> squares_;
-  Vec normal_, axis_;
+  std::array<mpz_class, 4> t_;
+  Vec w_, axis_;
   mpz_class product_, lo_a_, hi_a_, lo_b_, hi_b_, gap_, other_, scratch_;
 };
 
