@@ -1,6 +1,7 @@
 #include "collide/obb_fit.h"
 
 #include <Eigen/Eigenvalues>
+#include <vector>
 
 
 namespace cc {
@@ -17,10 +18,14 @@ void add_outer(Symmetric& m, double w, const Vec3& v) {
 }
 
 // The covariance of the hull's surface (each triangle weighted by its area: the sum of
-// area/12 (9 m m^T + p p^T + q q^T + r r^T), m the centroid, over the area, minus the mean's
-// outer product); coordinates relative to `origin`. With no area, the points' own covariance
-// (a segment's direction, or nothing for one point).
+// area/12 (S S^T + p p^T + q q^T + r r^T), S = p + q + r, over the area, minus the mean's outer
+// product); coordinates relative to `origin`. The vertex terms are gathered per vertex (each
+// weighted by the area of the triangles around it), one outer product per vertex instead of one
+// per corner. With no area, the points' own covariance (a segment's direction, or nothing for one
+// point).
 Symmetric covariance(std::span<const Vec3> points, const ConvexHull& hull, const Vec3& origin) {
+  thread_local std::vector<double> weight;  // per point: the area of its triangles
+  weight.assign(points.size(), 0);
   Symmetric second{};
   Vec3 centroid{0, 0, 0};
   double area = 0;
@@ -28,14 +33,17 @@ Symmetric covariance(std::span<const Vec3> points, const ConvexHull& hull, const
     const Vec3 p = points[t[0]] - origin, q = points[t[1]] - origin, r = points[t[2]] - origin;
     const Vec3 n = cross(q - p, r - p);
     const double a = 0.5 * std::sqrt(dot(n, n));
-    const Vec3 m = (1.0 / 3) * (p + q + r);
-    add_outer(second, 0.75 * a, m);
-    for (const Vec3& v : {p, q, r}) add_outer(second, a / 12, v);
-    centroid = centroid + a * m;
+    const Vec3 sum = p + q + r;
+    add_outer(second, a / 12, sum);
+    for (std::uint32_t v : t) weight[v] += a;
+    centroid = centroid + (a / 3) * sum;
     area += a;
   }
   Symmetric c{};
   if (area > 0) {
+    for (std::size_t v = 0; v < points.size(); ++v) {
+      if (weight[v] > 0) add_outer(second, weight[v] / 12, points[v] - origin);
+    }
     const Vec3 mean = (1 / area) * centroid;
     for (int i = 0; i < 6; ++i) c[i] = second[i] / area;
     add_outer(c, -1, mean);
