@@ -19,6 +19,14 @@ using Index = std::uint32_t;
 
 double cross2(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 
+constexpr int kNext[3] = {1, 2, 0};  // (e + 1) % 3
+
+// x . y summed in order. The facets and their distances are a fitting heuristic with a
+// tolerance (what the hull keeps is certified by orientations, below), so they need not be
+// symmetric in the coordinates as the library's tests are (fp::sum3); they are the hull's
+// most frequent operations.
+double plain_dot(const Vec3& x, const Vec3& y) { return x.x * y.x + x.y * y.y + x.z * y.z; }
+
 // The buffers are kept from one hull to the next (one object per thread): a hierarchy computes
 // a hull per node, most of them of a few points.
 class QuickHull {
@@ -75,7 +83,7 @@ class QuickHull {
     far = 0;
     double side = 0;
     for (Index i = 0; i < n; ++i) {
-      const double h = dot(normal, q_[i] - q_[a]);
+      const double h = plain_dot(normal, q_[i] - q_[a]);
       if (std::fabs(h) > far) far = std::fabs(h), d = i, side = h;
     }
     if (far <= eps_) return flat(normal, hull);
@@ -133,19 +141,19 @@ class QuickHull {
     bool alive = true;
   };
 
-  static double norm_squared(const Vec3& v) { return dot(v, v); }
+  static double norm_squared(const Vec3& v) { return plain_dot(v, v); }
   static Vec3 unit(const Vec3& v) {
     const double n = std::sqrt(norm_squared(v));
     return n > 0 ? (1 / n) * v : Vec3{0, 0, 0};
   }
-  double distance(const Face& f, Index i) const { return dot(f.n, q_[i]) - f.offset; }
+  [[gnu::always_inline]] double distance(const Face& f, Index i) const { return plain_dot(f.n, q_[i]) - f.offset; }
 
-  int add_face(Index a, Index b, Index c) {
+  [[gnu::always_inline]] int add_face(Index a, Index b, Index c) {
     Face& f = faces_.emplace_back();
     f.v = {a, b, c};
     f.adj = {-1, -1, -1};
     f.n = unit(cross(q_[b] - q_[a], q_[c] - q_[a]));
-    f.offset = dot(f.n, q_[a]);
+    f.offset = plain_dot(f.n, q_[a]);
     return static_cast<int>(faces_.size() - 1);
   }
 
@@ -154,7 +162,7 @@ class QuickHull {
     if (++stamp_ == 0) std::fill(mark_.begin(), mark_.end(), 0), stamp_ = 1;
     return stamp_;
   }
-  void link(int f, int edge, int g, int g_edge) { faces_[f].adj[edge] = g, faces_[g].adj[g_edge] = f; }
+  [[gnu::always_inline]] void link(int f, int edge, int g, int g_edge) { faces_[f].adj[edge] = g, faces_[g].adj[g_edge] = f; }
 
   // Each point goes to the first face it lies outside of; one outside none is dropped if it lies
   // certainly inside one of the tetrahedra, and kept otherwise.
@@ -227,7 +235,7 @@ class QuickHull {
       }
       const Face& f = faces_[step.face];
       const int e = step.edge;
-      step.edge = (e + 1) % 3, --step.left;
+      step.edge = kNext[e], --step.left;
       const int g = f.adj[e];
       if (!faces_[g].alive) continue;  // seen already
       if (distance(faces_[g], eye) > eps_) {
@@ -236,21 +244,21 @@ class QuickHull {
         // Enter g by its edge back to f; look across its other two edges.
         int back = 0;
         while (faces_[g].adj[back] != step.face) ++back;
-        path.push_back({g, (back + 1) % 3, 2});
+        path.push_back({g, kNext[back], 2});
       } else {
-        const Edge edge{f.v[e], f.v[(e + 1) % 3], g};
-        simple &= edge.from != eye && edge.to != eye && (loop.empty() || loop.back().to == edge.from);
-        loop.push_back(edge);
+        loop.push_back({f.v[e], f.v[kNext[e]], g});
       }
     }
-    // The loop must close, each vertex once (else the eye is dropped: rounding made the hull
-    // inconsistent there).
-    simple &= !loop.empty() && loop.back().to == loop[0].from;
+    // The loop must be one closed chain without the eye, each vertex once (else the eye is
+    // dropped: rounding made the hull inconsistent there).
     const std::uint32_t on_loop = next_stamp();
-    for (const Edge& e : loop) {
-      simple &= mark_[e.from] != on_loop;
+    const auto n = static_cast<int>(loop.size());
+    for (int k = 0; k < n; ++k) {
+      const Edge& e = loop[k];
+      simple &= e.from != eye && e.to == loop[k + 1 == n ? 0 : k + 1].from && mark_[e.from] != on_loop;
       mark_[e.from] = on_loop;
     }
+    simple &= n > 0;
     if (!simple) {
       for (int f : visible) faces_[f].alive = true;
       drop(seed, eye);
@@ -259,17 +267,16 @@ class QuickHull {
       return;
     }
     const auto first = static_cast<int>(faces_.size());
-    const auto n = static_cast<int>(loop.size());
     fresh_.clear();
     for (int k = 0; k < n; ++k) {
       const int f = add_face(loop[k].from, loop[k].to, eye);
       fresh_.push_back(f);
-      Face& out = faces_[loop[k].outside];
+      const Face& out = faces_[loop[k].outside];  // has the horizon edge as to -> from
       for (int e = 0; e < 3; ++e) {
-        if (out.v[e] == loop[k].to && out.v[(e + 1) % 3] == loop[k].from) link(f, 0, loop[k].outside, e);
+        if (out.v[e] == loop[k].to && out.v[kNext[e]] == loop[k].from) link(f, 0, loop[k].outside, e);
       }
     }
-    for (int k = 0; k < n; ++k) link(first + k, 1, first + (k + 1) % n, 2);
+    for (int k = 0; k < n; ++k) link(first + k, 1, first + (k + 1 == n ? 0 : k + 1), 2);
     // The visible faces' vertices off the horizon (which is marked on_loop) are swallowed: kept,
     // as no certificate says they are inside.
     for (int f : visible) {
@@ -317,7 +324,7 @@ class QuickHull {
     const Vec3 e2 = cross(normal, e1);
     std::vector<Planar>& q = planar_;
     q.clear();
-    for (Index i = 0; i < q_.size(); ++i) q.push_back({dot(q_[i], e1), dot(q_[i], e2), i});
+    for (Index i = 0; i < q_.size(); ++i) q.push_back({plain_dot(q_[i], e1), plain_dot(q_[i], e2), i});
     std::sort(q.begin(), q.end(), [](const Planar& a, const Planar& b) { return a.u != b.u ? a.u < b.u : a.v < b.v; });
     std::vector<Planar>& chain = chain_;
     chain.resize(2 * q.size());
