@@ -82,6 +82,29 @@ Mat3 obb_axes(std::span<const Vec3> points, const ConvexHull& hull) {
   return principal_axes(covariance(points, hull, points[0]));
 }
 
+std::optional<Mat3> triangle_axes(const Vec3& p, const Vec3& q, const Vec3& r) {
+  const Vec3 n = cross(q - p, r - p);
+  const double longest = std::max({dot(q - p, q - p), dot(r - q, r - q), dot(p - r, p - r)});
+  if (!(dot(n, n) > 0x1p-40 * longest * longest)) return std::nullopt;
+  // An orthonormal frame of the plane, and the vertices' 2x2 covariance about the centroid in it.
+  const Vec3 u = normalized(q - p), v = normalized(cross(n, u));
+  const Vec3 c = (1.0 / 3) * (p + q + r);
+  double xx = 0, xy = 0, yy = 0;
+  for (const Vec3& w : {p, q, r}) {
+    const double x = dot(w - c, u), y = dot(w - c, v);
+    xx += x * x, xy += x * y, yy += y * y;
+  }
+  // The eigenvector of the larger eigenvalue l: (l - yy, xy) or (xy, l - xx), whichever is longer.
+  const double half_gap = 0.5 * (xx - yy);
+  const double l = 0.5 * (xx + yy) + std::sqrt(half_gap * half_gap + xy * xy);
+  double a = l - yy, b = xy;
+  if (std::fabs(l - xx) > std::fabs(a)) a = xy, b = l - xx;
+  if (a == 0 && b == 0) a = 1;  // isotropic: any direction in the plane
+  const Vec3 major = normalized(a * u + b * v), middle = -b * u + a * v;
+  const Vec3 a0 = major, a1 = normalized(middle - dot(middle, a0) * a0);
+  return Mat3::from_columns(a0, a1, cross(a0, a1));
+}
+
 Obb fit_obb(std::span<const Vec3> points) { return fit_obb(obb_axes(points, convex_hull(points)), points); }
 
 Obb fit_obb(const Mat3& axes, std::span<const Vec3> points) {
