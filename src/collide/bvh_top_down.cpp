@@ -14,6 +14,10 @@
 namespace cc::detail {
 namespace {
 
+// x . y summed in order: a split is a heuristic (any split gives a valid tree), and the
+// projections are its most frequent operations, so they skip fp::sum3's symmetry.
+double projection(const Vec3& x, const Vec3& y) { return x.x * y.x + x.y * y.y + x.z * y.z; }
+
 // A triangle being sorted into the tree.
 struct Item {
   Vec3 centroid;  // rounded, as (1/3) (v0 + v1 + v2)
@@ -28,7 +32,7 @@ struct Extent {
   double midpoint(int k) const { return 0.5 * (lo[k] + hi[k]); }
   BvSize size() const { return box_size(0.5 * (hi - lo)); }
   void add(const Vec3& p) {
-    const Vec3 s = transpose_times(axes, p);
+    const Vec3 s{projection(axes.col[0], p), projection(axes.col[1], p), projection(axes.col[2], p)};
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], s[k]), hi[k] = std::max(hi[k], s[k]);
   }
 };
@@ -121,7 +125,7 @@ class TopDown {
     return e;
   }
 
-  static double projection(const Item& item, const Vec3& axis) { return dot(item.centroid, axis); }
+  static double projection(const Item& item, const Vec3& axis) { return detail::projection(item.centroid, axis); }
 
   // Reorders the items so that the first ones lie before the split point along `axis`; returns
   // how many, in (0, size). Falls back to the median when the point leaves one side empty
