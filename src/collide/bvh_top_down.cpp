@@ -192,6 +192,7 @@ class TopDown {
 
   // Splits a node's items in two; returns the size of the first part, in (0, size).
   std::uint32_t split_node(Items items) const {
+    if (items.size() == 2) return 1;  // every rule splits two triangles one and one
     const Extent e = extent_of(items, frame_of(items));
     const int k = choose_axis(items, e);
     return split(items, e.axes.col[k], e.midpoint(k));
