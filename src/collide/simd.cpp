@@ -69,12 +69,19 @@ std::optional<std::string> unsupported_reason(Kernel k) {
   return "this processor lacks " + std::string(features_needed(k));
 }
 
-Kernel selected() {
+namespace detail {
+
+std::atomic<int> g_selected{-1};
+
+Kernel choose() {
   const int forced = g_forced.load(std::memory_order_relaxed);
-  if (forced >= 0) return static_cast<Kernel>(forced);
   static const Kernel best = supported_kernels().back();
-  return best;
+  const Kernel k = forced >= 0 ? static_cast<Kernel>(forced) : best;
+  g_selected.store(static_cast<int>(index_of(k)), std::memory_order_relaxed);
+  return k;
 }
+
+}  // namespace detail
 
 void force(std::optional<Kernel> k) {
   if (k) {
@@ -83,6 +90,7 @@ void force(std::optional<Kernel> k) {
     }
   }
   g_forced.store(k ? static_cast<int>(index_of(*k)) : -1, std::memory_order_relaxed);
+  detail::choose();
 }
 
 ForcedKernel::ForcedKernel(Kernel k) {
