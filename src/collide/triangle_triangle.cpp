@@ -28,6 +28,15 @@ template <class Records>
   const Vec3 eb[3] = {unit_scaled(b.v[1] - b.v[0]), unit_scaled(b.v[2] - b.v[1]), unit_scaled(b.v[0] - b.v[2])};
   const Vec3 na = cross(ea[0], ea[1]), nb = cross(eb[0], eb[1]);
   if (sat::separates(na, sa, sb, 0, records) || sat::separates(nb, sa, sb, 0, records)) return false;
+  // The normal again from the other pairs of edges: of a sliver, scaling its long edges down can
+  // flush a subnormal component to 0 and leave e0 x e1 zero, where a pair with the short edge
+  // (scaled up exactly) still gives the normal.
+  for (int k = 1; k < 3; ++k) {
+    if (sat::separates(cross(ea[k], ea[(k + 1) % 3]), sa, sb, 0, records) ||
+        sat::separates(cross(eb[k], eb[(k + 1) % 3]), sa, sb, 0, records)) {
+      return false;
+    }
+  }
   for (const Vec3& e : ea) {
     for (const Vec3& f : eb) {
       if (sat::separates(cross(e, f), sa, sb, 0, records)) return false;

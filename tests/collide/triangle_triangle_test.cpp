@@ -56,6 +56,17 @@ TEST(TestTriangleTriangle, SubnormalEdgesStillGiveWellResolvedAxes) {
   EXPECT_FALSE(test_triangle_triangle(a, b));
 }
 
+TEST(TestTriangleTriangle, ASliverKeepsItsNormalWhenScalingFlushesItsLongEdges) {
+  // b's first and third vertices are 2^-1074 apart in y: scaled down, its long edges lose their y
+  // components and e0 x e1 comes out 0; the normal from the short edge (scaled up exactly) still
+  // separates b from a, 0.13 of the largest coordinate away in the plane y = DBL_MIN.
+  const double y = 2.225073858507201e-308, below = 2.2250738585072004e-308;
+  const Triangle a = tri({0.03125, y, 1.25}, {0.014309717841332474, y, 8}, {-1, y, 8});
+  const Triangle b = tri({8, below, 2}, {-0.6795751632047552, y, -0.011761275504420956}, {8, y, 2});
+  EXPECT_FALSE(test_triangle_triangle(a, b));
+  EXPECT_FALSE(test_triangle_triangle(b, a));
+}
+
 TEST(TestTriangleTriangle, IsSymmetricBitForBit) {
   const Triangle a = tri({0.1, 0.2, 0.3}, {1.1, -0.4, 0.2}, {0.3, 0.9, -0.5});
   const Triangle b = tri({0.5, 0.1, -0.2}, {0.6, 0.4, 0.8}, {-0.3, 0.2, 0.1});
