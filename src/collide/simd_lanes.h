@@ -183,8 +183,14 @@ inline Triple<Scalar> abs(const Triple<Scalar>& a) {
 inline Triple<Scalar>::M operator>(const Triple<Scalar>& a, const Triple<Scalar>& b) {
   return {{a.v[0] > b.v[0], a.v[1] > b.v[1], a.v[2] > b.v[2]}};
 }
+inline Triple<Scalar>::M operator<=(const Triple<Scalar>& a, const Triple<Scalar>& b) {
+  return {{a.v[0] <= b.v[0], a.v[1] <= b.v[1], a.v[2] <= b.v[2]}};
+}
 inline Triple<Scalar>::M operator|(const Triple<Scalar>::M& a, const Triple<Scalar>::M& b) {
   return {{a.m[0] || b.m[0], a.m[1] || b.m[1], a.m[2] || b.m[2]}};
+}
+inline Triple<Scalar>::M operator&(const Triple<Scalar>::M& a, const Triple<Scalar>::M& b) {
+  return {{a.m[0] && b.m[0], a.m[1] && b.m[1], a.m[2] && b.m[2]}};
 }
 
 template <>
@@ -223,8 +229,14 @@ struct Triple<Avx2> {
 [[gnu::target("avx2")]] inline Triple<Avx2>::M operator>(Triple<Avx2> a, Triple<Avx2> b) {
   return {_mm256_cmp_pd(a.v, b.v, _CMP_GT_OQ)};
 }
+[[gnu::target("avx2")]] inline Triple<Avx2>::M operator<=(Triple<Avx2> a, Triple<Avx2> b) {
+  return {_mm256_cmp_pd(a.v, b.v, _CMP_LE_OQ)};
+}
 [[gnu::target("avx2")]] inline Triple<Avx2>::M operator|(Triple<Avx2>::M a, Triple<Avx2>::M b) {
   return {_mm256_or_pd(a.m, b.m)};
+}
+[[gnu::target("avx2")]] inline Triple<Avx2>::M operator&(Triple<Avx2>::M a, Triple<Avx2>::M b) {
+  return {_mm256_and_pd(a.m, b.m)};
 }
 
 }  // namespace cc::simd

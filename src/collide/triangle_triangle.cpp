@@ -56,13 +56,15 @@ template <class Records>
   return finite(a) && finite(b);  // on the hit path only: non-finite input gives false
 }
 
-// Edges whose largest component lies in [2^-330, 2^330]: their cross products neither underflow
-// nor overflow (nor lose their direction to subnormal rounding), and a separation 2^-44 M (in the
-// margin's units) on an axis built from them exceeds the subnormal slack. Zero edges, NaN and
-// infinities fail.
-bool well_resolved(const Vec3& e) {
-  const double m = max_abs(e);
-  return m >= 0x1p-330 && m <= 0x1p330;
+// The edges (lane k: edge k, by coordinate) whose largest component lies in [2^-330, 2^330]:
+// their cross products neither underflow nor overflow (nor lose their direction to subnormal
+// rounding), and a separation 2^-44 M (in the margin's units) on an axis built from them exceeds
+// the subnormal slack. Zero edges and infinities fail. (An edge with NaN may pass: every
+// comparison of the test fails on it, and the hit path's contract check answers false.)
+template <class T>
+unsigned well_resolved(const T& x, const T& y, const T& z) {
+  const T m = max(max(abs(x), abs(y)), abs(z));
+  return T::bits((T::broadcast(0x1p-330) <= m) & (m <= T::broadcast(0x1p330)));
 }
 
 // Three candidate axes (lane k: the axis (cx, cy, cz)[k]) tried at once: each separates when the
@@ -130,30 +132,31 @@ bool test(const Triangle& a, const Triangle& b, Records& records) {
       return false;
     }
   }
-  const Vec3 ea[3] = {edge(a, 0), edge(a, 1), edge(a, 2)}, eb[3] = {edge(b, 0), edge(b, 1), edge(b, 2)};
-  for (int k = 0; k < 3; ++k) {
-    if (!well_resolved(ea[k]) || !well_resolved(eb[k])) return certified(a, b, records);
-  }
-  // The 11 axes are complete when the edges span space: an edge of one triangle certainly leaves
-  // the other's plane (bounds::IndependenceBound). det(ea0, ea1, eb_k) = na . eb_k in lane k,
-  // det(eb0, eb1, ea_k) = nb . ea_k.
   T ax, ay, az;
   T::transpose(a.v.data(), ax, ay, az);
   const T ex = ax.rotate1() - ax, ey = ay.rotate1() - ay, ez = az.rotate1() - az;
+  if ((well_resolved(ex, ey, ez) & well_resolved(fx, fy, fz)) != 7) return certified(a, b, records);
+  // The 11 axes are complete when the edges span space: an edge of one triangle certainly leaves
+  // the other's plane (bounds::IndependenceBound). det(ea0, ea1, eb_k) = na . eb_k in lane k,
+  // det(eb0, eb1, ea_k) = nb . ea_k.
   const T det_a = T::broadcast(na.x) * fx + T::broadcast(na.y) * fy + T::broadcast(na.z) * fz;
   const T det_b = T::broadcast(nb.x) * ex + T::broadcast(nb.y) * ey + T::broadcast(nb.z) * ez;
   const T norm_eb = abs(fx) + abs(fy) + abs(fz), norm_ea = abs(ex) + abs(ey) + abs(ez);
   // Lane k's bound is bounds::IndependenceBound{|u|_1, |v|_1, |w_k|_1}.total(), bit for bit (its
-  // rounding term with |w|_1 = 1 is the product of the first two factors, times 1 exactly).
-  const bounds::IndependenceBound plane_a{norm1(ea[0]), norm1(ea[1]), 1}, plane_b{norm1(eb[0]), norm1(eb[1]), 1};
+  // rounding term with |w|_1 = 1 is the product of the first two factors, times 1 exactly), the
+  // 1-norms those of the lanes.
+  double n_ea[4], n_eb[4];
+  norm_ea.store(n_ea), norm_eb.store(n_eb);
+  const bounds::IndependenceBound plane_a{n_ea[0], n_ea[1], 1}, plane_b{n_eb[0], n_eb[1], 1};
   const T slack = T::broadcast(fp::subnormal_slack);
   const T bound_a = T::broadcast(plane_a.rounding()) * norm_eb + slack, bound_b = T::broadcast(plane_b.rounding()) * norm_ea + slack;
   if constexpr (!std::is_same_v<Records, bounds::NoRecords>) {
-    double da[4], db[4], nea[4], neb[4];
-    det_a.store(da), det_b.store(db), norm_ea.store(nea), norm_eb.store(neb);
+    const Vec3 ea[3] = {edge(a, 0), edge(a, 1), edge(a, 2)}, eb[3] = {edge(b, 0), edge(b, 1), edge(b, 2)};
+    double da[4], db[4];
+    det_a.store(da), det_b.store(db);
     for (int k = 0; k < 3; ++k) {
-      records.add(bounds::Independence{na, ea[0], ea[1], eb[k], da[k], {plane_a.u_norm1, plane_a.v_norm1, neb[k]}});
-      records.add(bounds::Independence{nb, eb[0], eb[1], ea[k], db[k], {plane_b.u_norm1, plane_b.v_norm1, nea[k]}});
+      records.add(bounds::Independence{na, ea[0], ea[1], eb[k], da[k], {plane_a.u_norm1, plane_a.v_norm1, n_eb[k]}});
+      records.add(bounds::Independence{nb, eb[0], eb[1], ea[k], db[k], {plane_b.u_norm1, plane_b.v_norm1, n_ea[k]}});
     }
   }
   if (T::bits((abs(det_a) > bound_a) | (abs(det_b) > bound_b)) == 0) return certified(a, b, records);
