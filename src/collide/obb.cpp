@@ -41,8 +41,8 @@ bool test(const Obb& a, const Obb& b, Records& records) {
   T ax, ay, az;
   T::transpose(ac, ax, ay, az);
   const T ta = ax * dx + ay * dy + az * dz;
-  T abs_col[3];
-  for (int j = 0; j < 3; ++j) abs_col[j] = abs(combine(bc[j], ax, ay, az));
+  T col[3], abs_col[3];
+  for (int j = 0; j < 3; ++j) col[j] = combine(bc[j], ax, ay, az), abs_col[j] = abs(col[j]);
   const T ha = T::load(a.half);
   const T rb_faces = combine(b.half, abs_col[0], abs_col[1], abs_col[2]);
   if constexpr (recording) {
@@ -56,12 +56,13 @@ bool test(const Obb& a, const Obb& b, Records& records) {
   // rather than keep in registers, or spill, what they read before knowing whether it is needed:
   // a barrier to the compiler, no instruction.)
   asm volatile("" ::: "memory");
-  // b's face normals (lane j), with r by rows (lane j): the same sums, so the same doubles.
+  // b's face normals (lane j), with r by rows (lane j): the columns transposed.
   T bx, by, bz;
   T::transpose(bc, bx, by, bz);
   const T tb = bx * dx + by * dy + bz * dz;
   T row[3], abs_row[3];
-  for (int i = 0; i < 3; ++i) row[i] = combine(ac[i], bx, by, bz), abs_row[i] = abs(row[i]);
+  T::transpose(col[0], col[1], col[2], row);
+  T::transpose(abs_col[0], abs_col[1], abs_col[2], abs_row);
   const T hb = T::load(b.half);
   const T ra_faces = combine(a.half, abs_row[0], abs_row[1], abs_row[2]);
   if constexpr (recording) {

@@ -145,6 +145,10 @@ struct Triple<Scalar> {
   };
   static Triple set(double x, double y, double z) { return {{x, y, z}}; }
   static Triple load(const Vec3& p) { return {{p.x, p.y, p.z}}; }
+  /// Lanes to rows: row k of the result holds lane k of a, b, c.
+  static void transpose(const Triple& a, const Triple& b, const Triple& c, Triple* rows) {
+    for (int k = 0; k < 3; ++k) rows[k] = {{a.v[k], b.v[k], c.v[k]}};
+  }
   static Triple broadcast(double x) { return {{x, x, x}}; }
   static Triple broadcast_from(const double* p) { return broadcast(*p); }
   double lane0() const { return v[0]; }
@@ -203,6 +207,12 @@ struct Triple<Avx2> {
   /// x, y, z (and nothing beyond them).
   [[gnu::target("avx2")]] static Triple load(const Vec3& p) {
     return {_mm256_insertf128_pd(_mm256_castpd128_pd256(_mm_loadu_pd(&p.x)), _mm_load_sd(&p.z), 1)};
+  }
+  [[gnu::target("avx2")]] static void transpose(const Triple& a, const Triple& b, const Triple& c, Triple* rows) {
+    const __m256d xz01 = _mm256_unpacklo_pd(a.v, b.v), y01 = _mm256_unpackhi_pd(a.v, b.v);
+    const __m256d xz22 = _mm256_unpacklo_pd(c.v, c.v), y22 = _mm256_unpackhi_pd(c.v, c.v);
+    rows[0] = {_mm256_permute2f128_pd(xz01, xz22, 0x20)}, rows[1] = {_mm256_permute2f128_pd(y01, y22, 0x20)};
+    rows[2] = {_mm256_permute2f128_pd(xz01, xz22, 0x31)};
   }
   [[gnu::target("avx2")]] static void transpose(const Vec3* p, Triple& x, Triple& y, Triple& z) {
     const __m256d c0 = load(p[0]).v, c1 = load(p[1]).v, c2 = load(p[2]).v;
