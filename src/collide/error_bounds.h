@@ -51,8 +51,8 @@ inline constexpr Widening kSweepAabbTime{"aabb time", 8 * fp::u};
 /// scaled to [1, 4)) is certified against total().
 struct SphereBound {
   double dist2, reach2;  // as computed
-  /// The difference, the squares and sum3 make dist2 within 5u of its value, the subtraction
-  /// adds u of it: 8u leaves room for the bound's own rounding.
+  /// The difference, the squares and their sum (in any order) make dist2 within 5u of its value,
+  /// the subtraction adds u of it: 8u leaves room for the bound's own rounding.
   double distance() const { return 8 * fp::u * dist2; }
   /// The sum and the square make reach2 within 3u.
   double reach() const { return 8 * fp::u * reach2; }

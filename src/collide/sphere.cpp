@@ -15,8 +15,10 @@ bool within_reach(const Sphere& a, const Sphere& b, int exponent, double dist2, 
 }
 
 // Scaled by a power of two so that the largest of |d| and the reach lies in [1, 2): the squares
-// below neither underflow nor overflow, and the bound needs no absolute slack. (Exact, and the
-// same after permuting, flipping or scaling the inputs.) Out of line: the rare path.
+// below neither underflow nor overflow, and the bound needs no absolute slack. (Exact: the scaled
+// values are the given ones times 2^-e.) Out of line: the rare path. The squares are summed left
+// to right, as in test(): swapping the spheres, flipping an axis or scaling by a power of two
+// changes no rounding; permuting the axes changes the order, within the bound.
 template <class Records>
 [[gnu::noinline]] bool test_scaled(const Sphere& a, const Sphere& b, Records& records) {
   Vec3 d = a.center - b.center;
@@ -30,7 +32,7 @@ template <class Records>
   }
   // The rounding error of dist2 - reach2 (see bounds::SphereBound). (A square that underflows
   // errs by 2^-1075, far below the bound.)
-  if (!within_reach(a, b, e, fp::sum3(d.x * d.x, d.y * d.y, d.z * d.z), reach * reach, records)) return false;
+  if (!within_reach(a, b, e, d.x * d.x + d.y * d.y + d.z * d.z, reach * reach, records)) return false;
   // On the hit path only: inputs outside the contract give false.
   return finite(a.center) && finite(b.center) && fp::finite(a.radius) && fp::finite(b.radius) && a.radius >= 0 &&
          b.radius >= 0;
@@ -45,7 +47,7 @@ bool test(const Sphere& a, const Sphere& b, Records& records) {
   // whatever it rounds to), so these are the scaled test's values times 4^e exactly, and both
   // bounds' slack lies below half an ulp of the rest: the same decision, without scaling. (NaN
   // and overflow fail the range test and take the scaled path.)
-  const double dist2 = fp::sum3(d.x * d.x, d.y * d.y, d.z * d.z), reach2 = reach * reach;
+  const double dist2 = d.x * d.x + d.y * d.y + d.z * d.z, reach2 = reach * reach;
   const double sum = dist2 + reach2;
   if (!(sum >= 0x1p-900 && sum <= 0x1p1020)) return test_scaled(a, b, records);
   // In that range the squares are finite, so are both centres and both radii (an infinite

@@ -12,10 +12,10 @@
 //  - reordering a triangle's vertices changes which edges the tests compute and so their
 //    rounding (a tri_tri 9 ulps apart is a hit one way, a miss the other): the answers must be
 //    equal, or both right within the library's band by the exact reference;
-//  - permuting the axes, for obb_obb, tri_tri and the mesh queries (whose leaf test is tri_tri
-//    and whose OBB trees test their nodes with test_obb_obb): those tests sum three products left
-//    to right (their plain floating-point path), and a permutation changes that order and so the
-//    rounding, within the certified bound: equal, or both right within the band likewise;
+//  - permuting the axes, for sphere_sphere, obb_obb, tri_tri and the mesh queries (whose leaf
+//    test is tri_tri and whose OBB trees test their nodes with test_obb_obb): those tests sum three
+//    terms left to right (plain floating-point arithmetic), and a permutation changes that order
+//    and so the rounding, within the certified bound: equal, or both right within the band;
 //  - a first hit under reordered faces may be another pair: the same hit, and a pair of all
 //    the pairs of the reordered meshes;
 //  - the closest hit of a ray under reordered faces: the same hit and t, and the face renamed,
@@ -65,8 +65,8 @@ bool library_right(const Input& input, const exact::ExactRationalReference& exac
 bool another_right_answer(const Input& input, const Input& transformed, const Answer& before, const Answer& after,
                           Relation relation, const exact::ExactRationalReference& exact) {
   const QueryKind kind = kind_of(input);
-  const bool sums_in_order = kind == QueryKind::obb_obb || kind == QueryKind::tri_tri || kind == QueryKind::mesh_mesh ||
-                             kind == QueryKind::mesh_mesh_first;
+  const bool sums_in_order = kind == QueryKind::sphere_sphere || kind == QueryKind::obb_obb || kind == QueryKind::tri_tri ||
+                             kind == QueryKind::mesh_mesh || kind == QueryKind::mesh_mesh_first;
   if (relation == Relation::permute_vertices || (relation == Relation::permute_axes && sums_in_order)) {
     return library_right(input, exact) && library_right(transformed, exact);
   }
