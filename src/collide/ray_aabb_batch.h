@@ -41,7 +41,7 @@ inline bool hit_bit(std::span<const std::uint64_t> hits, std::size_t i) { return
 ///    with a NaN or infinite bound or lo > hi on an axis: no hit.
 /// hits must hold at least hit_words(boxes.size()) words (std::invalid_argument otherwise). The
 /// boxes are read by the kernel simd::selected() names (the best this processor runs unless one
-/// is forced): in blocks of 8 (AVX-512 F and DQ) or 4 (AVX2), the boxes left over one at a time,
+/// is forced): in blocks of 8 (AVX-512) or 4 (AVX2), the boxes left over one at a time,
 /// or all one at a time (scalar); one kernel source, the same IEEE double arithmetic in each.
 std::size_t test_ray_aabbs(const Ray& ray, const AabbSoa& boxes, std::span<std::uint64_t> hits);
 

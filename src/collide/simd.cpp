@@ -21,7 +21,8 @@ const std::array<bool, 3>& processor_runs() {
     std::array<bool, 3> r{};
     r[index_of(Kernel::scalar)] = true;
     r[index_of(Kernel::avx2)] = __builtin_cpu_supports("avx2");
-    r[index_of(Kernel::avx512)] = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq");
+    r[index_of(Kernel::avx512)] = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+                                  __builtin_cpu_supports("avx512vl");
     return r;
   }();
   return runs;
@@ -49,7 +50,7 @@ std::string_view features_needed(Kernel k) {
   switch (k) {
     case Kernel::scalar: return "none";
     case Kernel::avx2: return "AVX2";
-    case Kernel::avx512: return "AVX-512 F and DQ";
+    case Kernel::avx512: return "AVX-512 F, DQ and VL";
   }
   return "?";
 }

@@ -21,7 +21,7 @@ inline constexpr Kernel kAllKernels[] = {Kernel::scalar, Kernel::avx2, Kernel::a
 std::string_view to_string(Kernel k);
 /// The kernel with that name, if any.
 std::optional<Kernel> kernel_named(std::string_view name);
-/// The processor features a kernel needs, e.g. "AVX-512 F and DQ"; "none" for scalar.
+/// The processor features a kernel needs, e.g. "AVX-512 F, DQ and VL"; "none" for scalar.
 std::string_view features_needed(Kernel k);
 
 /// Whether this processor (and its operating system) runs the kernel, checked at run time.

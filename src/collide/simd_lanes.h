@@ -86,7 +86,7 @@ struct Avx2 {
 [[gnu::target("avx2")]] inline Avx2::M operator&(Avx2::M a, Avx2::M b) { return {_mm256_and_pd(a.m, b.m)}; }
 [[gnu::target("avx2")]] inline Avx2::M operator|(Avx2::M a, Avx2::M b) { return {_mm256_or_pd(a.m, b.m)}; }
 
-/// Eight lanes (AVX-512 F and DQ).
+/// Eight lanes (AVX-512 F and DQ; the kernel also takes VL, for the triples below).
 struct Avx512 {
   static constexpr int kWidth = 8;
   struct D {
