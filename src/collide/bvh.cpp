@@ -76,15 +76,18 @@ bool lexicographic_less(const Vec3& a, const Vec3& b) {
   return a.x != b.x ? a.x < b.x : (a.y != b.y ? a.y < b.y : a.z < b.z);
 }
 
-// Points that include every vertex of the convex hull of `points`, each once: the vertices of
-// fast_convex_hull, which leaves out only points certainly inside.
-std::vector<Vec3> hull_points_of(std::vector<Vec3> points) {
+// Appends to `out` points that include every vertex of the convex hull of `points`, each once:
+// the vertices of fast_convex_hull, which leaves out only points certainly inside (`points` is
+// sorted and its repeats dropped; `hull` is scratch).
+void append_hull_points(std::vector<Vec3>& points, ConvexHull& hull, std::vector<Vec3>& out) {
   std::sort(points.begin(), points.end(), lexicographic_less);
   points.erase(std::unique(points.begin(), points.end()), points.end());
-  if (points.size() <= 4) return points;
-  std::vector<Vec3> out;
-  for (std::uint32_t v : fast_convex_hull(points).vertices) out.push_back(points[v]);
-  return out;
+  if (points.size() <= 4) {
+    out.insert(out.end(), points.begin(), points.end());
+    return;
+  }
+  fast_convex_hull(points, hull);
+  for (std::uint32_t v : hull.vertices) out.push_back(points[v]);
 }
 
 // The hierarchy's arrays from a topology: the mesh's vertices, each slot's face, the nodes with
@@ -119,6 +122,7 @@ template <class BV>
 void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points) {
   using Traits = BoundingVolume<BV>;
   std::vector<Vec3> points;
+  ConvexHull hull;
   if (keep_hull_points) bvh.hull_points.range.resize(bvh.nodes.size());
   for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
     BvhNode<BV>& n = bvh.nodes[i];
@@ -136,10 +140,9 @@ void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points) {
         points.insert(points.end(), c.begin(), c.end());
       }
     }
-    const std::vector<Vec3> hull = hull_points_of(points);
-    bvh.hull_points.range[i] = {static_cast<std::uint32_t>(bvh.hull_points.points.size()),
-                                static_cast<std::uint32_t>(hull.size())};
-    bvh.hull_points.points.insert(bvh.hull_points.points.end(), hull.begin(), hull.end());
+    const auto first = static_cast<std::uint32_t>(bvh.hull_points.points.size());
+    append_hull_points(points, hull, bvh.hull_points.points);
+    bvh.hull_points.range[i] = {first, static_cast<std::uint32_t>(bvh.hull_points.points.size()) - first};
   }
   bvh.hull_points.points.shrink_to_fit();
   if (bvh.nodes.empty()) return;

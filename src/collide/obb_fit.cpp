@@ -105,7 +105,14 @@ std::optional<Mat3> triangle_axes(const Vec3& p, const Vec3& q, const Vec3& r) {
   return Mat3::from_columns(a0, a1, cross(a0, a1));
 }
 
-Obb fit_obb(std::span<const Vec3> points) { return fit_obb(obb_axes(points, convex_hull(points)), points); }
+Obb fit_obb(std::span<const Vec3> points) {
+  if (points.size() == 3) {
+    if (const std::optional<Mat3> axes = triangle_axes(points[0], points[1], points[2])) return fit_obb(*axes, points);
+  }
+  thread_local ConvexHull hull;
+  fast_convex_hull(points, hull);
+  return fit_obb(obb_axes(points, hull), points);
+}
 
 Obb fit_obb(const Mat3& axes, std::span<const Vec3> points) {
   Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY}, largest{0, 0, 0};

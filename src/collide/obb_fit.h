@@ -10,8 +10,9 @@
 namespace cc {
 
 /// The box of Gottschalk, Lin and Manocha (OBBTree, 1996): its axes are the eigenvectors of the
-/// covariance of the convex hull's surface (each hull triangle weighted by its area, Eigen's
-/// self-adjoint solver), its extents those of the points along the axes.
+/// covariance of the convex hull's surface (fast_convex_hull's; each hull triangle weighted by its
+/// area, Eigen's self-adjoint solver; three points: triangle_axes), its extents those of the
+/// points along the axes.
 ///  - Conservative: every point lies in the box in exact arithmetic. The half extents are
 ///    widened by 2^-44 of the points' magnitude (the sum over the coordinates of their largest
 ///    magnitude, at least every point's norm1), which covers the rounding of the projections
