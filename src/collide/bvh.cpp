@@ -1,6 +1,8 @@
 // The parts every build strategy shares: laying out the tree and fitting its volumes.
 #include "collide/bvh.h"
 
+#include <iterator>
+
 #include "collide/bvh_topology.h"
 #include "collide/convex_hull.h"
 
@@ -158,42 +160,49 @@ void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points) {
 // does not certify inside the hull of those it keeps, so a node's vertices all lie in the hull
 // of its candidates, and a box that holds the candidates holds them. In reverse pre-order a node
 // comes right after its left subtree, which came right after its right subtree: the children's
-// kept vertices are the last two sets on a stack, side by side.
+// kept vertices are the last two sets on a stack, side by side. Every set is kept in
+// lexicographic order, so a node's candidates are its children's sets merged (repeats dropped),
+// without a sort.
 void fit_obbs(Bvh<Obb>& bvh) {
-  std::vector<Vec3> stack, kept;
+  std::vector<Vec3> stack, candidates;
   std::vector<std::size_t> sizes;  // of the sets on the stack
+  std::vector<char> on_hull;       // per candidate
   ConvexHull h;
   for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
     BvhNode<Obb>& n = bvh.nodes[i];
-    std::size_t count = 0;
+    candidates.clear();
     if (n.leaf()) {
-      const std::size_t before = stack.size();
-      append_vertices(bvh, n, stack);
-      count = stack.size() - before;
+      append_vertices(bvh, n, candidates);
+      std::sort(candidates.begin(), candidates.end(), lexicographic_less);
     } else {
-      count = sizes.back();
+      const std::size_t second = sizes.back();
       sizes.pop_back();
-      count += sizes.back();
+      const std::size_t first = sizes.back();
       sizes.pop_back();
+      const auto end = stack.end(), middle = end - static_cast<std::ptrdiff_t>(second);
+      std::merge(middle - static_cast<std::ptrdiff_t>(first), middle, middle, end, std::back_inserter(candidates),
+                 lexicographic_less);
+      stack.resize(stack.size() - first - second);
     }
-    const std::span<Vec3> candidates = std::span(stack).last(count);
-    std::sort(candidates.begin(), candidates.end(), lexicographic_less);
-    const std::span<const Vec3> distinct =
-        candidates.first(static_cast<std::size_t>(std::unique(candidates.begin(), candidates.end()) - candidates.begin()));
-    kept.clear();
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    const std::span<const Vec3> distinct = candidates;
     const std::optional<Mat3> flat =
         n.leaf() && distinct.size() == 3 ? triangle_axes(distinct[0], distinct[1], distinct[2]) : std::nullopt;
+    std::size_t count = distinct.size();
     if (flat) {  // a triangle's hull: itself, every vertex kept
       n.bv = fit_obb(*flat, distinct);
-      kept.assign(distinct.begin(), distinct.end());
+      stack.insert(stack.end(), distinct.begin(), distinct.end());
     } else {
       fast_convex_hull(distinct, h);
       n.bv = fit_obb(obb_axes(distinct, h), distinct);
-      for (std::uint32_t v : h.vertices) kept.push_back(distinct[v]);
+      on_hull.assign(distinct.size(), 0);
+      for (std::uint32_t v : h.vertices) on_hull[v] = 1;
+      count = 0;
+      for (std::size_t v = 0; v < distinct.size(); ++v) {
+        if (on_hull[v]) stack.push_back(distinct[v]), ++count;  // in the candidates' order
+      }
     }
-    stack.resize(stack.size() - count);
-    stack.insert(stack.end(), kept.begin(), kept.end());
-    sizes.push_back(kept.size());
+    sizes.push_back(count);
     // Every point of the box (the vertices among them) has norm1 at most that of its center plus
     // its half extents times their axes' norm1.
     const Obb& b = n.bv;
