@@ -63,35 +63,9 @@ template <>
 struct BoundingVolume<Obb> {
   static std::string name() { return "OBB"; }
   static Obb fit(std::span<const Vec3> points) { return fit_obb(points); }
-  /// The box with the axes of the larger of the two that contains both: cheap, for the building
-  /// heuristics (the hierarchy's own boxes are fitted to the triangles). Along each axis u, a box
-  /// reaches u . center +- sum_j |u . axis_j| half_j; padded as fit_obb pads, with the largest
-  /// norm1 of a point of either box as the magnitude.
-  static Obb merge(const Obb& a, const Obb& b) {
-    const Mat3& axes = size(b) < size(a) ? a.axes : b.axes;
-    Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
-    double magnitude = 0;
-    for (const Obb* box : {&a, &b}) {
-      for (int i = 0; i < 3; ++i) {
-        const Vec3& u = axes.col[i];
-        const double c = dot(u, box->center);
-        const double r = fp::sum3(std::fabs(dot(u, box->axes.col[0])) * box->half.x,
-                                  std::fabs(dot(u, box->axes.col[1])) * box->half.y,
-                                  std::fabs(dot(u, box->axes.col[2])) * box->half.z);
-        lo[i] = std::min(lo[i], c - r), hi[i] = std::max(hi[i], c + r);
-      }
-      magnitude = std::max(magnitude, norm1(box->center) + fp::sum3(box->half.x * norm1(box->axes.col[0]),
-                                                                    box->half.y * norm1(box->axes.col[1]),
-                                                                    box->half.z * norm1(box->axes.col[2])));
-    }
-    Obb m;
-    m.axes = axes;
-    const Vec3 mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
-    m.center = axes * mid;
-    const double pad = 0x1p-44 * (magnitude + norm1(mid) + norm1(half)) + fp::subnormal_slack;
-    m.half = {half.x + pad, half.y + pad, half.z + pad};
-    return m;
-  }
+  /// merge_obbs: the box with the axes of the larger of the two that holds both; cheap, for
+  /// the building heuristics (the hierarchy's own boxes are fitted to the triangles).
+  static Obb merge(const Obb& a, const Obb& b) { return merge_obbs(a, b, size(b) < size(a) ? a.axes : b.axes); }
   static bool overlap(const Obb& a, const Obb& b) { return test_obb_obb(a, b); }
   static Mat3 axes(const Obb& b) { return b.axes; }
   static Vec3 center(const Obb& b) { return b.center; }

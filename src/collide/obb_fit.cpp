@@ -139,6 +139,31 @@ Obb fit_obb(const Mat3& axes, std::span<const Vec3> points) {
   return box;
 }
 
+Obb merge_obbs(const Obb& a, const Obb& b, const Mat3& axes) {
+  Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  double magnitude = 0;
+  for (const Obb* box : {&a, &b}) {
+    for (int i = 0; i < 3; ++i) {
+      const Vec3& u = axes.col[i];
+      const double c = in_order(u, box->center);
+      const double r = std::fabs(in_order(u, box->axes.col[0])) * box->half.x +
+                       std::fabs(in_order(u, box->axes.col[1])) * box->half.y +
+                       std::fabs(in_order(u, box->axes.col[2])) * box->half.z;
+      lo[i] = std::min(lo[i], c - r), hi[i] = std::max(hi[i], c + r);
+    }
+    const Vec3 reach = box->half.x * abs(box->axes.col[0]) + box->half.y * abs(box->axes.col[1]) +
+                       box->half.z * abs(box->axes.col[2]);
+    magnitude = std::max(magnitude, in_order(abs(box->center) + reach, {1, 1, 1}));
+  }
+  Obb m;
+  m.axes = axes;
+  const Vec3 mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+  m.center = axes * mid;
+  const double pad = 0x1p-44 * (magnitude + norm1(mid) + norm1(half)) + fp::subnormal_slack;
+  m.half = {half.x + pad, half.y + pad, half.z + pad};
+  return m;
+}
+
 std::array<Vec3, 8> corners(const Obb& box) {
   std::array<Vec3, 8> out;
   for (int i = 0; i < 8; ++i) {

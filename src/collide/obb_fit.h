@@ -43,6 +43,11 @@ std::optional<Mat3> triangle_axes(const Vec3& p, const Vec3& q, const Vec3& r);
 /// then the middle one's: the identity for the zero matrix or when no eigenvectors are found.
 Mat3 principal_axes(const std::array<double, 6>& symmetric);
 
+/// A box with the given axes that holds both boxes (each box's points, in exact arithmetic): along
+/// each axis u a box reaches u . center +- sum_j |u . axis_j| half_j, and the extents are padded
+/// as fit_obb pads them, with the largest norm1 of a point of either box as the magnitude.
+Obb merge_obbs(const Obb& a, const Obb& b, const Mat3& axes);
+
 /// The 8 corners of the box: center +- half_0 axis_0 +- half_1 axis_1 +- half_2 axis_2, rounded.
 std::array<Vec3, 8> corners(const Obb& box);
 
