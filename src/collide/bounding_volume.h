@@ -63,15 +63,9 @@ template <>
 struct BoundingVolume<Obb> {
   static std::string name() { return "OBB"; }
   static Obb fit(std::span<const Vec3> points) { return fit_obb(points); }
-  /// The box with the axes of the larger of the two that contains the corners of both: cheap,
-  /// for the building heuristics (the hierarchy's own boxes are fitted to the triangles).
-  static Obb merge(const Obb& a, const Obb& b) {
-    std::array<Vec3, 16> points;
-    const auto ca = corners(a), cb = corners(b);
-    std::copy(ca.begin(), ca.end(), points.begin());
-    std::copy(cb.begin(), cb.end(), points.begin() + 8);
-    return fit_obb(size(b) < size(a) ? a.axes : b.axes, points);
-  }
+  /// merge_obbs: the box with the axes of the larger of the two that holds both; cheap, for
+  /// the building heuristics (the hierarchy's own boxes are fitted to the triangles).
+  static Obb merge(const Obb& a, const Obb& b) { return merge_obbs(a, b, size(b) < size(a) ? a.axes : b.axes); }
   static bool overlap(const Obb& a, const Obb& b) { return test_obb_obb(a, b); }
   static Mat3 axes(const Obb& b) { return b.axes; }
   static Vec3 center(const Obb& b) { return b.center; }

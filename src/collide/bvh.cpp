@@ -1,6 +1,8 @@
 // The parts every build strategy shares: laying out the tree and fitting its volumes.
 #include "collide/bvh.h"
 
+#include <iterator>
+
 #include "collide/bvh_topology.h"
 #include "collide/convex_hull.h"
 
@@ -76,15 +78,18 @@ bool lexicographic_less(const Vec3& a, const Vec3& b) {
   return a.x != b.x ? a.x < b.x : (a.y != b.y ? a.y < b.y : a.z < b.z);
 }
 
-// Points that include every vertex of the convex hull of `points`, each once: the vertices of
-// fast_convex_hull, which leaves out only points certainly inside.
-std::vector<Vec3> hull_points_of(std::vector<Vec3> points) {
+// Appends to `out` points that include every vertex of the convex hull of `points`, each once:
+// the vertices of fast_convex_hull, which leaves out only points certainly inside (`points` is
+// sorted and its repeats dropped; `hull` is scratch).
+void append_hull_points(std::vector<Vec3>& points, ConvexHull& hull, std::vector<Vec3>& out) {
   std::sort(points.begin(), points.end(), lexicographic_less);
   points.erase(std::unique(points.begin(), points.end()), points.end());
-  if (points.size() <= 4) return points;
-  std::vector<Vec3> out;
-  for (std::uint32_t v : fast_convex_hull(points).vertices) out.push_back(points[v]);
-  return out;
+  if (points.size() <= 4) {
+    out.insert(out.end(), points.begin(), points.end());
+    return;
+  }
+  fast_convex_hull(points, hull);
+  for (std::uint32_t v : hull.vertices) out.push_back(points[v]);
 }
 
 // The hierarchy's arrays from a topology: the mesh's vertices, each slot's face, the nodes with
@@ -119,6 +124,7 @@ template <class BV>
 void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points) {
   using Traits = BoundingVolume<BV>;
   std::vector<Vec3> points;
+  ConvexHull hull;
   if (keep_hull_points) bvh.hull_points.range.resize(bvh.nodes.size());
   for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
     BvhNode<BV>& n = bvh.nodes[i];
@@ -136,10 +142,9 @@ void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points) {
         points.insert(points.end(), c.begin(), c.end());
       }
     }
-    const std::vector<Vec3> hull = hull_points_of(points);
-    bvh.hull_points.range[i] = {static_cast<std::uint32_t>(bvh.hull_points.points.size()),
-                                static_cast<std::uint32_t>(hull.size())};
-    bvh.hull_points.points.insert(bvh.hull_points.points.end(), hull.begin(), hull.end());
+    const auto first = static_cast<std::uint32_t>(bvh.hull_points.points.size());
+    append_hull_points(points, hull, bvh.hull_points.points);
+    bvh.hull_points.range[i] = {first, static_cast<std::uint32_t>(bvh.hull_points.points.size()) - first};
   }
   bvh.hull_points.points.shrink_to_fit();
   if (bvh.nodes.empty()) return;
@@ -155,42 +160,49 @@ void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points) {
 // does not certify inside the hull of those it keeps, so a node's vertices all lie in the hull
 // of its candidates, and a box that holds the candidates holds them. In reverse pre-order a node
 // comes right after its left subtree, which came right after its right subtree: the children's
-// kept vertices are the last two sets on a stack, side by side.
+// kept vertices are the last two sets on a stack, side by side. Every set is kept in
+// lexicographic order, so a node's candidates are its children's sets merged (repeats dropped),
+// without a sort.
 void fit_obbs(Bvh<Obb>& bvh) {
-  std::vector<Vec3> stack, kept;
+  std::vector<Vec3> stack, candidates;
   std::vector<std::size_t> sizes;  // of the sets on the stack
+  std::vector<char> on_hull;       // per candidate
   ConvexHull h;
   for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
     BvhNode<Obb>& n = bvh.nodes[i];
-    std::size_t count = 0;
+    candidates.clear();
     if (n.leaf()) {
-      const std::size_t before = stack.size();
-      append_vertices(bvh, n, stack);
-      count = stack.size() - before;
+      append_vertices(bvh, n, candidates);
+      std::sort(candidates.begin(), candidates.end(), lexicographic_less);
     } else {
-      count = sizes.back();
+      const std::size_t second = sizes.back();
       sizes.pop_back();
-      count += sizes.back();
+      const std::size_t first = sizes.back();
       sizes.pop_back();
+      const auto end = stack.end(), middle = end - static_cast<std::ptrdiff_t>(second);
+      std::merge(middle - static_cast<std::ptrdiff_t>(first), middle, middle, end, std::back_inserter(candidates),
+                 lexicographic_less);
+      stack.resize(stack.size() - first - second);
     }
-    const std::span<Vec3> candidates = std::span(stack).last(count);
-    std::sort(candidates.begin(), candidates.end(), lexicographic_less);
-    const std::span<const Vec3> distinct =
-        candidates.first(static_cast<std::size_t>(std::unique(candidates.begin(), candidates.end()) - candidates.begin()));
-    kept.clear();
+    candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end());
+    const std::span<const Vec3> distinct = candidates;
     const std::optional<Mat3> flat =
         n.leaf() && distinct.size() == 3 ? triangle_axes(distinct[0], distinct[1], distinct[2]) : std::nullopt;
+    std::size_t count = distinct.size();
     if (flat) {  // a triangle's hull: itself, every vertex kept
       n.bv = fit_obb(*flat, distinct);
-      kept.assign(distinct.begin(), distinct.end());
+      stack.insert(stack.end(), distinct.begin(), distinct.end());
     } else {
       fast_convex_hull(distinct, h);
       n.bv = fit_obb(obb_axes(distinct, h), distinct);
-      for (std::uint32_t v : h.vertices) kept.push_back(distinct[v]);
+      on_hull.assign(distinct.size(), 0);
+      for (std::uint32_t v : h.vertices) on_hull[v] = 1;
+      count = 0;
+      for (std::size_t v = 0; v < distinct.size(); ++v) {
+        if (on_hull[v]) stack.push_back(distinct[v]), ++count;  // in the candidates' order
+      }
     }
-    stack.resize(stack.size() - count);
-    stack.insert(stack.end(), kept.begin(), kept.end());
-    sizes.push_back(kept.size());
+    sizes.push_back(count);
     // Every point of the box (the vertices among them) has norm1 at most that of its center plus
     // its half extents times their axes' norm1.
     const Obb& b = n.bv;

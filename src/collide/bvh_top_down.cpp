@@ -31,7 +31,7 @@ struct Extent {
   Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
   double midpoint(int k) const { return 0.5 * (lo[k] + hi[k]); }
   BvSize size() const { return box_size(0.5 * (hi - lo)); }
-  void add(const Vec3& p) {
+  [[gnu::always_inline]] void add(const Vec3& p) {
     const Vec3 s{projection(axes.col[0], p), projection(axes.col[1], p), projection(axes.col[2], p)};
     for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], s[k]), hi[k] = std::max(hi[k], s[k]);
   }

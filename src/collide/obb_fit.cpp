@@ -12,6 +12,11 @@ using Matrix = Eigen::Matrix3d;
 // The symmetric 3x3 matrix with entries xx, yy, zz, xy, yz, zx.
 using Symmetric = std::array<double, 6>;
 
+// x . y summed in order. The axes are a fitting heuristic and the pad covers the projections'
+// rounding in any order, so neither needs fp::sum3's symmetry in the coordinates (the
+// projections and the areas are most of the fit's arithmetic).
+double in_order(const Vec3& x, const Vec3& y) { return x.x * y.x + x.y * y.y + x.z * y.z; }
+
 void add_outer(Symmetric& m, double w, const Vec3& v) {
   m[0] += w * v.x * v.x, m[1] += w * v.y * v.y, m[2] += w * v.z * v.z;
   m[3] += w * v.x * v.y, m[4] += w * v.y * v.z, m[5] += w * v.z * v.x;
@@ -32,7 +37,7 @@ Symmetric covariance(std::span<const Vec3> points, const ConvexHull& hull, const
   for (const auto& t : hull.triangles) {
     const Vec3 p = points[t[0]] - origin, q = points[t[1]] - origin, r = points[t[2]] - origin;
     const Vec3 n = cross(q - p, r - p);
-    const double a = 0.5 * std::sqrt(dot(n, n));
+    const double a = 0.5 * std::sqrt(in_order(n, n));
     const Vec3 sum = p + q + r;
     add_outer(second, a / 12, sum);
     for (std::uint32_t v : t) weight[v] += a;
@@ -91,7 +96,7 @@ std::optional<Mat3> triangle_axes(const Vec3& p, const Vec3& q, const Vec3& r) {
   const Vec3 c = (1.0 / 3) * (p + q + r);
   double xx = 0, xy = 0, yy = 0;
   for (const Vec3& w : {p, q, r}) {
-    const double x = dot(w - c, u), y = dot(w - c, v);
+    const double x = in_order(w - c, u), y = in_order(w - c, v);
     xx += x * x, xy += x * y, yy += y * y;
   }
   // The eigenvector of the larger eigenvalue l: (l - yy, xy) or (xy, l - xx), whichever is longer.
@@ -105,12 +110,19 @@ std::optional<Mat3> triangle_axes(const Vec3& p, const Vec3& q, const Vec3& r) {
   return Mat3::from_columns(a0, a1, cross(a0, a1));
 }
 
-Obb fit_obb(std::span<const Vec3> points) { return fit_obb(obb_axes(points, convex_hull(points)), points); }
+Obb fit_obb(std::span<const Vec3> points) {
+  if (points.size() == 3) {
+    if (const std::optional<Mat3> axes = triangle_axes(points[0], points[1], points[2])) return fit_obb(*axes, points);
+  }
+  thread_local ConvexHull hull;
+  fast_convex_hull(points, hull);
+  return fit_obb(obb_axes(points, hull), points);
+}
 
 Obb fit_obb(const Mat3& axes, std::span<const Vec3> points) {
   Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY}, largest{0, 0, 0};
   for (const Vec3& p : points) {
-    const Vec3 s = transpose_times(axes, p);
+    const Vec3 s{in_order(axes.col[0], p), in_order(axes.col[1], p), in_order(axes.col[2], p)};
     for (int i = 0; i < 3; ++i) {
       lo[i] = std::min(lo[i], s[i]), hi[i] = std::max(hi[i], s[i]);
       largest[i] = std::max(largest[i], std::fabs(p[i]));
@@ -125,6 +137,31 @@ Obb fit_obb(const Mat3& axes, std::span<const Vec3> points) {
   const double pad = 0x1p-44 * (magnitude + norm1(mid) + norm1(half)) + fp::subnormal_slack;
   box.half = {half.x + pad, half.y + pad, half.z + pad};
   return box;
+}
+
+Obb merge_obbs(const Obb& a, const Obb& b, const Mat3& axes) {
+  Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  double magnitude = 0;
+  for (const Obb* box : {&a, &b}) {
+    for (int i = 0; i < 3; ++i) {
+      const Vec3& u = axes.col[i];
+      const double c = in_order(u, box->center);
+      const double r = std::fabs(in_order(u, box->axes.col[0])) * box->half.x +
+                       std::fabs(in_order(u, box->axes.col[1])) * box->half.y +
+                       std::fabs(in_order(u, box->axes.col[2])) * box->half.z;
+      lo[i] = std::min(lo[i], c - r), hi[i] = std::max(hi[i], c + r);
+    }
+    const Vec3 reach = box->half.x * abs(box->axes.col[0]) + box->half.y * abs(box->axes.col[1]) +
+                       box->half.z * abs(box->axes.col[2]);
+    magnitude = std::max(magnitude, in_order(abs(box->center) + reach, {1, 1, 1}));
+  }
+  Obb m;
+  m.axes = axes;
+  const Vec3 mid = 0.5 * (lo + hi), half = 0.5 * (hi - lo);
+  m.center = axes * mid;
+  const double pad = 0x1p-44 * (magnitude + norm1(mid) + norm1(half)) + fp::subnormal_slack;
+  m.half = {half.x + pad, half.y + pad, half.z + pad};
+  return m;
 }
 
 std::array<Vec3, 8> corners(const Obb& box) {

@@ -10,8 +10,9 @@
 namespace cc {
 
 /// The box of Gottschalk, Lin and Manocha (OBBTree, 1996): its axes are the eigenvectors of the
-/// covariance of the convex hull's surface (each hull triangle weighted by its area, Eigen's
-/// self-adjoint solver), its extents those of the points along the axes.
+/// covariance of the convex hull's surface (fast_convex_hull's; each hull triangle weighted by its
+/// area, Eigen's self-adjoint solver; three points: triangle_axes), its extents those of the
+/// points along the axes.
 ///  - Conservative: every point lies in the box in exact arithmetic. The half extents are
 ///    widened by 2^-44 of the points' magnitude (the sum over the coordinates of their largest
 ///    magnitude, at least every point's norm1), which covers the rounding of the projections
@@ -41,6 +42,11 @@ std::optional<Mat3> triangle_axes(const Vec3& p, const Vec3& q, const Vec3& r);
 /// matrix with entries xx, yy, zz, xy, yz, zx (a covariance), the largest eigenvalue's first,
 /// then the middle one's: the identity for the zero matrix or when no eigenvectors are found.
 Mat3 principal_axes(const std::array<double, 6>& symmetric);
+
+/// A box with the given axes that holds both boxes (each box's points, in exact arithmetic): along
+/// each axis u a box reaches u . center +- sum_j |u . axis_j| half_j, and the extents are padded
+/// as fit_obb pads them, with the largest norm1 of a point of either box as the magnitude.
+Obb merge_obbs(const Obb& a, const Obb& b, const Mat3& axes);
 
 /// The 8 corners of the box: center +- half_0 axis_0 +- half_1 axis_1 +- half_2 axis_2, rounded.
 std::array<Vec3, 8> corners(const Obb& box);

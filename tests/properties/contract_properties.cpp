@@ -4,7 +4,7 @@
 //    the 26-DOP, the points' differences and the normals of their planes) are reached at its
 //    vertices, so the extreme points are among them; coincident points give one vertex;
 //  - fit_obb: every point lies in the box, whose axes are right-handed and orthonormal to
-//    within the OBB contract's tolerance;
+//    within the OBB contract's tolerance; the merge of two boxes holds both;
 //  - kdop_cone, support_bound: the cone's nonnegative combination is its direction to within
 //    2^-46 of it, and the bound is at least every point's projection (up to its own rounding);
 //  - rotation_radius, bounding_cube, fitted_box: the radius is no less than any vertex's
@@ -17,6 +17,7 @@
 
 #include <algorithm>
 
+#include "collide/bounding_volume.h"
 #include "collide/convex_hull.h"
 #include "collide/kdop.h"
 #include "collide/kdop_support.h"
@@ -193,6 +194,31 @@ TEST(Contracts, AFittedObbHoldsItsPointsWithOrthonormalAxes) {
       }
     }
     if (sgn(dot(cross(q(box.axes.col[0]), q(box.axes.col[1])), q(box.axes.col[2]))) <= 0) RC_FAIL("the axes are left-handed: " + text(points));
+  });
+  EXPECT_TRUE(passed);
+  met.expect_each_met(property);
+}
+
+// The merge of two fitted boxes (the building heuristics' volume of a union) holds both boxes:
+// their exact corners, center +- half_0 axis_0 +- half_1 axis_1 +- half_2 axis_2, and so (the
+// merged box being an intersection of slabs) every point of either.
+TEST(Contracts, AnObbMergeHoldsBothBoxes) {
+  Layouts met;
+  const std::string property = "the OBB merge holds both boxes";
+  const bool passed = check_property_with_choices(property, 800, [&](harness::Choices& c) {
+    harness::ValueSource values(c, {.max_exponent = 8, .extreme = true, .huge = true});
+    const std::vector<Vec3> first = draw_points(values, kLayouts[c.draw(4)]);
+    const std::vector<Vec3> second = c.chance(20) ? first : draw_points(values, kLayouts[c.draw(4)]);
+    ++met.count[static_cast<int>(layout_of(second))];
+    const Obb a = fit_obb(first), b = fit_obb(second);
+    const Obb merged = BoundingVolume<Obb>::merge(a, b);
+    for (const Obb* box : {&a, &b}) {
+      for (int i = 0; i < 8; ++i) {
+        QVec3 corner = q(box->center);
+        for (int k = 0; k < 3; ++k) corner = corner + Rational((i >> k & 1) ? box->half[k] : -box->half[k]) * q(box->axes.col[k]);
+        if (!holds(merged, corner)) RC_FAIL("a corner of a box lies outside the merge: " + text(first) + " and " + text(second));
+      }
+    }
   });
   EXPECT_TRUE(passed);
   met.expect_each_met(property);
