@@ -4,9 +4,9 @@
 #include <limits>
 
 #include "fuzz/fuzz_target.h"
-#include "harness/choices.h"
-#include "harness/fuzz_record.h"
-#include "harness/touch.h"
+#include "harness/generation/choices.h"
+#include "harness/formats/fuzz_record.h"
+#include "harness/generation/touch.h"
 
 extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t max_size);
 

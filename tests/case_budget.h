@@ -1,7 +1,7 @@
 // How many generated cases a test runs per query kind.
 #pragma once
 
-#include "harness/query_kind.h"
+#include "harness/model/query_kind.h"
 
 namespace cc::test {
 

@@ -14,7 +14,7 @@
 #include <optional>
 #include <utility>
 
-#include "harness/input.h"
+#include "harness/model/input.h"
 #include "oracle/exact/rational.h"
 
 namespace cc::exact {

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "harness/input.h"
+#include "harness/model/input.h"
 #include "oracle/exact/rational.h"
 
 namespace cc::exact {

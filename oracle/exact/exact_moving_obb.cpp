@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "harness/bands.h"
+#include "harness/judging/bands.h"
 #include "oracle/exact/domain.h"
 #include "oracle/exact/exact_sweep.h"
 #include "oracle/exact/judges.h"

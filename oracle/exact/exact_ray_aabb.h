@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/input.h"
+#include "harness/model/input.h"
 #include "oracle/exact/rational.h"
 
 namespace cc::exact {

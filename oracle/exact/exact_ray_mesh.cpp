@@ -6,7 +6,7 @@
 #include <cmath>
 #include <map>
 
-#include "harness/bands.h"
+#include "harness/judging/bands.h"
 #include "oracle/exact/convex_sat.h"
 #include "oracle/exact/domain.h"
 #include "oracle/exact/exact_meshes.h"

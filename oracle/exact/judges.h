@@ -1,8 +1,8 @@
 // The exact reference's verdict for each kind of query (one file per kind).
 #pragma once
 
-#include "harness/input.h"
-#include "harness/oracle.h"
+#include "harness/model/input.h"
+#include "harness/model/oracle.h"
 
 namespace cc::exact {
 

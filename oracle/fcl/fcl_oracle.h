@@ -1,7 +1,7 @@
 // Second opinions from FCL 0.7 and libccd, as the harness sees them. All of FCL lives here.
 #pragma once
 
-#include "harness/oracle.h"
+#include "harness/model/oracle.h"
 
 namespace cc::fcl_oracle {
 

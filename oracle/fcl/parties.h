@@ -1,8 +1,8 @@
 // The individual FCL and libccd adapters (internal to oracle/fcl).
 #pragma once
 
-#include "harness/input.h"
-#include "harness/answer.h"
+#include "harness/model/input.h"
+#include "harness/model/answer.h"
 
 namespace cc::fcl_oracle {
 

@@ -1,8 +1,8 @@
 // crosscheck bands: the tolerance band table.
 #include <cstdio>
 
-#include "harness/bands.h"
-#include "harness/number_text.h"
+#include "harness/judging/bands.h"
+#include "harness/formats/number_text.h"
 #include "tool/commands.h"
 
 namespace cc::tool {

@@ -1,13 +1,13 @@
 // crosscheck bounds: how close the library's actual rounding comes to each term of its certified
-// error bounds over generated cases (harness/bound_coverage.h).
+// error bounds over generated cases (harness/judging/bound_coverage.h).
 #include <cstdio>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
 
-#include "harness/bound_coverage.h"
-#include "harness/generate.h"
-#include "harness/mesh_files.h"
+#include "harness/judging/bound_coverage.h"
+#include "harness/generation/generate.h"
+#include "harness/formats/mesh_files.h"
 #include "oracle/exact/exact_reference.h"
 #include "tool/commands.h"
 

@@ -8,13 +8,13 @@
 #include <cstdio>
 #include <fstream>
 
-#include "harness/classify.h"
-#include "harness/input_json.h"
-#include "harness/median.h"
-#include "harness/mesh_collide.h"
-#include "harness/mesh_files.h"
-#include "harness/mesh_poses.h"
-#include "harness/choices.h"
+#include "harness/judging/classify.h"
+#include "harness/formats/input_json.h"
+#include "harness/judging/median.h"
+#include "harness/model/mesh_collide.h"
+#include "harness/formats/mesh_files.h"
+#include "harness/generation/mesh_poses.h"
+#include "harness/generation/choices.h"
 #include "oracle/exact/exact_meshes.h"
 #include "oracle/fcl/parties.h"
 #include "tool/commands.h"

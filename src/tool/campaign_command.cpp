@@ -13,12 +13,12 @@
 #include <chrono>
 #include <csignal>
 
-#include "harness/campaign.h"
-#include "harness/median.h"
-#include "harness/mesh_files.h"
-#include "harness/input_json.h"
-#include "harness/shrink.h"
-#include "harness/signature.h"
+#include "harness/processes/campaign.h"
+#include "harness/judging/median.h"
+#include "harness/formats/mesh_files.h"
+#include "harness/formats/input_json.h"
+#include "harness/shrinking/shrink.h"
+#include "harness/shrinking/signature.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
 #include "tool/oracles.h"

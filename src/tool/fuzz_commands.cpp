@@ -9,10 +9,10 @@
 #include <fstream>
 #include <iterator>
 
-#include "harness/campaign.h"
-#include "harness/fuzz_record.h"
-#include "harness/library.h"
-#include "harness/signature.h"
+#include "harness/processes/campaign.h"
+#include "harness/formats/fuzz_record.h"
+#include "harness/model/library.h"
+#include "harness/shrinking/signature.h"
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"

@@ -1,0 +1,88 @@
+// Generator for sphere_sphere: balls touching by construction (centres apart by a Pythagorean
+// quadruple times a scale, radii summing exactly to its length), a few ULPs from touching,
+// concentric, and points (radius 0); out of contract, a negative radius on either. The scale is
+// a power of two (every square exact too) or a generic double whose squares round, either way
+// of each other, while the offset, the reach and the radii stay exact.
+#include <cmath>
+
+#include "harness/generation/generate_detail.h"
+
+namespace cc::harness::detail {
+namespace {
+
+struct Quadruple {
+  int a, b, c, d;  // a^2 + b^2 + c^2 = d^2
+};
+constexpr Quadruple kQuadruples[] = {{0, 0, 1, 1}, {0, 3, 4, 5}, {1, 2, 2, 3},  {2, 3, 6, 7},
+                                     {1, 4, 8, 9}, {2, 6, 9, 11}, {0, 5, 12, 13}, {4, 4, 7, 9}};
+
+Sphere draw_sphere(ValueSource& v, const GenerateOptions& options) {
+  Sphere s{v.point(), v.length()};
+  if (options.out_of_contract && v.choices().chance(10)) s.radius = -s.radius - 1;
+  return s;
+}
+
+// Two balls at an exact margin in the regimes of test_sphere_sphere's bound: far from the origin
+// compared with their size, radii up to 2^40 apart, points; b slid from a's centre along any
+// direction.
+SphereSphereInput balls_at_the_bound(ValueSource& v, const GenerateOptions& options) {
+  Choices& c = v.choices();
+  const double size = draw_size(v);
+  const Sphere a{v.point() + draw_far_offset(v, size), c.chance(15) ? 0.0 : size};
+  const double rb = c.chance(15) ? 0.0 : std::ldexp(draw_size(v), v.small_int(40)) * (c.chance(50) ? 1.0 : size);
+  const Vec3 w = draw_direction(v);
+  const double length = std::sqrt(dot(w, w));
+  const auto placed = [&a, &w, rb](double s) { return SphereSphereInput{a, {a.center + s * w, rb}}; };
+  const double contact = (a.radius + rb) / length;
+  const double s = place_at([&placed](double t) -> Input { return placed(t); }, 0, 2 * contact + 1 / length,
+                            draw_margin_target(c), options, contact);
+  return placed(s);
+}
+
+}  // namespace
+
+SphereSphereInput generate_sphere_sphere(ValueSource& v, const GenerateOptions& options) {
+  if (v.choices().chance(35)) return balls_at_the_bound(v, options);
+  SphereSphereInput in;
+  in.a = draw_sphere(v, options);
+  const auto mode = v.choices().draw(4);
+  switch (mode) {
+    case 0: in.b = draw_sphere(v, options); break;
+    case 1:
+    case 2: {  // touching by construction (case 2: then moved a few ULPs)
+      const Quadruple q = kQuadruples[v.choices().draw(std::size(kQuadruples))];
+      Vec3 offset{static_cast<double>(q.a), static_cast<double>(q.b), static_cast<double>(q.c)};
+      for (int i = 2; i > 0; --i) std::swap(offset[i], offset[static_cast<int>(v.choices().draw(i + 1))]);
+      for (int k = 0; k < 3; ++k) offset[k] *= v.choices().chance(50) ? -1 : 1;
+      double scale = std::ldexp(1.0, v.small_int(8));
+      if (v.choices().chance(50)) {
+        // A generic scale of 46 bits: times the quadruple's numbers (4 bits) and the centres'
+        // grid (6 bits) it stays exact, its squares do not.
+        scale *= 1 + static_cast<double>(v.choices().draw(std::uint64_t{1} << 45)) * 0x1p-45;
+        in.a.center = scale * Vec3{static_cast<double>(v.small_int(32)), static_cast<double>(v.small_int(32)),
+                                   static_cast<double>(v.small_int(32))};
+      }
+      const double reach = scale * q.d;
+      in.a.radius = reach * static_cast<double>(v.choices().draw(5)) / 4;  // 0, 1/4, ..., 1 of the reach
+      if (v.choices().chance(50)) {
+        // A generic radius in [reach/2, reach]: the other, reach minus it, is exact (Sterbenz).
+        in.a.radius = reach * (0.5 + static_cast<double>(v.choices().draw(std::uint64_t{1} << 40)) * 0x1p-41);
+      }
+      in.b.center = in.a.center + scale * offset;
+      in.b.radius = reach - in.a.radius;
+      if (mode == 2) in.b.radius = std::fabs(v.nudge(in.b.radius));
+      break;
+    }
+    default:  // concentric, or the same point
+      in.b = {in.a.center, v.choices().chance(50) ? v.length() : in.a.radius};
+  }
+  // Out of contract also where the balls touch or nest by construction: a negative radius on
+  // either ball, where a test that checks the sign of only one radius answers true.
+  if (options.out_of_contract && v.choices().chance(30)) {
+    Sphere& s = v.choices().chance(50) ? in.a : in.b;
+    s.radius = s.radius > 0 ? -s.radius : -1.0;
+  }
+  return in;
+}
+
+}  // namespace cc::harness::detail
