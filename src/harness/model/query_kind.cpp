@@ -2,23 +2,18 @@
 
 namespace cc::harness {
 
+namespace {
+
+#define CC_QUERY_KIND_NAME(name, Name) #name,
+constexpr std::string_view kNames[] = {CC_FOR_EACH_QUERY_KIND(CC_QUERY_KIND_NAME)};
+#undef CC_QUERY_KIND_NAME
+static_assert(std::size(kNames) == kAllQueryKinds.size());
+
+}  // namespace
+
 std::string_view name(QueryKind kind) {
-  switch (kind) {
-    case QueryKind::ray_aabb: return "ray_aabb";
-    case QueryKind::sphere_sphere: return "sphere_sphere";
-    case QueryKind::aabb_aabb: return "aabb_aabb";
-    case QueryKind::kdop_kdop: return "kdop_kdop";
-    case QueryKind::obb_obb: return "obb_obb";
-    case QueryKind::tri_aabb: return "tri_aabb";
-    case QueryKind::tri_obb: return "tri_obb";
-    case QueryKind::tri_tri: return "tri_tri";
-    case QueryKind::mesh_mesh: return "mesh_mesh";
-    case QueryKind::mesh_mesh_first: return "mesh_mesh_first";
-    case QueryKind::broadphase: return "broadphase";
-    case QueryKind::ray_mesh: return "ray_mesh";
-    case QueryKind::moving_obb: return "moving_obb";
-  }
-  return "?";
+  const auto i = static_cast<std::size_t>(kind);
+  return i < std::size(kNames) ? kNames[i] : "?";
 }
 
 std::optional<QueryKind> query_kind_named(std::string_view text) {

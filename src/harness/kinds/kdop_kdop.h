@@ -1,0 +1,17 @@
+// kdop_kdop: two point sets, each fitted with a k-DOP (fit_kdop<k>), then test_kdop_kdop.
+#pragma once
+
+#include <vector>
+
+#include "collide/vec3.h"
+
+namespace cc::harness {
+
+/// Two point sets, each fitted with a k-DOP; k is one of 6, 14, 16, 18, 24, 26.
+struct KdopKdopInput {
+  int k = 18;
+  std::vector<Vec3> a, b;
+  friend bool operator==(const KdopKdopInput&, const KdopKdopInput&) = default;
+};
+
+}  // namespace cc::harness

@@ -1,0 +1,18 @@
+// What the kinds on two placed meshes share (mesh_mesh: every colliding pair of triangles;
+// mesh_mesh_first: the first one found): their input, the same for both but for what is asked.
+#pragma once
+
+#include "harness/model/mesh_query.h"
+
+namespace cc::harness {
+
+/// Mesh a placed by pose_a against mesh b placed by pose_b, asked for every colliding pair of
+/// triangles (all_pairs) or for one (first_hit).
+template <CollisionMode Mode>
+struct TwoMeshesInput {
+  static constexpr CollisionMode mode = Mode;
+  MeshPair meshes;
+  friend bool operator==(const TwoMeshesInput&, const TwoMeshesInput&) = default;
+};
+
+}  // namespace cc::harness
