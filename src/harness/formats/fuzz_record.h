@@ -1,27 +1,29 @@
 // The fixed-layout binary record a fuzz target reads from the front of its input, so that a
 // dictionary entry and a hex dump line up with fields:
 //
-//   byte 0      tag: bits 0-3 the query kind's number (informative), bits 4-7 flags
-//   (kdop_kdop) byte 1: k (index into 6 14 16 18 24 26, modulo 6), byte 2: points in a (1 + b % 8),
-//               byte 3: points in b (1 + b % 8)
-//   (mesh_*)    byte 1: triangles of a (1 + b % 4), byte 2: triangles of b (1 + b % 4), byte 3: the
-//               rotation of b's pose (table_rotation(b % 32); a's pose is the identity), byte 4:
-//               the library's hierarchy (bits 0-2 bv type, 3-4 build strategy % 3, 5 exact
-//               update, 6 larger-first descent)
-//   (broadphase) byte 1: boxes (1 + b % 8), byte 2: frames (1 + b % 4), bytes 3-6: per frame a
-//               mask of the boxes present (bit i: box i)
-//   (ray_mesh)  byte 1: triangles (1 + b % 4), byte 2: the library's hierarchy (as mesh_*)
-//   then        little-endian IEEE doubles, in the order of the kind's fields (below)
+//   byte 0      the tag: bits 0-3 the query kind's number (informative), bits 4-7 flags
+//   then        the header bytes of the kind's fields, in the order of its fields
+//   then        little-endian IEEE doubles: the values of its fields, in the same order
 //
-// Fields: ray_aabb origin, dir, tmin, tmax, lo, hi (flag bit 4: tmin = -inf, bit 5: tmax = +inf);
-// sphere_sphere a.center, a.radius, b.center, b.radius; aabb_aabb a.lo, a.hi, b.lo, b.hi;
-// kdop_kdop the points of a, then of b; obb_obb a.center, a.half, a.axes (by columns), the same
-// for b; tri_aabb the 3 vertices, lo, hi; tri_obb the 3 vertices, center, half, axes; tri_tri
-// the 3 vertices of a, then of b; mesh_* b's translation, then the triangles of a, then of b
-// (small soups; a rotation not in the table is recorded as the identity); broadphase lo, hi of
-// every box of every frame (absent ones too, ignored); ray_mesh origin, dir, tmin, tmax (flags as
-// ray_aabb), then the triangles; moving_obb a as obb_obb, a's velocity, then b the same. A
-// shorter input reads as if padded with zero bytes.
+// The kind's fields (Fields<its input>, in its unit) decide the order; each part contributes:
+//   a double, a point, a triangle    1, 3, 9 values; a box's axes 9 values, by columns
+//   a box, a sphere, a moving box    its fields' values (lo, hi; center, radius; center, half,
+//                                    axes, velocity)
+//   a ray                            origin, dir, tmin, tmax; flags: bit 4 tmin = -inf, bit 5
+//                                    tmax = +inf
+//   k of a k-DOP                     a header byte: an index into 6 14 16 18 24 26 (modulo 6)
+//   a point set                      a header byte (1 + b % 8 points), then the points
+//   a mesh                           a header byte (a soup of 1 + b % 4 triangles), then their vertices
+//   the library's hierarchy          a header byte: bits 0-2 the volume type, 3-4 the build
+//                                    strategy % 3, 5 the exact update, 6 larger-first descent
+//   two placed meshes                four header bytes (triangles of a, of b, b's rotation as
+//                                    table_rotation(b % 32), the hierarchy), then b's translation,
+//                                    the soup of a, the soup of b; a's pose is the identity (a
+//                                    rotation not in the table is recorded as the identity)
+//   boxes over frames                six header bytes (1 + b % 8 boxes, 1 + b % 4 frames, per frame
+//                                    a mask of the boxes present, bit i for box i), then lo and hi
+//                                    of every box of every frame (absent ones too, ignored)
+// A shorter input reads as if padded with zero bytes.
 #pragma once
 
 #include <cstdint>
@@ -38,7 +40,9 @@ std::vector<std::uint8_t> encode_record(const Input& input);
 /// The input a record describes, for a given kind (the tag's kind bits are not checked).
 Input decode_record(QueryKind kind, std::span<const std::uint8_t> bytes);
 
-/// The doubles of an input in record order, and back (same kind and shape: k and point counts).
+/// The doubles of an input in record order, and back: the input of the same kind and shape as
+/// `shape` (as its record has it: k, point and triangle counts, meshes as soups, frames) with
+/// these values.
 std::vector<double> record_values(const Input& input);
 Input with_record_values(const Input& shape, std::span<const double> values);
 

@@ -35,6 +35,9 @@ Json input_to_json(const Input& input);
 Input input_from_json(QueryKind kind, const Json& json, const std::string& pointer,
                       const std::filesystem::path& case_dir = {});
 
+/// A mesh as a case file gives it: {"file": ...}, {"procedural": ...} or {"triangles": [...]}.
+Json mesh_to_json(const MeshRef& mesh);
+
 /// A double as JSON (a string) and back; the reader also accepts plain JSON numbers.
 Json number_to_json(double x);
 double number_from_json(const Json& json, const std::string& pointer);

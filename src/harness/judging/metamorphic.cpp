@@ -6,6 +6,7 @@
 #include <utility>
 #include <vector>
 
+#include "harness/formats/parts.h"
 #include "harness/generation/choices.h"
 
 namespace cc::harness {
@@ -60,12 +61,15 @@ std::vector<T> shuffled(const std::vector<T>& items, int parameter, std::uint64_
   return out;
 }
 
-// One relation as maps on the parts of a query. `ok` turns false when a value cannot be mapped
-// exactly.
+// One relation as maps on the parts of a query, by their types. `ok` turns false when a value
+// cannot be mapped exactly. The reorderings count the parts they meet: the i-th triangle takes
+// its vertex order from parameter / 6^i, the i-th point set and mesh their shuffles from salt
+// kSaltA + i.
 struct Map {
   Relation relation;
   int parameter;
   bool ok = true;
+  int triangles = 0, point_sets = 0, meshes = 0;
 
   double length(double x) {
     if (relation != Relation::scale || x == 0 || !std::isfinite(x)) return x;
@@ -90,156 +94,168 @@ struct Map {
   }
   // A direction that does not scale (rotation columns).
   Vec3 direction(const Vec3& d) { return relation == Relation::scale ? d : point(d); }
-  Aabb box(const Aabb& b) {
+
+  void map(Vec3& p, Plain) { p = point(p); }
+  void map(Aabb& b, Plain) {
     Aabb r{point(b.lo), point(b.hi)};
     if (relation == Relation::flip_axis) std::swap(r.lo[parameter], r.hi[parameter]);
-    return r;
+    b = r;
   }
-  Obb obb(const Obb& b) {
+  void map(Obb& b, Plain) {
     Obb r;
     r.center = point(b.center);
     r.half = {length(b.half.x), length(b.half.y), length(b.half.z)};
     for (int j = 0; j < 3; ++j) r.axes.col[j] = direction(b.axes.col[j]);
-    return r;
+    b = r;
   }
-  Triangle triangle(const Triangle& t) { return {{point(t.v[0]), point(t.v[1]), point(t.v[2])}}; }
-  Sphere sphere(const Sphere& s) { return {point(s.center), length(s.radius)}; }
-
-  std::optional<Input> operator()(const RayAabbInput& in) {
-    RayAabbInput r = in;
-    r.ray.origin = point(in.ray.origin);
-    r.ray.dir = point(in.ray.dir);  // scaled too: t stays the same
-    r.box = box(in.box);
-    return r;
+  void map(Sphere& s, Plain) { s = {point(s.center), length(s.radius)}; }
+  // A ray's direction scales with it: t stays the same.
+  void map(Ray& r, Plain) { r.origin = point(r.origin), r.dir = point(r.dir); }
+  // A pose: the world's axes permuted permute the rows of its rotation (as its columns' points).
+  void map(RigidTransform& t, Plain) {
+    for (int j = 0; j < 3; ++j) t.rotation.col[j] = point(t.rotation.col[j]);
+    t.translation = point(t.translation);
   }
-  std::optional<Input> operator()(const SphereSphereInput& in) {
-    if (relation == Relation::swap_shapes) return SphereSphereInput{in.b, in.a};
-    return SphereSphereInput{sphere(in.a), sphere(in.b)};
-  }
-  std::optional<Input> operator()(const AabbAabbInput& in) {
-    if (relation == Relation::swap_shapes) return AabbAabbInput{in.b, in.a};
-    return AabbAabbInput{box(in.a), box(in.b)};
-  }
-  std::optional<Input> operator()(const KdopKdopInput& in) {
-    if (relation == Relation::swap_shapes) return KdopKdopInput{in.k, in.b, in.a};
-    if (relation == Relation::permute_points) {
-      return KdopKdopInput{in.k, shuffled(in.a, parameter, kSaltA), shuffled(in.b, parameter, kSaltB)};
-    }
-    if (relation == Relation::permute_axes && in.k == 16) return std::nullopt;
-    if (relation == Relation::flip_axis && (in.k == 16 || in.k == 24)) return std::nullopt;
-    KdopKdopInput r{in.k, {}, {}};
-    for (const Vec3& p : in.a) r.a.push_back(point(p));
-    for (const Vec3& p : in.b) r.b.push_back(point(p));
-    return r;
-  }
-  std::optional<Input> operator()(const ObbObbInput& in) {
-    if (relation == Relation::swap_shapes) return ObbObbInput{in.b, in.a};
-    return ObbObbInput{obb(in.a), obb(in.b)};
-  }
-  std::optional<Input> operator()(const TriAabbInput& in) {
-    if (relation == Relation::permute_vertices) return TriAabbInput{reordered(in.tri, parameter), in.box};
-    return TriAabbInput{triangle(in.tri), box(in.box)};
-  }
-  std::optional<Input> operator()(const TriObbInput& in) {
-    if (relation == Relation::permute_vertices) return TriObbInput{reordered(in.tri, parameter), in.box};
-    return TriObbInput{triangle(in.tri), obb(in.box)};
-  }
-  std::optional<Input> operator()(const TriTriInput& in) {
-    if (relation == Relation::swap_shapes) return TriTriInput{in.b, in.a};
+  void map(Triangle& t, Plain) {
+    long order = parameter;
+    for (int i = 0; i < triangles; ++i) order /= 6;
+    ++triangles;
     if (relation == Relation::permute_vertices) {
-      return TriTriInput{reordered(in.a, parameter), reordered(in.b, parameter / 6)};
+      t = reordered(t, order);
+    } else {
+      t = {{point(t.v[0]), point(t.v[1]), point(t.v[2])}};
     }
-    return TriTriInput{triangle(in.a), triangle(in.b)};
   }
-  std::optional<Input> operator()(const BroadphaseInput& in) {
-    if (relation == Relation::permute_objects) {
-      BroadphaseInput r;
-      for (const auto& frame : in.frames) r.frames.push_back(shuffled(frame, parameter, kSaltA));
-      return r;
+  void map(std::vector<Vec3>& points, Plain) {
+    const std::uint64_t salt = kSaltA + static_cast<std::uint64_t>(point_sets++);
+    if (relation == Relation::permute_points) {
+      points = shuffled(points, parameter, salt);
+      return;
     }
-    BroadphaseInput r = in;
-    for (auto& frame : r.frames) {
+    for (Vec3& p : points) p = point(p);
+  }
+  void map(MeshRef& mesh, Plain) {
+    const std::uint64_t salt = kSaltA + static_cast<std::uint64_t>(meshes++);
+    if (relation == Relation::permute_faces || relation == Relation::permute_vertices) mesh = reordered(mesh, relation, parameter, salt);
+  }
+  void map(BoxFrames& frames, Plain) {
+    if (relation == Relation::permute_objects) {
+      for (auto& frame : frames) frame = shuffled(frame, parameter, kSaltA);
+      return;
+    }
+    for (auto& frame : frames) {
       for (auto& b : frame) {
-        if (b) b = box(*b);
+        if (b) map(*b, Plain{});
       }
     }
-    return r;
   }
-  std::optional<Input> operator()(const RayMeshInput& in) {
-    return RayMeshInput{reordered(in.mesh, relation, parameter, kSaltA), in.ray, in.library};
-  }
-  std::optional<Input> operator()(const MovingObbInput& in) {
-    if (relation == Relation::swap_shapes) return MovingObbInput{in.b, in.a};
-    return MovingObbInput{{obb(in.a.box), point(in.a.velocity)}, {obb(in.b.box), point(in.b.velocity)}};
-  }
-  // Meshes: the world's axes permuted, which permutes the rows of both poses (the relative
-  // transform, and with it every computation of the library, is unchanged bit for bit); or
-  // their faces, or each face's vertices, reordered.
-  std::optional<Input> operator()(const MeshMeshInput& in) { return meshes(in.meshes, MeshMeshInput{}); }
-  std::optional<Input> operator()(const MeshMeshFirstInput& in) { return meshes(in.meshes, MeshMeshFirstInput{}); }
-  template <class Query>
-  std::optional<Input> meshes(const MeshPair& m, Query out) {
-    out.meshes = m;
-    if (relation == Relation::permute_faces || relation == Relation::permute_vertices) {
-      out.meshes.a = reordered(m.a, relation, parameter, kSaltA);
-      out.meshes.b = reordered(m.b, relation, parameter, kSaltB);
-      return out;
-    }
-    for (RigidTransform* pose : {&out.meshes.pose_a, &out.meshes.pose_b}) {
-      for (int j = 0; j < 3; ++j) pose->rotation.col[j] = point(pose->rotation.col[j]);
-      pose->translation = point(pose->translation);
-    }
-    return out;
+  void map(int&, AsKdopK) {}
+  void map(LibraryBvh&, Plain) {}
+  template <HasFields T>
+  void map(T& value, Plain) {
+    for_each_field<T>([&](const auto& f) {
+      using F = std::decay_t<decltype(f)>;
+      map(F::of(value), typename F::As{});
+    });
   }
 };
+
+// Whether the relation holds for this input: a k-DOP direction set not closed under the
+// operation (16 under permutations and flips, 24 under flips) does not.
+template <class In>
+bool admits(const In&, Relation) {
+  return true;
+}
+bool admits(const KdopKdopInput& in, Relation relation) {
+  if (relation == Relation::permute_axes && in.k == 16) return false;
+  return !(relation == Relation::flip_axis && (in.k == 16 || in.k == 24));
+}
+
+// The input with its fields named a and b exchanged.
+template <class In>
+In swapped(In in) {
+  constexpr std::size_t a = field_index<In>("a"), b = field_index<In>("b");
+  static_assert(a != b && b < std::tuple_size_v<std::decay_t<decltype(Fields<In>::list)>>, "swapping needs fields a and b");
+  using A = std::decay_t<decltype(std::get<a>(Fields<In>::list))>;
+  using B = std::decay_t<decltype(std::get<b>(Fields<In>::list))>;
+  static_assert(std::is_same_v<typename A::Type, typename B::Type>, "swapping needs a and b of one type");
+  std::swap(A::of(in), B::of(in));
+  return in;
+}
 
 double flush(double x) {
   const double m = std::fabs(x);
   return (std::isfinite(x) && x != 0 && (m < 0x1p-250 || m > 0x1p250)) ? 0.0 : x;
 }
-Vec3 flush(const Vec3& v) { return {flush(v.x), flush(v.y), flush(v.z)}; }
-Mat3 flush(const Mat3& m) { return Mat3::from_columns(flush(m.col[0]), flush(m.col[1]), flush(m.col[2])); }
-Aabb flush(const Aabb& b) { return {flush(b.lo), flush(b.hi)}; }
-Obb flush(const Obb& b) { return {flush(b.center), flush(b.half), flush(b.axes)}; }
-Triangle flush(const Triangle& t) { return {{flush(t.v[0]), flush(t.v[1]), flush(t.v[2])}}; }
-Sphere flush(const Sphere& s) { return {flush(s.center), flush(s.radius)}; }
 
+// Every value flushed, but a mesh's (whose cases are never scaled).
 struct Flush {
-  Input operator()(const RayAabbInput& in) const {
-    RayAabbInput r = in;
-    r.ray.origin = flush(in.ray.origin);
-    r.ray.dir = flush(in.ray.dir);
-    r.ray.tmin = flush(in.ray.tmin);  // the library scales t with the direction
-    r.ray.tmax = flush(in.ray.tmax);
-    r.box = flush(in.box);
-    return r;
+  void map(double& x, Plain) { x = flush(x); }
+  void map(Vec3& v, Plain) { v = {flush(v.x), flush(v.y), flush(v.z)}; }
+  void map(Mat3& m, AsFrame) {
+    for (Vec3& c : m.col) map(c, Plain{});
   }
-  Input operator()(const SphereSphereInput& in) const { return SphereSphereInput{flush(in.a), flush(in.b)}; }
-  Input operator()(const AabbAabbInput& in) const { return AabbAabbInput{flush(in.a), flush(in.b)}; }
-  Input operator()(const KdopKdopInput& in) const {
-    KdopKdopInput r{in.k, {}, {}};
-    for (const Vec3& p : in.a) r.a.push_back(flush(p));
-    for (const Vec3& p : in.b) r.b.push_back(flush(p));
-    return r;
+  void map(Triangle& t, Plain) {
+    for (Vec3& p : t.v) map(p, Plain{});
   }
-  Input operator()(const ObbObbInput& in) const { return ObbObbInput{flush(in.a), flush(in.b)}; }
-  Input operator()(const TriAabbInput& in) const { return TriAabbInput{flush(in.tri), flush(in.box)}; }
-  Input operator()(const TriObbInput& in) const { return TriObbInput{flush(in.tri), flush(in.box)}; }
-  Input operator()(const TriTriInput& in) const { return TriTriInput{flush(in.a), flush(in.b)}; }
-  Input operator()(const MeshMeshInput& in) const { return in; }  // never scaled
-  Input operator()(const MeshMeshFirstInput& in) const { return in; }
-  Input operator()(const BroadphaseInput& in) const {
-    BroadphaseInput r = in;
-    for (auto& frame : r.frames) {
+  void map(std::vector<Vec3>& points, Plain) {
+    for (Vec3& p : points) map(p, Plain{});
+  }
+  void map(BoxFrames& frames, Plain) {
+    for (auto& frame : frames) {
       for (auto& b : frame) {
-        if (b) b = flush(*b);
+        if (b) map(*b, Plain{});
       }
     }
-    return r;
   }
-  Input operator()(const RayMeshInput& in) const { return in; }  // never transformed
-  Input operator()(const MovingObbInput& in) const {
-    return MovingObbInput{{flush(in.a.box), flush(in.a.velocity)}, {flush(in.b.box), flush(in.b.velocity)}};
+  void map(MeshPair&, Plain) {}
+  void map(MeshRef&, Plain) {}
+  void map(LibraryBvh&, Plain) {}
+  void map(int&, AsKdopK) {}
+  template <HasFields T>
+  void map(T& value, Plain) {
+    for_each_field<T>([&](const auto& f) {
+      using F = std::decay_t<decltype(f)>;
+      map(F::of(value), typename F::As{});
+    });
+  }
+};
+
+// Where the reorderings move the answer's faces and slots: the i-th mesh renames the i-th face
+// of every pair; boxes over frames rename the slots of every frame's pairs.
+struct Rename {
+  Answer& out;
+  Relation relation;
+  int parameter;
+  int meshes = 0;
+
+  static void rename(std::vector<FacePair>& pairs, const auto& map) {
+    for (FacePair& p : pairs) p = map(p);
+    std::sort(pairs.begin(), pairs.end());
+  }
+  void at(const MeshRef& mesh, Plain) {
+    const int index = meshes++;
+    if (relation != Relation::permute_faces || index > 1) return;
+    const auto place = shuffle_of(mesh.mesh->size(), parameter, kSaltA + static_cast<std::uint64_t>(index));
+    std::uint32_t FacePair::*face = index == 0 ? &FacePair::first : &FacePair::second;
+    rename(out.pairs, [&](FacePair p) {
+      p.*face = place[p.*face];
+      return p;
+    });
+  }
+  void at(const BoxFrames& frames, Plain) {
+    if (relation != Relation::permute_objects) return;
+    const auto place = shuffle_of(frames.empty() ? 0 : frames[0].size(), parameter, kSaltA);
+    for (auto& frame : out.frames) rename(frame, [&](const FacePair& p) { return std::minmax(place[p.first], place[p.second]); });
+  }
+  template <class T, class As>
+  void at(const T& value, As) {
+    if constexpr (HasFields<T>) {
+      for_each_field<T>([&](const auto& f) {
+        using F = std::decay_t<decltype(f)>;
+        at(F::of(value), typename F::As{});
+      });
+    }
   }
 };
 
@@ -282,35 +298,35 @@ bool relation_applies(QueryKind kind, Relation relation) {
 
 std::optional<Input> transform(const Input& input, Relation relation, int parameter) {
   if (!relation_applies(kind_of(input), relation)) return std::nullopt;
-  Map map{relation, parameter};
-  std::optional<Input> out = std::visit(map, input);
-  if (!map.ok) return std::nullopt;
-  return out;
+  return std::visit(
+      [&]<class In>(const In& in) -> std::optional<Input> {
+        if (!admits(in, relation)) return std::nullopt;
+        if (relation == Relation::swap_shapes) {
+          if constexpr (field_index<In>("b") < std::tuple_size_v<std::decay_t<decltype(Fields<In>::list)>>) return swapped(in);
+          return std::nullopt;
+        }
+        Map map{relation, parameter};
+        In out = in;
+        map.map(out, Plain{});
+        if (!map.ok) return std::nullopt;
+        return out;
+      },
+      input);
 }
 
-Input flush_extremes(const Input& input) { return std::visit(Flush{}, input); }
+Input flush_extremes(const Input& input) {
+  return std::visit(
+      [](const auto& in) -> Input {
+        auto out = in;
+        Flush{}.map(out, Plain{});
+        return out;
+      },
+      input);
+}
 
 Answer mapped_answer(const Answer& answer, const Input& original, Relation relation, int parameter) {
   Answer out = answer;
-  const auto rename = [](std::vector<FacePair>& pairs, const auto& map) {
-    for (FacePair& p : pairs) p = map(p);
-    std::sort(pairs.begin(), pairs.end());
-  };
-  if (relation == Relation::permute_faces) {
-    if (const MeshPair* m = meshes_of(original)) {
-      const auto a = shuffle_of(m->a.mesh->size(), parameter, kSaltA), b = shuffle_of(m->b.mesh->size(), parameter, kSaltB);
-      rename(out.pairs, [&](const FacePair& p) { return FacePair{a[p.first], b[p.second]}; });
-    } else if (const auto* ray = std::get_if<RayMeshInput>(&original)) {
-      const auto place = shuffle_of(ray->mesh.mesh->size(), parameter, kSaltA);
-      rename(out.pairs, [&](const FacePair& p) { return FacePair{place[p.first], p.second}; });
-    }
-  }
-  if (relation == Relation::permute_objects) {
-    if (const auto* in = std::get_if<BroadphaseInput>(&original)) {
-      const auto place = shuffle_of(in->frames.empty() ? 0 : in->frames[0].size(), parameter, kSaltA);
-      for (auto& frame : out.frames) rename(frame, [&](const FacePair& p) { return std::minmax(place[p.first], place[p.second]); });
-    }
-  }
+  std::visit([&](const auto& in) { Rename{out, relation, parameter}.at(in, Plain{}); }, original);
   return out;
 }
 

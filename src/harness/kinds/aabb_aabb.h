@@ -1,13 +1,19 @@
 // aabb_aabb: two axis-aligned boxes, test_aabb_aabb.
 #pragma once
 
-#include "collide/aabb.h"
+#include "harness/formats/parts.h"
 
 namespace cc::harness {
 
 struct AabbAabbInput {
   Aabb a, b;
   friend bool operator==(const AabbAabbInput&, const AabbAabbInput&) = default;
+};
+
+/// Its fields, in the order of the case file and of the fuzz record.
+template <>
+struct Fields<AabbAabbInput> {
+  static constexpr auto list = std::tuple{field<&AabbAabbInput::a>("a"), field<&AabbAabbInput::b>("b")};
 };
 
 }  // namespace cc::harness

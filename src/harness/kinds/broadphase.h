@@ -1,19 +1,21 @@
 // broadphase: the overlapping pairs of a set of boxes, frame by frame (ColumnSweep).
 #pragma once
 
-#include <optional>
-#include <vector>
-
-#include "collide/aabb.h"
+#include "harness/formats/parts.h"
 
 namespace cc::harness {
 
-/// A set of boxes over a sequence of frames: frames[f][i] is box i in frame f, or nothing when
-/// box i is not in the scene then (not yet added, or removed). Every frame has the same number
-/// of slots. The answer: the overlapping pairs (i, j), i < j, of each frame.
+/// Boxes added, moved and removed frame by frame (see BoxFrames; a box not yet added, or
+/// removed, is nothing). The answer: the overlapping pairs (i, j), i < j, of each frame.
 struct BroadphaseInput {
-  std::vector<std::vector<std::optional<Aabb>>> frames;
+  BoxFrames frames;
   friend bool operator==(const BroadphaseInput&, const BroadphaseInput&) = default;
+};
+
+/// Its fields, in the order of the case file and of the fuzz record.
+template <>
+struct Fields<BroadphaseInput> {
+  static constexpr auto list = std::tuple{field<&BroadphaseInput::frames>("frames")};
 };
 
 }  // namespace cc::harness

@@ -3,7 +3,7 @@
 
 #include <vector>
 
-#include "collide/vec3.h"
+#include "harness/formats/parts.h"
 
 namespace cc::harness {
 
@@ -12,6 +12,13 @@ struct KdopKdopInput {
   int k = 18;
   std::vector<Vec3> a, b;
   friend bool operator==(const KdopKdopInput&, const KdopKdopInput&) = default;
+};
+
+/// Its fields, in the order of the case file and of the fuzz record.
+template <>
+struct Fields<KdopKdopInput> {
+  static constexpr auto list = std::tuple{field<&KdopKdopInput::k, AsKdopK>("k"), field<&KdopKdopInput::a>("a"),
+                                          field<&KdopKdopInput::b>("b")};
 };
 
 }  // namespace cc::harness

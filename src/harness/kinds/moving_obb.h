@@ -1,7 +1,7 @@
 // moving_obb: two boxes moving with constant velocities over a step, sweep_obb_obb.
 #pragma once
 
-#include "collide/moving_box.h"
+#include "harness/formats/parts.h"
 
 namespace cc::harness {
 
@@ -10,6 +10,12 @@ namespace cc::harness {
 struct MovingObbInput {
   MovingObb a, b;
   friend bool operator==(const MovingObbInput&, const MovingObbInput&) = default;
+};
+
+/// Its fields, in the order of the case file and of the fuzz record.
+template <>
+struct Fields<MovingObbInput> {
+  static constexpr auto list = std::tuple{field<&MovingObbInput::a>("a"), field<&MovingObbInput::b>("b")};
 };
 
 }  // namespace cc::harness

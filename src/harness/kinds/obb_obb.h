@@ -1,13 +1,19 @@
 // obb_obb: two oriented boxes, test_obb_obb.
 #pragma once
 
-#include "collide/obb.h"
+#include "harness/formats/parts.h"
 
 namespace cc::harness {
 
 struct ObbObbInput {
   Obb a, b;
   friend bool operator==(const ObbObbInput&, const ObbObbInput&) = default;
+};
+
+/// Its fields, in the order of the case file and of the fuzz record.
+template <>
+struct Fields<ObbObbInput> {
+  static constexpr auto list = std::tuple{field<&ObbObbInput::a>("a"), field<&ObbObbInput::b>("b")};
 };
 
 }  // namespace cc::harness

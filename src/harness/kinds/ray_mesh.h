@@ -1,8 +1,7 @@
 // ray_mesh: the first point where a ray meets a mesh, through the library's hierarchy.
 #pragma once
 
-#include "collide/ray_aabb.h"
-#include "harness/model/mesh_query.h"
+#include "harness/formats/parts.h"
 
 namespace cc::harness {
 
@@ -12,6 +11,13 @@ struct RayMeshInput {
   Ray ray;
   LibraryBvh library;
   friend bool operator==(const RayMeshInput&, const RayMeshInput&) = default;
+};
+
+/// Its fields, in the order of the case file and of the fuzz record.
+template <>
+struct Fields<RayMeshInput> {
+  static constexpr auto list = std::tuple{field<&RayMeshInput::ray>(""), field<&RayMeshInput::mesh>("mesh"),
+                                          field<&RayMeshInput::library>("library")};
 };
 
 }  // namespace cc::harness

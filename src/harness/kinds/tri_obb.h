@@ -1,8 +1,7 @@
 // tri_obb: a triangle against an oriented box, test_triangle_obb.
 #pragma once
 
-#include "collide/obb.h"
-#include "collide/triangle.h"
+#include "harness/formats/parts.h"
 
 namespace cc::harness {
 
@@ -10,6 +9,12 @@ struct TriObbInput {
   Triangle tri;
   Obb box;
   friend bool operator==(const TriObbInput&, const TriObbInput&) = default;
+};
+
+/// Its fields, in the order of the case file and of the fuzz record.
+template <>
+struct Fields<TriObbInput> {
+  static constexpr auto list = std::tuple{field<&TriObbInput::tri>("triangle"), field<&TriObbInput::box>("box")};
 };
 
 }  // namespace cc::harness

@@ -2,7 +2,7 @@
 // mesh_mesh_first: the first one found): their input, the same for both but for what is asked.
 #pragma once
 
-#include "harness/model/mesh_query.h"
+#include "harness/formats/parts.h"
 
 namespace cc::harness {
 
@@ -13,6 +13,12 @@ struct TwoMeshesInput {
   static constexpr CollisionMode mode = Mode;
   MeshPair meshes;
   friend bool operator==(const TwoMeshesInput&, const TwoMeshesInput&) = default;
+};
+
+/// Its fields: the pair's (a, pose_a, b, pose_b, library) at the top of the case.
+template <CollisionMode Mode>
+struct Fields<TwoMeshesInput<Mode>> {
+  static constexpr auto list = std::tuple{field<&TwoMeshesInput<Mode>::meshes>("")};
 };
 
 }  // namespace cc::harness

@@ -33,17 +33,51 @@ int mantissa_bits(double x) {
   return std::max(bits, 1);
 }
 
-// The frames in a document: members named "axes" (a box's, any orthonormal frame) or
-// "rotation" (a pose's, a proper rotation), as JSON pointers.
-void frames(const Json& j, const std::string& pointer, std::vector<std::string>& out) {
-  if (!j.is_object()) return;
-  for (auto it = j.begin(); it != j.end(); ++it) {
-    if (it.key() == "axes" || it.key() == "rotation") {
-      out.push_back(pointer + "/" + it.key());
-    } else {
-      frames(it.value(), pointer + "/" + it.key(), out);
-    }
+// What the shrinker can simplify besides single values, found by a walk over the input's fields:
+// frames (a box's axes, any orthonormal frame; a pose's rotation, a proper one), point sets to
+// thin out, and, before the values, meshes and boxes over frames to cut down.
+struct Targets {
+  struct Frame {
+    std::string pointer;
+    bool proper;
+  };
+  std::vector<Frame> frames;
+  std::vector<std::string> point_sets;
+  std::vector<std::pair<std::string, const MeshPair*>> mesh_pairs;
+  std::vector<std::pair<std::string, const MeshRef*>> meshes;
+  std::vector<std::pair<std::string, const BoxFrames*>> box_frames;
+  bool first_hit = false;  // a query for the first colliding pair
+};
+
+template <class T, class As>
+void collect(const T& value, const std::string& pointer, Targets& out) {
+  if constexpr (std::is_same_v<T, Mat3>) {
+    out.frames.push_back({pointer, std::is_same_v<As, AsRotation>});
+  } else if constexpr (std::is_same_v<T, std::vector<Vec3>>) {
+    out.point_sets.push_back(pointer);
+  } else if constexpr (std::is_same_v<T, MeshRef>) {
+    out.meshes.emplace_back(pointer, &value);
+  } else if constexpr (std::is_same_v<T, BoxFrames>) {
+    out.box_frames.emplace_back(pointer, &value);
+  } else if constexpr (HasFields<T>) {
+    if constexpr (std::is_same_v<T, MeshPair>) out.mesh_pairs.emplace_back(pointer, &value);
+    for_each_field<T>([&](const auto& f) {
+      using F = std::decay_t<decltype(f)>;
+      if constexpr (std::is_same_v<T, MeshPair> && std::is_same_v<typename F::Type, MeshRef>) return;  // cut as a pair
+      collect<typename F::Type, typename F::As>(F::of(value), f.inline_part() ? pointer : pointer + "/" + std::string(f.name), out);
+    });
   }
+}
+
+Targets targets_of(const Input& input) {
+  Targets t;
+  std::visit(
+      [&t]<class In>(const In& in) {
+        collect<In, Plain>(in, "", t);
+        if constexpr (requires { In::mode; }) t.first_hit = In::mode == CollisionMode::first_hit;
+      },
+      input);
+  return t;
 }
 
 // The identity first, then the other 47 signed permutation matrices: the simplest frames, exactly
@@ -78,9 +112,7 @@ void number_leaves(const Json& j, const std::string& pointer, std::vector<std::s
   if (j.is_array()) {
     for (std::size_t i = 0; i < j.size(); ++i) number_leaves(j[i], pointer + "/" + std::to_string(i), out);
   } else if (j.is_object()) {
-    for (auto it = j.begin(); it != j.end(); ++it) {
-      if (it.key() != "k") number_leaves(it.value(), pointer + "/" + it.key(), out);
-    }
+    for (auto it = j.begin(); it != j.end(); ++it) number_leaves(it.value(), pointer + "/" + it.key(), out);
   }
 }
 
@@ -163,19 +195,22 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
     return true;
   };
 
-  // Structure before values: meshes lose faces, broadphase cases boxes and frames, a ray_mesh's
-  // mesh faces. A mesh written out as triangles is kept only if it is small enough to read.
+  // Structure before values: meshes lose faces, boxes over frames boxes and frames. A mesh written
+  // out as triangles is kept only if it is small enough to read.
+  const Targets targets = targets_of(input);
   const auto written_faces = [](const Input& in) {
     std::size_t n = 0;
-    if (const MeshPair* m = meshes_of(in)) n = m->a.mesh->size() + m->b.mesh->size();
-    if (const auto* ray = std::get_if<RayMeshInput>(&in)) n = ray->mesh.mesh->size();
+    const Targets t = targets_of(in);
+    for (const auto& [pointer, pair] : t.mesh_pairs) n += pair->a.mesh->size() + pair->b.mesh->size();
+    for (const auto& [pointer, mesh] : t.meshes) n += mesh->mesh->size();
     return n;
   };
   const ShrinkResult before = r;
   const Json before_doc = current;
-  const MeshPair* meshes = meshes_of(input);
-  const bool dropped = meshes != nullptr ? shrink_faces(kind, current, *meshes, start, attempt)
-                                         : shrink_lists(current, input, attempt);
+  bool dropped = false;
+  for (const auto& [pointer, pair] : targets.mesh_pairs) dropped |= shrink_faces(current, pointer, *pair, targets.first_hit, start, attempt);
+  for (const auto& [pointer, frames] : targets.box_frames) dropped |= shrink_box_frames(current, pointer, *frames, attempt);
+  for (const auto& [pointer, mesh] : targets.meshes) dropped |= shrink_mesh_faces(current, pointer, *mesh, attempt);
   if (dropped && written_faces(r.input) > kMaxWrittenFaces) {
     const int attempts = r.attempts;
     r = before;
@@ -186,12 +221,9 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
   for (bool progress = true; progress && r.attempts < max_attempts && std::chrono::steady_clock::now() < deadline;) {
     progress = false;
     // Frames toward the identity and the signed permutations, as a whole.
-    std::vector<std::string> frame_pointers;
-    frames(current, "", frame_pointers);
-    for (const std::string& p : frame_pointers) {
-      const Json::json_pointer ptr(p);
-      const bool rotation = p.ends_with("/rotation");
-      for (const Json& m : simple_frames(rotation)) {
+    for (const Targets::Frame& frame : targets.frames) {
+      const Json::json_pointer ptr(frame.pointer);
+      for (const Json& m : simple_frames(frame.proper)) {
         if (current.at(ptr) == m) break;  // already the simplest one that works
         Json doc = current;
         doc[ptr] = m;
@@ -201,17 +233,16 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
         }
       }
     }
-    // Fewer points (k-DOP point sets): drop one at a time, keeping at least one per set.
-    if (kind == QueryKind::kdop_kdop) {
-      for (const char* set : {"a", "b"}) {
-        for (std::size_t i = 0; i < current[set].size() && current[set].size() > 1;) {
-          Json doc = current;
-          doc[set].erase(i);
-          if (attempt(doc)) {
-            progress = true;
-          } else {
-            ++i;
-          }
+    // Fewer points (point sets): drop one at a time, keeping at least one per set.
+    for (const std::string& pointer : targets.point_sets) {
+      const Json::json_pointer set(pointer);
+      for (std::size_t i = 0; i < current[set].size() && current[set].size() > 1;) {
+        Json doc = current;
+        doc[set].erase(i);
+        if (attempt(doc)) {
+          progress = true;
+        } else {
+          ++i;
         }
       }
     }

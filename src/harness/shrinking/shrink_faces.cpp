@@ -5,21 +5,17 @@
 #include <numeric>
 #include <set>
 
-#include "harness/model/mesh_query.h"
 
 namespace cc::harness {
 namespace {
 
-// The inputs with each mesh cut down to the listed faces, written as triangles.
-Json with_faces(const Json& current, const MeshPair& m, const std::vector<std::uint32_t>& faces_a,
-                const std::vector<std::uint32_t>& faces_b) {
-  MeshPair cut = m;
-  cut.a = triangles_mesh(submesh(*m.a.mesh, faces_a));
-  cut.b = triangles_mesh(submesh(*m.b.mesh, faces_b));
-  const Json meshes = input_to_json(MeshMeshInput{cut});
+// The document with each mesh of the pair at `pointer` cut down to the listed faces, written as
+// triangles.
+Json with_faces(const Json& current, const std::string& pointer, const MeshPair& m,
+                const std::vector<std::uint32_t>& faces_a, const std::vector<std::uint32_t>& faces_b) {
   Json doc = current;
-  doc["a"] = meshes["a"];
-  doc["b"] = meshes["b"];
+  doc[Json::json_pointer(pointer + "/a")] = mesh_to_json(triangles_mesh(submesh(*m.a.mesh, faces_a)));
+  doc[Json::json_pointer(pointer + "/b")] = mesh_to_json(triangles_mesh(submesh(*m.b.mesh, faces_b)));
   return doc;
 }
 
@@ -31,7 +27,7 @@ std::vector<std::uint32_t> all_faces(const Mesh& mesh) {
 
 }  // namespace
 
-std::vector<std::uint32_t> disputed_faces(QueryKind kind, const Evaluation& e, bool second) {
+std::vector<std::uint32_t> disputed_faces(const Evaluation& e, bool first_hit, bool second) {
   const auto& exact = e.exact.answer.pairs;
   std::set<std::uint32_t> faces;
   const auto side = [&](const FacePair& p) { return second ? p.second : p.first; };
@@ -44,7 +40,7 @@ std::vector<std::uint32_t> disputed_faces(QueryKind kind, const Evaluation& e, b
       if (!std::binary_search(exact.begin(), exact.end(), p)) faces.insert(side(p));
     }
     // A first hit names one pair: the exact pairs are then only disputed when it names none.
-    if (kind == QueryKind::mesh_mesh_first && !a->pairs.empty()) continue;
+    if (first_hit && !a->pairs.empty()) continue;
     for (const FacePair& p : exact) {
       if (std::find(a->pairs.begin(), a->pairs.end(), p) == a->pairs.end()) faces.insert(side(p));
     }
@@ -57,16 +53,16 @@ std::vector<std::uint32_t> disputed_faces(QueryKind kind, const Evaluation& e, b
   return {faces.begin(), faces.end()};
 }
 
-bool shrink_faces(QueryKind kind, const Json& current, const MeshPair& meshes, const Evaluation& start,
-                  const Attempt& attempt) {
+bool shrink_faces(const Json& current, const std::string& pointer, const MeshPair& meshes, bool first_hit,
+                  const Evaluation& start, const Attempt& attempt) {
   std::vector<std::uint32_t> keep[2] = {all_faces(*meshes.a.mesh), all_faces(*meshes.b.mesh)};
   bool dropped = false;
   // Only the disputed faces, if the case still shows its disagreement with them alone.
-  const std::vector<std::uint32_t> disputed[2] = {disputed_faces(kind, start, false),
-                                                    disputed_faces(kind, start, true)};
+  const std::vector<std::uint32_t> disputed[2] = {disputed_faces(start, first_hit, false),
+                                                    disputed_faces(start, first_hit, true)};
   if (!disputed[0].empty() && !disputed[1].empty() &&
       (disputed[0].size() < keep[0].size() || disputed[1].size() < keep[1].size()) &&
-      attempt(with_faces(current, meshes, disputed[0], disputed[1]))) {
+      attempt(with_faces(current, pointer, meshes, disputed[0], disputed[1]))) {
     keep[0] = disputed[0], keep[1] = disputed[1];
     dropped = true;
   }
@@ -77,7 +73,8 @@ bool shrink_faces(QueryKind kind, const Json& current, const MeshPair& meshes, c
         std::vector<std::uint32_t> fewer = keep[side];
         fewer.erase(fewer.begin() + static_cast<std::ptrdiff_t>(at),
                     fewer.begin() + static_cast<std::ptrdiff_t>(std::min(at + chunk, fewer.size())));
-        const Json doc = side == 0 ? with_faces(current, meshes, fewer, keep[1]) : with_faces(current, meshes, keep[0], fewer);
+        const Json doc = side == 0 ? with_faces(current, pointer, meshes, fewer, keep[1])
+                                   : with_faces(current, pointer, meshes, keep[0], fewer);
         if (attempt(doc)) {
           keep[side] = std::move(fewer);
           dropped = true;

@@ -3,8 +3,6 @@
 #include <algorithm>
 #include <numeric>
 
-#include "harness/model/mesh_query.h"
-
 namespace cc::harness {
 namespace {
 
@@ -37,49 +35,45 @@ std::vector<std::size_t> indices(std::size_t n) {
 
 }  // namespace
 
-bool shrink_lists(const Json& current, const Input& input, const Attempt& attempt) {
-  if (const auto* in = std::get_if<BroadphaseInput>(&input)) {
-    if (in->frames.empty()) return false;
-    Json base = current;
-    std::vector<std::size_t> boxes = indices(in->frames.front().size());
-    const bool fewer_boxes = drop_elements(boxes, [&](const std::vector<std::size_t>& kept) {
-      Json doc = base;
-      for (Json& frame : doc["frames"]) {
-        Json slots = Json::array();
-        for (std::size_t i : kept) slots.push_back(frame[i]);
-        frame = slots;
-      }
-      return doc;
-    }, attempt);
-    if (fewer_boxes) {  // the frames of the document as it now is
-      for (Json& frame : base["frames"]) {
-        Json slots = Json::array();
-        for (std::size_t i : boxes) slots.push_back(frame[i]);
-        frame = slots;
-      }
+bool shrink_box_frames(const Json& current, const std::string& pointer, const BoxFrames& frames, const Attempt& attempt) {
+  if (frames.empty()) return false;
+  const Json::json_pointer at(pointer);
+  Json base = current;
+  std::vector<std::size_t> boxes = indices(frames.front().size());
+  const bool fewer_boxes = drop_elements(boxes, [&](const std::vector<std::size_t>& kept) {
+    Json doc = base;
+    for (Json& frame : doc[at]) {
+      Json slots = Json::array();
+      for (std::size_t i : kept) slots.push_back(frame[i]);
+      frame = slots;
     }
-    std::vector<std::size_t> frames = indices(in->frames.size());
-    const bool fewer_frames = drop_elements(frames, [&](const std::vector<std::size_t>& kept) {
-      Json doc = base;
-      doc["frames"] = Json::array();
-      for (std::size_t f : kept) doc["frames"].push_back(base["frames"][f]);
-      return doc;
-    }, attempt);
-    return fewer_boxes || fewer_frames;
+    return doc;
+  }, attempt);
+  if (fewer_boxes) {  // the frames of the document as it now is
+    for (Json& frame : base[at]) {
+      Json slots = Json::array();
+      for (std::size_t i : boxes) slots.push_back(frame[i]);
+      frame = slots;
+    }
   }
-  if (const auto* in = std::get_if<RayMeshInput>(&input)) {
-    const Mesh& mesh = *in->mesh.mesh;
-    std::vector<std::size_t> faces = indices(mesh.size());
-    return drop_elements(faces, [&](const std::vector<std::size_t>& kept) {
-      std::vector<std::uint32_t> list(kept.begin(), kept.end());
-      RayMeshInput cut = *in;
-      cut.mesh = triangles_mesh(submesh(mesh, list));
-      Json doc = current;
-      doc["mesh"] = input_to_json(cut)["mesh"];
-      return doc;
-    }, attempt);
-  }
-  return false;
+  std::vector<std::size_t> kept_frames = indices(frames.size());
+  const bool fewer_frames = drop_elements(kept_frames, [&](const std::vector<std::size_t>& kept) {
+    Json doc = base;
+    doc[at] = Json::array();
+    for (std::size_t f : kept) doc[at].push_back(base[at][f]);
+    return doc;
+  }, attempt);
+  return fewer_boxes || fewer_frames;
+}
+
+bool shrink_mesh_faces(const Json& current, const std::string& pointer, const MeshRef& mesh, const Attempt& attempt) {
+  std::vector<std::size_t> faces = indices(mesh.mesh->size());
+  return drop_elements(faces, [&](const std::vector<std::size_t>& kept) {
+    const std::vector<std::uint32_t> list(kept.begin(), kept.end());
+    Json doc = current;
+    doc[Json::json_pointer(pointer)] = mesh_to_json(triangles_mesh(submesh(*mesh.mesh, list)));
+    return doc;
+  }, attempt);
 }
 
 }  // namespace cc::harness

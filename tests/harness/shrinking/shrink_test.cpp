@@ -163,7 +163,7 @@ TEST(ShrinkFaces, DisputedFacesAreThoseOfPairsAPartyListsDifferently) {
   const Evaluation e = planted_meshes(in);
   ASSERT_EQ(e.verdict.cls, CaseClass::oracle_defect);
   const MeshPair& m = *meshes_of(in);
-  const std::vector<std::uint32_t> a = disputed_faces(QueryKind::mesh_mesh, e, false);
+  const std::vector<std::uint32_t> a = disputed_faces(e, false, false);
   ASSERT_FALSE(a.empty());
   EXPECT_LT(a.size(), m.a.mesh->size());
   for (std::uint32_t f : a) {
