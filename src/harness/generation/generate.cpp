@@ -1,6 +1,6 @@
 #include "harness/generation/generate.h"
 
-#include "harness/generation/generate_detail.h"
+#include "harness/generation/shapes.h"
 
 namespace cc::harness {
 

@@ -3,7 +3,7 @@
 #include <cmath>
 
 #include "collide/kdop.h"
-#include "harness/generation/generate_detail.h"
+#include "harness/generation/shapes.h"
 
 namespace cc::harness {
 namespace {

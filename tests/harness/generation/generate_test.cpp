@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "harness/judging/features.h"
-#include "harness/generation/generate_detail.h"
+#include "harness/generation/shapes.h"
 #include "harness/formats/input_json.h"
 #include "oracle/exact/exact_reference.h"
 #include "case_budget.h"

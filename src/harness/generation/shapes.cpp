@@ -4,7 +4,7 @@
 #include <utility>
 
 #include "collide/kdop.h"
-#include "harness/generation/generate_detail.h"
+#include "harness/generation/shapes.h"
 #include "harness/generation/rotation.h"
 #include "harness/generation/touch.h"
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "harness/generation/generate_detail.h"
+#include "harness/generation/shapes.h"
 #include "harness/formats/mesh_files.h"
 #include "harness/generation/rotation.h"
 

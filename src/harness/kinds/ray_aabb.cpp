@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <limits>
 
-#include "harness/generation/generate_detail.h"
+#include "harness/generation/shapes.h"
 
 namespace cc::harness::detail {
 namespace {

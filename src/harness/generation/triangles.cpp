@@ -6,7 +6,7 @@
 #include <cmath>
 #include <utility>
 
-#include "harness/generation/generate_detail.h"
+#include "harness/generation/shapes.h"
 #include "harness/generation/rotation.h"
 
 namespace cc::harness::detail {

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "harness/generation/generate_detail.h"
+#include "harness/generation/shapes.h"
 
 namespace cc::harness::detail {
 

@@ -3,7 +3,7 @@
 // sometimes a few ULPs), added and removed between frames.
 #include <cmath>
 
-#include "harness/generation/generate_detail.h"
+#include "harness/generation/shapes.h"
 
 namespace cc::harness::detail {
 namespace {

@@ -5,7 +5,7 @@
 // of each other, while the offset, the reach and the radii stay exact.
 #include <cmath>
 
-#include "harness/generation/generate_detail.h"
+#include "harness/generation/shapes.h"
 
 namespace cc::harness::detail {
 namespace {

@@ -8,7 +8,7 @@
 #include <tuple>
 #include <utility>
 
-#include "harness/generation/generate_detail.h"
+#include "harness/generation/shapes.h"
 #include "harness/formats/mesh_files.h"
 #include "harness/generation/mesh_poses.h"
 #include "harness/generation/rotation.h"
