@@ -31,7 +31,7 @@ struct MemberPointer<T C::*> {
 
 /// A field: its name in a case file and the member that holds it. A part whose name is empty
 /// stands in its owner's place: its own fields are written where the owner's are (a ray's
-/// origin, dir, tmin and tmax at the top of a ray_aabb case).
+/// origin, dir, tmin and tmax at the top of a case of a ray against a box).
 template <auto Member, class Layout = Plain>
 struct Field {
   using Owner = typename detail::MemberPointer<decltype(Member)>::Owner;

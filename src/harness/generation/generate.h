@@ -1,6 +1,6 @@
-// Case generators, one per kind of query, biased toward the decision boundary: shapes made to
-// touch by construction, coordinates equal or a few ULPs apart, parallel and degenerate
-// configurations, and the extreme values of ValueSource.
+// Case generators, one per kind of query (in its unit, Query<In>::generate), biased toward the
+// decision boundary: shapes made to touch by construction, coordinates equal or a few ULPs
+// apart, parallel and degenerate configurations, and the extreme values of ValueSource.
 #pragma once
 
 #include <filesystem>
@@ -24,5 +24,9 @@ struct GenerateOptions {
 };
 
 Input generate(QueryKind kind, Choices& choices, const GenerateOptions& options = {});
+
+/// Whether a case of the kind builds hierarchies (about 30 ms each: tests and commands run fewer
+/// of them).
+bool builds_hierarchies(QueryKind kind);
 
 }  // namespace cc::harness

@@ -2,15 +2,15 @@
 // constructions: sizes, aspect ratios up to 2^40, translations far beyond the shapes' size,
 // frames at the orthonormality tolerance, nearly parallel frames, and the exact margin a
 // construction is placed at.
+#include "harness/generation/regimes.h"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
-#include "harness/generation/shapes.h"
-#include "harness/generation/margin_bisection.h"
 #include "harness/generation/rotation.h"
 
-namespace cc::harness::detail {
+namespace cc::harness {
 namespace {
 
 // A generic double in [1, 2): 52 random bits; the simplest is 1.
@@ -92,10 +92,6 @@ Mat3 nearly_parallel(ValueSource& v, const Mat3& base) {
   return out;
 }
 
-void shuffle_vertices(Choices& c, Triangle& t) {
-  for (std::size_t i = 3; i > 1; --i) std::swap(t.v[i - 1], t.v[c.draw(i)]);
-}
-
 MarginTarget draw_margin_target(Choices& c) {
   switch (c.draw(5)) {
     case 0:
@@ -113,4 +109,4 @@ double place_at(const Family& family, double s_overlap, double s_apart, const Ma
   return bisect_to_margin(family, s_overlap, s_apart, target.margin, target.side, *options.exact, 32).value_or(fallback);
 }
 
-}  // namespace cc::harness::detail
+}  // namespace cc::harness

@@ -1,28 +1,15 @@
-// Tolerance bands: how far from the decision boundary a party may disagree with the exact
-// answer and still count as right. Declared once, per query and per party, here; printed by
-// `crosscheck bands` and quoted in the README. A band is never widened to make a case pass.
+// The bands by kind and by party: the library's for each kind (declared in the kind's unit),
+// printed by `crosscheck bands` with every party's and quoted in the README.
 #pragma once
 
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "harness/judging/band.h"
 #include "harness/model/query_kind.h"
 
 namespace cc::harness {
-
-enum class BandSides {
-  exact,         // no disagreement is allowed
-  conservative,  // only "hit" for shapes apart by at most the width (never "miss" for contact)
-  two_sided,     // either way, within the width
-};
-
-struct Band {
-  double width = 0;        // in units of the exact verdict's margin (relative to the inputs' scale)
-  BandSides sides = BandSides::exact;
-  double param_width = 0;  // relative error allowed on an answer's parameters (ray t)
-  std::string_view why;    // where the width comes from
-};
 
 /// The library's band for a kind of query.
 Band library_band(QueryKind kind);
@@ -35,12 +22,6 @@ constexpr bool is_library_party(std::string_view party) { return party.starts_wi
 /// A second-opinion party's band (see FclSecondOpinion for the party names). Throws
 /// std::out_of_range for an unknown party.
 Band party_band(std::string_view party);
-
-/// Whether a disagreement lies inside the band: `says_hit` is what the party answered, `margin`
-/// the exact margin (> 0 overlapping, < 0 apart).
-bool within_band(const Band& band, bool says_hit, double margin);
-
-std::string_view to_string(BandSides sides);
 
 /// Every band, for printing: (query or party name, band).
 std::vector<std::pair<std::string, Band>> all_bands();

@@ -27,13 +27,13 @@ inline constexpr double kApproachFactor = 0x1p-8;
 inline constexpr double kNearBoundary = 0x1p-30;
 
 /// The library's certified quantities on one case, as its probed tests record them: one
-/// Records per call that stands alone (a mesh query's two objects are measured apart). Nothing
-/// for queries without a certified bound (aabb_aabb and broadphase compare their inputs).
+/// Records per call that stands alone (two placed meshes are measured apart). Nothing for kinds
+/// without a certified bound (those that compare their inputs). The kind's unit probes.
 std::vector<bounds::Records> probe_library(const Input& input);
 
 /// One term of one bound, as measured: a row of `crosscheck bounds`.
 struct TermCoverage {
-  std::string test;      // the library's test, e.g. "obb_obb"
+  std::string test;      // the library's test, e.g. "test_obb_obb"
   std::string quantity;  // what it certifies, e.g. "axis" (ExactReference's family)
   std::string term;      // a term of the bound, or "total" (the whole bound)
   double closest = 0;    // the closest approach: the largest error / term at a decision (0: none)
@@ -47,7 +47,8 @@ struct TermCoverage {
 };
 
 /// The rows every complete measurement has: each term of each certified test's bound, and each
-/// total, with the query kind whose cases measure it.
+/// total, with the query kind whose cases measure it (each kind's unit names its terms,
+/// Query<In>::bound_terms; a term two kinds measure is listed for each).
 struct ExpectedTerm {
   QueryKind kind;
   std::string_view test, quantity, term;
@@ -73,8 +74,8 @@ class BoundCoverage {
   std::vector<TermCoverage> rows_;
 };
 
-/// The test a quantity of a query kind's case belongs to (e.g. moving_obb's "aabb time" is
-/// sweep_aabb_aabb's).
+/// The test a quantity of a query kind's case belongs to, by the kind's terms (a moving box's
+/// "aabb time" is sweep_aabb_aabb's); the kind's name when none says.
 std::string_view test_of(QueryKind kind, std::string_view quantity);
 
 /// The table as text, one row per line: test, quantity, term, closest approach (as a power of

@@ -126,7 +126,7 @@ PartyStanding judge_pairs(std::string party, const Band& band, const Answer& sai
   return standing;
 }
 
-// broadphase: every pair of every frame where the party and the exact answer differ; the
+// Pairs over frames: every pair of every frame where the party and the exact answer differ; the
 // truth is exact comparisons of the given bounds, so within a band only if the band allows.
 PartyStanding judge_frames(std::string party, const Band& band, const Answer& said, const ExactVerdict& exact) {
   PartyStanding standing{std::move(party), Standing::right, ""};
@@ -190,11 +190,11 @@ std::optional<std::string> params_wrong(const Band& band, const Answer& said, co
 }
 
 PartyStanding judge_party(std::string party, const Band& band, const Answer& said, const ExactVerdict& exact,
-                          QueryKind kind) {
-  if (kind == QueryKind::broadphase) return judge_frames(std::move(party), band, said, exact);
+                          Judged judged) {
+  if (judged == Judged::frames) return judge_frames(std::move(party), band, said, exact);
   PartyStanding p{std::move(party), Standing::right, ""};
-  if (is_mesh_query(kind) || kind == QueryKind::ray_mesh) {
-    p = judge_pairs(std::move(p.party), band, said, exact, kind != QueryKind::mesh_mesh);
+  if (judged == Judged::all_pairs || judged == Judged::first_pair) {
+    p = judge_pairs(std::move(p.party), band, said, exact, judged == Judged::first_pair);
   } else if (said.hit != exact.answer.hit) {
     p.standing = within_band(band, said.hit, exact.margin) ? Standing::within_band : Standing::wrong;
     p.why = describe(said.hit, exact);
@@ -210,7 +210,16 @@ PartyStanding judge_party(std::string party, const Band& band, const Answer& sai
 
 }  // namespace
 
+Judged judged_of(QueryKind kind) {
+  return with_kind(kind, []<class In>() { return Query<In>::judged; });
+}
+
 Verdict classify(QueryKind kind, const Answer& library, const ExactVerdict& exact, const std::vector<Opinion>& opinions) {
+  return classify(library_band(kind), judged_of(kind), library, exact, opinions);
+}
+
+Verdict classify(const Band& band_of_library, Judged judged, const Answer& library, const ExactVerdict& exact,
+                 const std::vector<Opinion>& opinions) {
   Verdict v;
   if (exact.contract != Contract::in) {
     PartyStanding lib{"library", Standing::right, exact.note};
@@ -228,7 +237,7 @@ Verdict classify(QueryKind kind, const Answer& library, const ExactVerdict& exac
     return v;
   }
 
-  v.parties.push_back(judge_party("library", library_band(kind), library, exact, kind));
+  v.parties.push_back(judge_party("library", band_of_library, library, exact, judged));
   bool any_wrong = false, library_wrong = false, any_failed = false, any_band = v.parties[0].standing == Standing::within_band;
   for (const Opinion& o : opinions) {
     if (o.status == Opinion::Status::not_applicable) {
@@ -241,11 +250,11 @@ Verdict classify(QueryKind kind, const Answer& library, const ExactVerdict& exac
       continue;
     }
     const bool own = is_library_party(o.party);
-    Band band = own ? library_band(kind) : party_band(o.party);
+    Band band = own ? band_of_library : (o.band ? *o.band : party_band(o.party));
     if (!own) band.param_width = 0;  // second opinions give no parameters
     Answer said = o.answer;
     if (!own) said.params.clear();
-    v.parties.push_back(judge_party(o.party, band, said, exact, kind));
+    v.parties.push_back(judge_party(o.party, band, said, exact, judged));
     const bool wrong = v.parties.back().standing == Standing::wrong;
     (own ? library_wrong : any_wrong) |= wrong;
     any_band |= v.parties.back().standing == Standing::within_band;

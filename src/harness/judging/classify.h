@@ -44,7 +44,16 @@ struct Verdict {
   std::vector<PartyStanding> parties;  // the library first
 };
 
-/// Classifies a case from the library's answer, the exact verdict and the second opinions.
+/// Classifies a case from the library's answer, the exact verdict and the other parties'
+/// opinions (each judged by its own band; the library's parties by the kind's).
 Verdict classify(QueryKind kind, const Answer& library, const ExactVerdict& exact, const std::vector<Opinion>& opinions);
+
+/// The same for answers judged as a kind's are (`judged`, with the library's band), e.g. the
+/// pairs of two placed meshes outside a case.
+Verdict classify(const Band& library_band, Judged judged, const Answer& library, const ExactVerdict& exact,
+                 const std::vector<Opinion>& opinions);
+
+/// How a kind's answers are judged (its unit says).
+Judged judged_of(QueryKind kind);
 
 }  // namespace cc::harness

@@ -160,17 +160,6 @@ struct Map {
   }
 };
 
-// Whether the relation holds for this input: a k-DOP direction set not closed under the
-// operation (16 under permutations and flips, 24 under flips) does not.
-template <class In>
-bool admits(const In&, Relation) {
-  return true;
-}
-bool admits(const KdopKdopInput& in, Relation relation) {
-  if (relation == Relation::permute_axes && in.k == 16) return false;
-  return !(relation == Relation::flip_axis && (in.k == 16 || in.k == 24));
-}
-
 // The input with its fields named a and b exchanged.
 template <class In>
 In swapped(In in) {
@@ -261,46 +250,17 @@ struct Rename {
 
 }  // namespace
 
-std::string_view to_string(Relation r) {
-  switch (r) {
-    case Relation::swap_shapes: return "swap shapes";
-    case Relation::permute_axes: return "permute axes";
-    case Relation::flip_axis: return "flip an axis";
-    case Relation::scale: return "scale by 2^k";
-    case Relation::permute_vertices: return "reorder vertices";
-    case Relation::permute_faces: return "reorder faces";
-    case Relation::permute_points: return "reorder points";
-    case Relation::permute_objects: return "reorder objects";
-  }
-  return "?";
-}
-
 bool relation_applies(QueryKind kind, Relation relation) {
-  const bool triangles = kind == QueryKind::tri_aabb || kind == QueryKind::tri_obb || kind == QueryKind::tri_tri;
-  const bool meshes = is_mesh_query(kind) || kind == QueryKind::ray_mesh;
-  switch (relation) {
-    case Relation::permute_vertices: return triangles || meshes;
-    case Relation::permute_faces: return meshes;
-    case Relation::permute_points: return kind == QueryKind::kdop_kdop;
-    case Relation::permute_objects: return kind == QueryKind::broadphase;
-    default: break;
-  }
-  // A flip would make a pose an improper rotation; swapping the meshes transposes the pairs but
-  // moves a into b's frame instead, with other roundings; scaling would copy the meshes.
-  if (is_mesh_query(kind)) return relation == Relation::permute_axes;
-  // A geometric ray_mesh relation would have to transform the mesh's coordinates; broadphase has
-  // no two shapes.
-  if (kind == QueryKind::ray_mesh) return false;
-  if (kind == QueryKind::broadphase) return relation != Relation::swap_shapes;
-  const bool two_shapes_alike = kind != QueryKind::ray_aabb && kind != QueryKind::tri_aabb && kind != QueryKind::tri_obb;
-  return relation != Relation::swap_shapes || two_shapes_alike;
+  return with_kind(kind, [relation]<class In>() { return Query<In>::relations.has(relation); });
 }
 
 std::optional<Input> transform(const Input& input, Relation relation, int parameter) {
   if (!relation_applies(kind_of(input), relation)) return std::nullopt;
   return std::visit(
       [&]<class In>(const In& in) -> std::optional<Input> {
-        if (!admits(in, relation)) return std::nullopt;
+        if constexpr (requires { Query<In>::admits(in, relation); }) {
+          if (!Query<In>::admits(in, relation)) return std::nullopt;
+        }
         if (relation == Relation::swap_shapes) {
           if constexpr (field_index<In>("b") < std::tuple_size_v<std::decay_t<decltype(Fields<In>::list)>>) return swapped(in);
           return std::nullopt;

@@ -1,11 +1,23 @@
-// Generator for broadphase: boxes on a coarse grid (so endpoints are often equal and boxes touch),
+// The broadphase kind: boxes on a coarse grid (so endpoints are often equal and boxes touch),
 // zero-extent, identical and nested boxes, moving coherently frame to frame by small steps (and
-// sometimes a few ULPs), added and removed between frames.
+// sometimes a few ULPs), added and removed between frames. The library's sweeps, and what its
+// cases are.
+#include "harness/kinds/broadphase.h"
+
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <stdexcept>
 
+#include "collide/box_pairs.h"
+#include "collide/column_sweep.h"
+#include "collide/sweep_and_prune.h"
 #include "harness/generation/shapes.h"
+#include "harness/generation/touch.h"
+#include "harness/judging/configurations.h"
+#include "harness/judging/features.h"
 
-namespace cc::harness::detail {
+namespace cc::harness {
 namespace {
 
 // A box with corners on the half-integer grid, often flat or a point, or drawn freely.
@@ -31,9 +43,76 @@ Vec3 step(ValueSource& v) {
   return d;
 }
 
+std::vector<FacePair> slot_pairs(const std::vector<ObjectPair>& pairs, const std::vector<std::uint32_t>& slot_of) {
+  std::vector<FacePair> out;
+  for (const auto& [a, b] : pairs) out.push_back(std::minmax(slot_of[a], slot_of[b]));
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// A broadphase (ColumnSweep, SweepAndPrune) over the frames: boxes added, moved and removed as
+// the slots say. A box outside the domain makes add() or move() throw: the documented answer is
+// then no hit.
+template <class Sweep>
+Answer incremental(const BroadphaseInput& in) {
+  Answer a;
+  try {
+    Sweep broadphase;
+    std::map<std::size_t, ObjectId> id_of;   // slot -> id of its box
+    std::vector<std::uint32_t> slot_of;      // id -> slot
+    for (const auto& frame : in.frames) {
+      for (std::size_t i = 0; i < frame.size(); ++i) {
+        const auto it = id_of.find(i);
+        if (frame[i] && it == id_of.end()) {
+          id_of[i] = broadphase.add(*frame[i]);
+          slot_of.push_back(static_cast<std::uint32_t>(i));
+        } else if (frame[i]) {
+          broadphase.move(it->second, *frame[i]);
+        } else if (it != id_of.end()) {
+          broadphase.remove(it->second);
+          id_of.erase(it);
+        }
+      }
+      broadphase.update();
+      a.frames.push_back(slot_pairs(broadphase.pairs(), slot_of));
+      a.hit |= !a.frames.back().empty();
+    }
+  } catch (const std::invalid_argument&) {
+    return {};
+  }
+  return a;
+}
+
+Answer full_sorts(const BroadphaseInput& in) {
+  Answer a;
+  for (const auto& frame : in.frames) {
+    std::vector<Aabb> boxes;
+    std::vector<std::uint32_t> slot_of;
+    for (std::size_t i = 0; i < frame.size(); ++i) {
+      if (!frame[i]) continue;
+      boxes.push_back(*frame[i]);
+      slot_of.push_back(static_cast<std::uint32_t>(i));
+    }
+    a.frames.push_back(slot_pairs(sort_and_sweep(boxes), slot_of));
+    a.hit |= !a.frames.back().empty();
+  }
+  return a;
+}
+
+constexpr std::string_view kConfigurations[] = {"touching", "identical", "flat box", "added and removed", "many boxes"};
+
 }  // namespace
 
-BroadphaseInput generate_broadphase(ValueSource& v, const GenerateOptions& options) {
+Answer Query<BroadphaseInput>::ask(const BroadphaseInput& in) { return incremental<ColumnSweep>(in); }
+
+const std::vector<Party<BroadphaseInput>>& Query<BroadphaseInput>::library_parties() {
+  static const std::vector<Party<BroadphaseInput>> parties = {
+      {"library.sweep_and_prune", band, [](const BroadphaseInput& in) { return answered(incremental<SweepAndPrune>(in)); }},
+      {"library.sort_and_sweep", band, [](const BroadphaseInput& in) { return answered(full_sorts(in)); }}};
+  return parties;
+}
+
+BroadphaseInput Query<BroadphaseInput>::generate(ValueSource& v, const GenerateOptions& options) {
   Choices& c = v.choices();
   const bool big = c.chance(5);
   const std::size_t n = big ? 40 + c.draw(80) : 2 + c.draw(24);
@@ -77,4 +156,64 @@ BroadphaseInput generate_broadphase(ValueSource& v, const GenerateOptions& optio
   return in;
 }
 
-}  // namespace cc::harness::detail
+void Query<BroadphaseInput>::touch(BroadphaseInput& in, ValueSource& v) {
+  Choices& c = v.choices();
+  if (in.frames.empty() || in.frames[0].size() < 2) return;
+  auto& frame = in.frames[c.draw(in.frames.size())];
+  const std::size_t i = c.draw(frame.size()), j = c.draw(frame.size());
+  if (i == j || !frame[i] || !frame[j]) return;
+  put_face_to_face(*frame[i], *frame[j], c);
+}
+
+Features Query<BroadphaseInput>::features(const BroadphaseInput& in) {
+  Features f;
+  for (const auto& frame : in.frames) {
+    for (std::size_t i = 0; i < frame.size(); ++i) {
+      if (!frame[i]) continue;
+      f.degenerate |= zero_extent(*frame[i]);
+      for (std::size_t j = i + 1; j < frame.size() && !(f.parallel && f.degenerate); ++j) {
+        if (!frame[j]) continue;
+        f.degenerate |= *frame[i] == *frame[j];
+        for (int k = 0; k < 3; ++k) f.parallel |= frame[i]->lo[k] == frame[j]->hi[k] || frame[i]->hi[k] == frame[j]->lo[k];
+      }
+    }
+  }
+  return f;
+}
+
+std::span<const std::string_view> Query<BroadphaseInput>::configurations() { return kConfigurations; }
+
+void Query<BroadphaseInput>::recognise(const BroadphaseInput& in, Configurations& found) {
+  bool touching = false, identical = false, flat = false, added_and_removed = false;
+  const std::size_t slots = in.frames.empty() ? 0 : in.frames[0].size();
+  for (std::size_t i = 0; i < slots; ++i) {
+    bool present = false, absent = false;
+    for (const auto& frame : in.frames) (frame[i] ? present : absent) = true;
+    added_and_removed |= present && absent;
+  }
+  for (const auto& frame : in.frames) {
+    for (std::size_t i = 0; i < frame.size(); ++i) {
+      if (!frame[i]) continue;
+      flat |= zero_extents(frame[i]->hi - frame[i]->lo) > 0;
+      for (std::size_t j = i + 1; j < frame.size(); ++j) {
+        if (!frame[j]) continue;
+        identical |= *frame[i] == *frame[j];
+        for (int k = 0; k < 3; ++k) {
+          touching |= (frame[i]->lo[k] == frame[j]->hi[k] || frame[i]->hi[k] == frame[j]->lo[k]) &&
+                      test_aabb_aabb(*frame[i], *frame[j]);
+        }
+      }
+    }
+  }
+  found.add("touching", touching);
+  found.add("identical", identical);
+  found.add("flat box", flat);
+  found.add("added and removed", added_and_removed);
+  found.add("many boxes", slots >= 40);
+}
+
+std::span<const BoundTerm> Query<BroadphaseInput>::bound_terms() { return {}; }
+
+void Query<BroadphaseInput>::probe(const BroadphaseInput&, std::vector<bounds::Records>&) {}
+
+}  // namespace cc::harness

@@ -1,21 +1,30 @@
-// Generator for moving_obb: two boxes from the obb_obb generator (touching, nudged, parallel,
-// degenerate), given velocities and moved back so that they meet at a chosen time of the step:
-// 0, a quarter, a half or the end, or never; with equal velocities (no relative motion), equal
-// velocity components (a rate of exactly 0 on an axis), and axis-aligned boxes with exact bounds.
+// The moving_obb kind: two boxes from the static pair's generator (obb_obb's: touching, nudged,
+// parallel, degenerate), given velocities and moved back so that they meet at a chosen time of
+// the step: 0, a quarter, a half or the end, or never; with equal velocities (no relative
+// motion), equal velocity components (a rate of exactly 0 on an axis), and axis-aligned boxes
+// with exact bounds. The library's calls, and what its cases are.
+#include "harness/kinds/moving_obb.h"
+
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
+#include "collide/bound_records.h"
+#include "harness/generation/regimes.h"
 #include "harness/generation/shapes.h"
+#include "harness/generation/touch.h"
+#include "harness/judging/configurations.h"
+#include "harness/judging/features.h"
+#include "harness/kinds/obb_obb.h"
 
-namespace cc::harness::detail {
-
+namespace cc::harness {
 namespace {
 
 // Two boxes in the regimes of sweep_obb_obb's bound (those of test_obb_obb, with velocities up to
 // 2^30 times the boxes' size), b slid so that the boxes meet, at an exact margin, at time tau.
 MovingObbInput moving_pair_at_the_bound(ValueSource& v, const GenerateOptions& options) {
   Choices& c = v.choices();
-  const ObbObbInput boxes = obb_pair_in_regime(v);
+  const ObbPair boxes = obb_pair_in_regime(v);
   const double size = std::max({max_abs(boxes.a.half), max_abs(boxes.b.half), 0x1p-20});
   MovingObbInput in{{boxes.a, {}}, {boxes.b, {}}};
   if (c.chance(70)) in.a.velocity = std::ldexp(size, v.small_int(30)) * draw_direction(v);
@@ -36,12 +45,54 @@ MovingObbInput moving_pair_at_the_bound(ValueSource& v, const GenerateOptions& o
   return placed(s);
 }
 
+// An axis-aligned moving box as the Aabb it is, if its bounds are exact.
+std::optional<Aabb> exact_aabb(const MovingObb& m) {
+  if (!(m.box.axes == Mat3::identity())) return std::nullopt;
+  const Aabb box{m.box.center - m.box.half, m.box.center + m.box.half};
+  for (int k = 0; k < 3; ++k) {
+    // Both bounds exact: they give back the centre and the half extent.
+    if ((box.hi[k] + box.lo[k]) * 0.5 != m.box.center[k] || (box.hi[k] - box.lo[k]) * 0.5 != m.box.half[k] ||
+        box.hi[k] - m.box.center[k] != m.box.half[k] || m.box.center[k] - box.lo[k] != m.box.half[k]) {
+      return std::nullopt;
+    }
+  }
+  return box;
+}
+
+Answer sweep_answer(const SweepHit& h) {
+  Answer a = Answer::of(h.hit);
+  if (h.hit) a.params = {h.t_first, h.t_last};
+  return a;
+}
+
+constexpr std::string_view kConfigurations[] = {
+    "touching", "just apart", "parallel axes", "nearly parallel axes", "frame at the tolerance", "fast",
+    "no relative motion", "point box", "far from the origin"};
+
+constexpr BoundTerm kBoundTerms[] = {
+    {"sweep_obb_obb", "axis", "rounding"},       {"sweep_obb_obb", "axis", "frame"},
+    {"sweep_obb_obb", "axis", "total"},          {"sweep_obb_obb", "obb time", "rounding"},
+    {"sweep_obb_obb", "obb time", "total"},      {"sweep_aabb_aabb", "aabb time", "rounding"},
+    {"sweep_aabb_aabb", "aabb time", "total"}};
+
 }  // namespace
 
-MovingObbInput generate_moving_obb(ValueSource& v, const GenerateOptions& options) {
+Answer Query<MovingObbInput>::ask(const MovingObbInput& in) { return sweep_answer(sweep_obb_obb(in.a, in.b)); }
+
+const std::vector<Party<MovingObbInput>>& Query<MovingObbInput>::library_parties() {
+  static const std::vector<Party<MovingObbInput>> parties = {
+      {"library.sweep_aabb_aabb", band, [](const MovingObbInput& in) {
+         const auto a = exact_aabb(in.a), b = exact_aabb(in.b);
+         if (!a || !b) return not_applicable("not two exact axis-aligned boxes");
+         return answered(sweep_answer(sweep_aabb_aabb(*a, in.a.velocity, *b, in.b.velocity)));
+       }}};
+  return parties;
+}
+
+MovingObbInput Query<MovingObbInput>::generate(ValueSource& v, const GenerateOptions& options) {
   Choices& c = v.choices();
   if (c.chance(35)) return moving_pair_at_the_bound(v, options);
-  ObbObbInput at_contact = generate_obb_obb(v, options);
+  ObbObbInput at_contact = Query<ObbObbInput>::generate(v, options);
   if (c.chance(25)) {  // axis-aligned with simple values: sweep_aabb_aabb answers too
     for (Obb* b : {&at_contact.a, &at_contact.b}) {
       b->axes = Mat3::identity();
@@ -69,4 +120,42 @@ MovingObbInput generate_moving_obb(ValueSource& v, const GenerateOptions& option
   return in;
 }
 
-}  // namespace cc::harness::detail
+void Query<MovingObbInput>::touch(MovingObbInput& in, ValueSource& v) {
+  Obb b = in.b.box;
+  place_against_face(in.a.box, b, v, false);
+  in.b.box.center = b.center - 0.5 * (in.b.velocity - in.a.velocity);
+}
+
+Features Query<MovingObbInput>::features(const MovingObbInput& in) {
+  Features f = obb_pair_features(in.a.box, in.b.box);
+  const Vec3 w = in.b.velocity - in.a.velocity;
+  f.parallel |= w.x == 0 || w.y == 0 || w.z == 0;
+  f.degenerate |= is_zero(w);
+  return f;
+}
+
+std::span<const std::string_view> Query<MovingObbInput>::configurations() { return kConfigurations; }
+
+void Query<MovingObbInput>::recognise(const MovingObbInput& in, Configurations& found) {
+  found.margins();
+  found.axes_pair(in.a.box.axes, in.b.box.axes);
+  const Vec3 v = in.b.velocity - in.a.velocity;
+  const double size = std::max(max_abs(in.a.box.half), max_abs(in.b.box.half));
+  found.add("fast", size > 0 && max_abs(v) >= kFar * size);
+  found.add("no relative motion", v == Vec3{});
+  found.add("point box", zero_extents(in.a.box.half) == 3 || zero_extents(in.b.box.half) == 3);
+  found.far(std::max(max_abs(in.a.box.center), max_abs(in.b.box.center)), size);
+}
+
+std::span<const BoundTerm> Query<MovingObbInput>::bound_terms() { return kBoundTerms; }
+
+void Query<MovingObbInput>::probe(const MovingObbInput& in, std::vector<bounds::Records>& records) {
+  bounds::Records& r = records.emplace_back();
+  sweep_obb_obb(in.a, in.b, r);
+  if (in.a.box.axes == Mat3::identity() && in.b.box.axes == Mat3::identity()) {
+    const auto box = [](const Obb& b) { return Aabb{b.center - b.half, b.center + b.half}; };
+    sweep_aabb_aabb(box(in.a.box), in.a.velocity, box(in.b.box), in.b.velocity, r);
+  }
+}
+
+}  // namespace cc::harness

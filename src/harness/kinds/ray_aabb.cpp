@@ -3,15 +3,24 @@
 // inside; segments ending or starting on the boundary, with simple values or with generic ones
 // where the slab parameter rounds either way of the segment's end; tmax = 0; empty parameter
 // ranges; lines (tmin = -inf); zero directions.
+#include "harness/kinds/ray_aabb.h"
+
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
+#include "collide/bound_records.h"
+#include "collide/ray_aabb_batch.h"
+#include "harness/generation/regimes.h"
 #include "harness/generation/shapes.h"
+#include "harness/judging/configurations.h"
+#include "harness/judging/features.h"
 
-namespace cc::harness::detail {
+namespace cc::harness {
 namespace {
 
 // A direction component that makes the ray parallel to a slab: 0, -0, or subnormals whose
@@ -114,9 +123,67 @@ RayAabbInput ray_at_the_bound(ValueSource& v, const GenerateOptions& options) {
   return placed(s);
 }
 
+// ray_aabb through the batched test: the case's box at place 3 of 11 (in a vector block of 8
+// or 4) and at place 10 (in the scalar tail: 11 = 8 + 3 = 2 * 4 + 3), the other places holding
+// boxes made from it (moved by its size, inverted, a point at a corner, NaN, unbounded), each
+// answered by every kernel this processor runs. The answer is the hit they all give; a kernel or
+// a place that differs from the scalar test on any box is a failure (an impl_bug).
+Answer batched_ray(const RayAabbInput& in) {
+  const Aabb& box = in.box;
+  const Vec3 size = box.hi - box.lo;
+  const Aabb fillers[9] = {{box.lo + Vec3{size.x, 0, 0}, box.hi + Vec3{size.x, 0, 0}},
+                           {box.lo - Vec3{0, size.y, 0}, box.hi - Vec3{0, size.y, 0}},
+                           {box.hi, box.lo},
+                           {box.lo, box.lo},
+                           {box.hi, box.hi},
+                           {{box.lo.x, NAN, box.lo.z}, box.hi},
+                           {box.lo, {box.hi.x, box.hi.y, INFINITY}},
+                           {box.lo + Vec3{0, 0, size.z}, box.hi + Vec3{0, 0, size.z}},
+                           {{-box.hi.x, box.lo.y, box.lo.z}, {-box.lo.x, box.hi.y, box.hi.z}}};
+  constexpr std::size_t kInBlock = 3, kInTail = 10, kBoxes = 11;
+  AabbSoa boxes;
+  for (std::size_t i = 0, f = 0; i < kBoxes; ++i) boxes.push_back(i == kInBlock || i == kInTail ? box : fillers[f++]);
+  std::vector<std::uint8_t> hits(kBoxes);
+  for (simd::Kernel kernel : simd::supported_kernels()) {
+    test_ray_aabbs(in.ray, boxes, hits, kernel);
+    for (std::size_t i = 0; i < kBoxes; ++i) {
+      const bool scalar = intersect_ray_aabb(in.ray, boxes[i]).hit;
+      if (hits[i] != (scalar ? 1 : 0)) {
+        throw std::logic_error("the " + std::string(simd::to_string(kernel)) + " kernel says " +
+                               (hits[i] ? "hit" : "miss") + " for box " + std::to_string(i) + " of " +
+                               std::to_string(kBoxes) + (i == kInBlock || i == kInTail ? " (the case's)" : "") +
+                               ", intersect_ray_aabb " + (scalar ? "hit" : "miss"));
+      }
+    }
+  }
+  return Answer::of(hits[kInBlock] != 0);
+}
+
+constexpr std::string_view kConfigurations[] = {
+    "touching",  "just apart", "just overlapping", "parallel to a slab", "nearly parallel to a slab",
+    "from far away", "negative parameters", "segment", "zero direction", "flat box", "point box", "long box",
+    "far from the origin"};
+
+constexpr BoundTerm kBoundTerms[] = {{"intersect_ray_aabb", "slab parameter", "rounding"},
+                                     {"intersect_ray_aabb", "slab parameter", "total"}};
+
 }  // namespace
 
-RayAabbInput generate_ray_aabb(ValueSource& v, const GenerateOptions& options) {
+Answer Query<RayAabbInput>::ask(const RayAabbInput& in) {
+  const RayHit h = intersect_ray_aabb(in.ray, in.box);
+  if (!h.hit) return {};
+  Answer a = Answer::of(true);
+  a.params = {h.t_enter, h.t_exit};
+  return a;
+}
+
+const std::vector<Party<RayAabbInput>>& Query<RayAabbInput>::library_parties() {
+  static const std::vector<Party<RayAabbInput>> parties = {
+      {"library.test_ray_aabbs", band, [](const RayAabbInput& in) { return answered(batched_ray(in)); }}};
+  return parties;
+}
+
+RayAabbInput Query<RayAabbInput>::generate(ValueSource& v, const GenerateOptions& options) {
   if (v.choices().chance(35)) return ray_at_the_bound(v, options);
   RayAabbInput in;
   in.box = draw_aabb(v, options);
@@ -206,4 +273,51 @@ RayAabbInput generate_ray_aabb(ValueSource& v, const GenerateOptions& options) {
   return in;
 }
 
-}  // namespace cc::harness::detail
+void Query<RayAabbInput>::touch(RayAabbInput& in, ValueSource& v) {
+  const Vec3 p = draw_boundary_point(v, in.box);
+  if (in.ray.dir == Vec3{}) in.ray.dir = {1, 0, 0};
+  const double t = std::ldexp(1.0, v.small_int(4));
+  in.ray.origin = p - t * in.ray.dir;
+  if (v.choices().chance(30)) in.ray.tmax = t;  // a segment that ends on the boundary
+}
+
+Features Query<RayAabbInput>::features(const RayAabbInput& in) {
+  Features f;
+  for (int k = 0; k < 3; ++k) f.parallel |= in.ray.dir[k] == 0 || std::isinf(1.0 / in.ray.dir[k]);
+  f.degenerate = is_zero(in.ray.dir) || in.ray.tmin == in.ray.tmax || zero_extent(in.box);
+  return f;
+}
+
+std::span<const std::string_view> Query<RayAabbInput>::configurations() { return kConfigurations; }
+
+void Query<RayAabbInput>::recognise(const RayAabbInput& in, Configurations& found) {
+  found.margins();
+  const Ray& r = in.ray;
+  const double d = max_abs(r.dir);
+  bool par = false, nearly = false;
+  for (int k = 0; k < 3; ++k) {
+    const bool zero = r.dir[k] == 0 || std::isinf(1.0 / r.dir[k]);
+    par |= zero;
+    nearly |= !zero && std::fabs(r.dir[k]) <= kNearlyParallel * d;
+  }
+  found.add("parallel to a slab", par);
+  found.add("nearly parallel to a slab", nearly);
+  const Vec3 half = 0.5 * (in.box.hi - in.box.lo), center = 0.5 * (in.box.lo + in.box.hi);
+  const double size = max_abs(half);
+  double gap = 0;  // from the origin to the box, per axis at most
+  for (int k = 0; k < 3; ++k) gap = std::max({gap, in.box.lo[k] - r.origin[k], r.origin[k] - in.box.hi[k]});
+  found.add("from far away", size > 0 && gap >= kFar * size);
+  found.negative_parameters();
+  found.add("segment", std::isfinite(r.tmax) && r.tmax > 0);
+  found.add("zero direction", d == 0);
+  found.boxes(half);
+  found.far(max_abs(center), size);
+}
+
+std::span<const BoundTerm> Query<RayAabbInput>::bound_terms() { return kBoundTerms; }
+
+void Query<RayAabbInput>::probe(const RayAabbInput& in, std::vector<bounds::Records>& records) {
+  intersect_ray_aabb(in.ray, in.box, records.emplace_back());
+}
+
+}  // namespace cc::harness

@@ -1,15 +1,24 @@
-// Generator for ray_mesh: procedural meshes, FCL's env.obj or small soups with degenerate
-// triangles, probed by rays aimed at a vertex, at a point on an edge or inside a face (so they
-// touch by construction), grazing a face in its plane, parallel to the axes, or at random; as
-// rays, lines (tmin = -inf) and segments that end on the target.
+// The ray_mesh kind: procedural meshes, FCL's env.obj or small soups with degenerate triangles,
+// probed by rays aimed at a vertex, at a point on an edge or inside a face (so they touch by
+// construction), grazing a face in its plane, parallel to the axes, or at random; as rays, lines
+// (tmin = -inf) and segments that end on the target. The library's calls, and what its cases are.
+#include "harness/kinds/ray_mesh.h"
+
 #include <algorithm>
 #include <cmath>
 
-#include "harness/generation/shapes.h"
+#include "collide/bound_records.h"
+#include "collide/ray_mesh.h"
 #include "harness/formats/mesh_files.h"
+#include "harness/generation/meshes.h"
+#include "harness/generation/regimes.h"
 #include "harness/generation/rotation.h"
+#include "harness/generation/triangles.h"
+#include "harness/judging/configurations.h"
+#include "harness/judging/features.h"
+#include "harness/model/mesh_collide.h"
 
-namespace cc::harness::detail {
+namespace cc::harness {
 namespace {
 
 // The triangles as a mesh, each with its own three vertices.
@@ -96,9 +105,43 @@ RayMeshInput ray_at_the_bound(ValueSource& v, const GenerateOptions& options) {
   return placed(s);
 }
 
+Answer ray_answer(const RayMeshHit& h, bool with_t) {
+  Answer a = Answer::of(h.hit);
+  if (!h.hit) return a;
+  if (with_t) a.params = {h.t};
+  a.pairs = {{h.face, 0}};
+  return a;
+}
+
+constexpr std::string_view kConfigurations[] = {
+    "touching", "just apart", "grazing a face", "parallel to a face", "from far away", "negative parameters",
+    "zero direction", "degenerate face", "far from the origin"};
+
+constexpr BoundTerm kBoundTerms[] = {{"intersect_ray_triangle", "slab", "projection"},
+                                     {"intersect_ray_triangle", "slab", "speed"},
+                                     {"intersect_ray_triangle", "slab", "total"},
+                                     {"intersect_ray_triangle", "triangle parameter", "rounding"},
+                                     {"intersect_ray_triangle", "triangle parameter", "total"},
+                                     {"ray_mesh_closest", "face hit", "origin"},
+                                     {"ray_mesh_closest", "face hit", "mesh"},
+                                     {"ray_mesh_closest", "face hit", "total"}};
+
 }  // namespace
 
-RayMeshInput generate_ray_mesh(ValueSource& v, const GenerateOptions& options) {
+Answer Query<RayMeshInput>::ask(const RayMeshInput& in) {
+  return ray_answer(library_ray_mesh(in.mesh.mesh, in.library, in.ray, false), true);
+}
+
+const std::vector<Party<RayMeshInput>>& Query<RayMeshInput>::library_parties() {
+  static const std::vector<Party<RayMeshInput>> parties = {
+      {"library.ray_mesh_any", band,
+       [](const RayMeshInput& in) { return answered(ray_answer(library_ray_mesh(in.mesh.mesh, in.library, in.ray, true), false)); }},
+      {"library.ray_mesh_brute_force", band,
+       [](const RayMeshInput& in) { return answered(ray_answer(ray_mesh_brute_force(*in.mesh.mesh, in.ray), true)); }}};
+  return parties;
+}
+
+RayMeshInput Query<RayMeshInput>::generate(ValueSource& v, const GenerateOptions& options) {
   Choices& c = v.choices();
   if (c.chance(35)) return ray_at_the_bound(v, options);
   RayMeshInput in;
@@ -149,4 +192,62 @@ RayMeshInput generate_ray_mesh(ValueSource& v, const GenerateOptions& options) {
   return in;
 }
 
-}  // namespace cc::harness::detail
+void Query<RayMeshInput>::touch(RayMeshInput& in, ValueSource& v) {
+  Choices& c = v.choices();
+  const Triangle t = in.mesh.mesh->triangle(c.draw(in.mesh.mesh->size()));
+  in.ray.dir = t.v[c.draw(3)] - in.ray.origin;
+  in.ray.tmin = 0, in.ray.tmax = 1;
+}
+
+Features Query<RayMeshInput>::features(const RayMeshInput& in) {
+  Features f;
+  const Mesh& mesh = *in.mesh.mesh;
+  for (int k = 0; k < 3; ++k) f.parallel |= in.ray.dir[k] == 0;
+  f.degenerate = is_zero(in.ray.dir);
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    const Vec3 n = normal(mesh.triangle(i));
+    f.degenerate |= is_zero(n);
+    f.parallel |= !is_zero(n) && dot(n, in.ray.dir) == 0;
+  }
+  return f;
+}
+
+std::span<const std::string_view> Query<RayMeshInput>::configurations() { return kConfigurations; }
+
+void Query<RayMeshInput>::recognise(const RayMeshInput& in, Configurations& found) {
+  found.margins();
+  const Mesh& mesh = *in.mesh.mesh;
+  bool grazing = false, par = false, degenerate_face = false;
+  Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
+  for (std::size_t i = 0; i < mesh.size(); ++i) {
+    const Vec3 n = normal(mesh.triangle(i));
+    degenerate_face |= n == Vec3{};
+    const double s = length(n) > 0 && length(in.ray.dir) > 0 ? std::fabs(dot(n, in.ray.dir)) / (length(n) * length(in.ray.dir)) : 1;
+    grazing |= s > 0 && s <= kNearlyParallel;
+    par |= length(n) > 0 && length(in.ray.dir) > 0 && dot(n, in.ray.dir) == 0;
+  }
+  for (const Vec3& p : mesh.vertices) {
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
+  }
+  const double size = max_abs(hi - lo);
+  double gap = 0;
+  for (int k = 0; k < 3; ++k) gap = std::max({gap, lo[k] - in.ray.origin[k], in.ray.origin[k] - hi[k]});
+  found.add("grazing a face", grazing);
+  found.add("parallel to a face", par);
+  found.add("degenerate face", degenerate_face);
+  found.add("from far away", size > 0 && gap >= kFar * size);
+  found.negative_parameters();
+  found.add("zero direction", in.ray.dir == Vec3{});
+  found.far(std::max(max_abs(lo), max_abs(hi)), size);
+}
+
+std::span<const BoundTerm> Query<RayMeshInput>::bound_terms() { return kBoundTerms; }
+
+void Query<RayMeshInput>::probe(const RayMeshInput& in, std::vector<bounds::Records>& records) {
+  with_bv_type(in.library.bv, [&]<class BV>() {
+    const auto bvh = cached_bvh<BV>(in.mesh.mesh, in.library.build);
+    ray_mesh_closest(*bvh, in.ray, records.emplace_back());
+  });
+}
+
+}  // namespace cc::harness

@@ -3,11 +3,16 @@
 // concentric, and points (radius 0); out of contract, a negative radius on either. The scale is
 // a power of two (every square exact too) or a generic double whose squares round, either way
 // of each other, while the offset, the reach and the radii stay exact.
+#include "harness/kinds/sphere_sphere.h"
+
 #include <cmath>
 
-#include "harness/generation/shapes.h"
+#include "collide/bound_records.h"
+#include "harness/generation/regimes.h"
+#include "harness/judging/configurations.h"
+#include "harness/judging/features.h"
 
-namespace cc::harness::detail {
+namespace cc::harness {
 namespace {
 
 struct Quadruple {
@@ -39,9 +44,18 @@ SphereSphereInput balls_at_the_bound(ValueSource& v, const GenerateOptions& opti
   return placed(s);
 }
 
+constexpr std::string_view kConfigurations[] = {"touching", "just apart",  "just overlapping",   "point",
+                                                "radii far apart", "concentric", "far from the origin"};
+
+constexpr BoundTerm kBoundTerms[] = {{"test_sphere_sphere", "squares", "distance"},
+                                     {"test_sphere_sphere", "squares", "reach"},
+                                     {"test_sphere_sphere", "squares", "total"}};
+
 }  // namespace
 
-SphereSphereInput generate_sphere_sphere(ValueSource& v, const GenerateOptions& options) {
+Answer Query<SphereSphereInput>::ask(const SphereSphereInput& in) { return Answer::of(test_sphere_sphere(in.a, in.b)); }
+
+SphereSphereInput Query<SphereSphereInput>::generate(ValueSource& v, const GenerateOptions& options) {
   if (v.choices().chance(35)) return balls_at_the_bound(v, options);
   SphereSphereInput in;
   in.a = draw_sphere(v, options);
@@ -85,4 +99,32 @@ SphereSphereInput generate_sphere_sphere(ValueSource& v, const GenerateOptions& 
   return in;
 }
 
-}  // namespace cc::harness::detail
+void Query<SphereSphereInput>::touch(SphereSphereInput& in, ValueSource& v) {
+  Choices& c = v.choices();
+  Vec3 offset;
+  offset[static_cast<int>(c.draw(3))] = (c.chance(50) ? -1.0 : 1.0) * (in.a.radius + in.b.radius);
+  in.b.center = in.a.center + offset;
+}
+
+Features Query<SphereSphereInput>::features(const SphereSphereInput& in) {
+  return {false, false, in.a.radius == 0 || in.b.radius == 0};
+}
+
+std::span<const std::string_view> Query<SphereSphereInput>::configurations() { return kConfigurations; }
+
+void Query<SphereSphereInput>::recognise(const SphereSphereInput& in, Configurations& found) {
+  found.margins();
+  found.add("point", in.a.radius == 0 || in.b.radius == 0);
+  const double lo = std::min(in.a.radius, in.b.radius), hi = std::max(in.a.radius, in.b.radius);
+  found.add("radii far apart", lo > 0 && hi >= kFar * lo);
+  found.add("concentric", in.a.center == in.b.center);
+  found.far(std::max(max_abs(in.a.center), max_abs(in.b.center)), in.a.radius + in.b.radius);
+}
+
+std::span<const BoundTerm> Query<SphereSphereInput>::bound_terms() { return kBoundTerms; }
+
+void Query<SphereSphereInput>::probe(const SphereSphereInput& in, std::vector<bounds::Records>& records) {
+  test_sphere_sphere(in.a, in.b, records.emplace_back());
+}
+
+}  // namespace cc::harness

@@ -1,54 +1,25 @@
-// Generators for mesh_mesh and mesh_mesh_first: FCL's test meshes (env.obj against rob.obj) at
+// The pieces of the kinds on two placed meshes: FCL's test meshes (env.obj against rob.obj) at
 // random poses drawn the way FCL's own test draws them, poses bisected to near contact, exact
 // vertex-to-vertex contact under exact poses, and procedural meshes of every shape, with
-// degenerate triangles mixed in. The library's hierarchy (volume type, build, split rule,
-// update, descent) is drawn per case too.
+// degenerate triangles mixed in; the library's hierarchy (volume type, build, split rule,
+// update, descent) drawn per case too. The library's call, and what the cases are.
+#include "harness/kinds/two_meshes.h"
+
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 #include <utility>
 
-#include "harness/generation/shapes.h"
 #include "harness/formats/mesh_files.h"
+#include "harness/generation/meshes.h"
 #include "harness/generation/mesh_poses.h"
+#include "harness/generation/regimes.h"
 #include "harness/generation/rotation.h"
 #include "harness/generation/touch.h"
+#include "harness/judging/configurations.h"
+#include "harness/judging/features.h"
+#include "harness/model/mesh_collide.h"
 
-namespace cc::harness::detail {
-
-// Any hierarchy; for FCL's meshes (`few`), one of a few per volume type, so that the campaign's
-// workers build each once and reuse it over thousands of poses.
-LibraryBvh draw_library(Choices& c, bool few) {
-  LibraryBvh l;
-  l.bv = kAllBvTypes[c.draw(std::size(kAllBvTypes))];
-  l.build.strategy = static_cast<BuildStrategy>(c.draw(3));
-  if (few) {
-    constexpr std::pair<SplitAxis, SplitPoint> kRules[] = {{SplitAxis::longest_side, SplitPoint::midpoint},
-                                                           {SplitAxis::splatter, SplitPoint::mean},
-                                                           {SplitAxis::min_sum, SplitPoint::median}};
-    std::tie(l.build.axis, l.build.point) = kRules[c.draw(3)];
-    l.build.leaf_size = l.bv == BvType::obb ? 1 : 4;
-  } else {
-    l.build.axis = static_cast<SplitAxis>(c.draw(4));
-    l.build.point = static_cast<SplitPoint>(c.draw(3));
-    l.build.leaf_size = 1 + static_cast<int>(c.draw(4));
-  }
-  l.update = c.chance(50) ? BvUpdate::exact : BvUpdate::approximate;
-  l.descent = c.chance(50) ? Descent::larger : Descent::first_model;
-  return l;
-}
-
-ProceduralMesh draw_recipe(Choices& c, double size) {
-  ProceduralMesh r;
-  r.shape = static_cast<ProceduralMesh::Shape>(c.draw(5));
-  r.seed = c.draw(1000);
-  r.resolution = 2 + static_cast<int>(c.draw(10));
-  r.size = size;
-  r.thickness = c.chance(50) ? 0.0 : size * std::ldexp(1.0, -static_cast<int>(c.draw(30)));
-  r.degenerate_percent = c.chance(30) ? static_cast<int>(c.draw(40)) : 0;
-  return r;
-}
-
+namespace cc::harness {
 namespace {
 
 void out_of_contract(MeshPair& m, ValueSource& v) {
@@ -129,8 +100,6 @@ void poses_at_the_bound(MeshPair& m, ValueSource& v) {
   m.pose_b.translation = m.pose_a.translation;
 }
 
-}  // namespace
-
 MeshPair generate_meshes(ValueSource& v, const GenerateOptions& options) {
   Choices& c = v.choices();
   MeshPair m;
@@ -175,4 +144,71 @@ MeshPair generate_meshes(ValueSource& v, const GenerateOptions& options) {
   return m;
 }
 
-}  // namespace cc::harness::detail
+constexpr std::string_view kConfigurations[] = {"touching", "exact poses", "rotation at the tolerance",
+                                                "far from the origin", "degenerate face"};
+
+}  // namespace
+
+template <CollisionMode Mode>
+Answer TwoMeshes<Mode>::ask(const In& in) {
+  Answer a;
+  a.pairs = library_collide(in.meshes, Mode).pairs;
+  a.hit = !a.pairs.empty();
+  return a;
+}
+
+template <CollisionMode Mode>
+TwoMeshesInput<Mode> TwoMeshes<Mode>::generate(ValueSource& v, const GenerateOptions& options) {
+  return {generate_meshes(v, options)};
+}
+
+template <CollisionMode Mode>
+void TwoMeshes<Mode>::touch(In& in, ValueSource& v) {
+  touch_at_vertices(in.meshes, v.choices());
+}
+
+template <CollisionMode Mode>
+Features TwoMeshes<Mode>::features(const In& in) {
+  const MeshPair& m = in.meshes;
+  Features f;
+  Mat3 relative_rotation;
+  for (int c = 0; c < 3; ++c) relative_rotation.col[c] = transpose_times(m.pose_a.rotation, m.pose_b.rotation.col[c]);
+  f.parallel = true;
+  for (const Vec3& col : relative_rotation.col) {
+    int units = 0, zeros = 0;
+    for (int k = 0; k < 3; ++k) units += std::fabs(col[k]) == 1, zeros += col[k] == 0;
+    f.parallel &= units == 1 && zeros == 2;
+  }
+  for (const MeshRef* r : {&m.a, &m.b}) {
+    for (std::size_t i = 0; i < r->mesh->size() && !f.degenerate; ++i) f.degenerate = degenerate(r->mesh->triangle(i));
+  }
+  return f;
+}
+
+template <CollisionMode Mode>
+std::span<const std::string_view> TwoMeshes<Mode>::configurations() {
+  return kConfigurations;
+}
+
+template <CollisionMode Mode>
+void TwoMeshes<Mode>::recognise(const In& in, Configurations& found) {
+  const MeshPair& m = in.meshes;
+  found.margins();
+  const auto exact_pose = [](const RigidTransform& t) { return off_orthonormal(t.rotation) == 0; };
+  found.add("exact poses", exact_pose(m.pose_a) && exact_pose(m.pose_b));
+  found.add("rotation at the tolerance",
+            std::max(off_orthonormal(m.pose_a.rotation), off_orthonormal(m.pose_b.rotation)) >= kAtTheTolerance);
+  double size = 0;
+  bool degenerate_face = false;
+  for (const MeshRef* r : {&m.a, &m.b}) {
+    for (const Vec3& p : r->mesh->vertices) size = std::max(size, max_abs(p));
+    for (std::size_t i = 0; i < r->mesh->size() && !degenerate_face; ++i) degenerate_face = normal(r->mesh->triangle(i)) == Vec3{};
+  }
+  found.add("degenerate face", degenerate_face);
+  found.far(std::max(max_abs(m.pose_a.translation), max_abs(m.pose_b.translation)), size);
+}
+
+template struct TwoMeshes<CollisionMode::all_pairs>;
+template struct TwoMeshes<CollisionMode::first_hit>;
+
+}  // namespace cc::harness

@@ -32,6 +32,11 @@ CC_FOR_EACH_QUERY_KIND(CC_QUERY_KIND_CHECK)
 #undef CC_QUERY_KIND_CHECK
 static_assert(std::variant_size_v<Input> == kAllQueryKinds.size(), "every input type is a kind's");
 
+// Every kind's unit has every piece (kinds/query.h).
+#define CC_QUERY_KIND_UNIT(name, Name) static_assert(QueryUnit<Name##Input>, "the unit of " #name " lacks a piece");
+CC_FOR_EACH_QUERY_KIND(CC_QUERY_KIND_UNIT)
+#undef CC_QUERY_KIND_UNIT
+
 inline QueryKind kind_of(const Input& input) { return static_cast<QueryKind>(input.index()); }
 
 /// Calls f.template operator()<In>() with the input type of the kind.
@@ -46,7 +51,7 @@ decltype(auto) with_kind(QueryKind kind, F&& f) {
   return f.template operator()<InputOf<kAllQueryKinds.front()>>();  // never: every kind has a case
 }
 
-/// The two meshes of a query on two placed meshes; nothing for other kinds.
+/// The two placed meshes of a query on them; nothing for other kinds.
 inline const MeshPair* meshes_of(const Input& input) {
   return std::visit(
       []<class In>(const In& in) -> const MeshPair* {

@@ -21,7 +21,7 @@ BuildOptions build_options(const LibraryBvh& library);
 /// The library's answer to a mesh query, with its counters: both meshes' hierarchies of the
 /// case's type and build, walked with its update and descent options.
 CollisionResult library_collide(const MeshPair& meshes, CollisionMode mode);
-/// The library's answer to a ray_mesh query through the mesh's hierarchy of the given type and
+/// The library's answer to a ray against a mesh through the mesh's hierarchy of the given type and
 /// build: the closest hit, or (any_hit) the first one found.
 RayMeshHit library_ray_mesh(const std::shared_ptr<const Mesh>& mesh, const LibraryBvh& library, const Ray& ray,
                             bool any_hit);

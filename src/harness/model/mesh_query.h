@@ -1,5 +1,5 @@
-// The inputs of the mesh queries (mesh_mesh, mesh_mesh_first): two meshes, their poses, and the
-// hierarchy the library is asked to use.
+// The parts of the queries on meshes: a mesh and where it comes from, the hierarchy the library is
+// asked to use, two meshes placed by their poses.
 #pragma once
 
 #include <memory>

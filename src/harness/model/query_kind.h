@@ -18,10 +18,8 @@ enum class QueryKind { CC_FOR_EACH_QUERY_KIND(CC_QUERY_KIND_ENUMERATOR) };
 inline constexpr std::array kAllQueryKinds = {CC_FOR_EACH_QUERY_KIND(CC_QUERY_KIND_VALUE)};
 #undef CC_QUERY_KIND_VALUE
 
-/// True for the queries on two meshes (an answer is a set of triangle pairs).
-constexpr bool is_mesh_query(QueryKind kind) { return kind == QueryKind::mesh_mesh || kind == QueryKind::mesh_mesh_first; }
 
-/// The query's name, e.g. "ray_aabb".
+/// The query's name, as the registry gives it.
 std::string_view name(QueryKind kind);
 
 /// The query with that name, if any.

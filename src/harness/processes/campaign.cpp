@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "harness/generation/generate.h"
+#include "harness/judging/party.h"
 #include "harness/model/library.h"
 
 namespace cc::harness {
@@ -208,7 +209,9 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       if (phase != in_exact && phase != in_library) f.evaluation.exact = exact->judge(f.input);
       if (phase == in_second_opinion) {
         for (const std::string& party : second->parties(kind)) {
-          f.evaluation.opinions.push_back({party, Opinion::Status::failed, {}, f.crash});
+          Opinion o = failed(f.crash);
+          o.party = party;
+          f.evaluation.opinions.push_back(std::move(o));
         }
         f.evaluation.verdict = classify(kind, f.evaluation.library, f.evaluation.exact, f.evaluation.opinions);
         if (f.evaluation.verdict.cls != CaseClass::impl_bug) f.evaluation.verdict.cls = CaseClass::oracle_crash;

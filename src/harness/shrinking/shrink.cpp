@@ -74,7 +74,7 @@ Targets targets_of(const Input& input) {
   std::visit(
       [&t]<class In>(const In& in) {
         collect<In, Plain>(in, "", t);
-        if constexpr (requires { In::mode; }) t.first_hit = In::mode == CollisionMode::first_hit;
+        t.first_hit = Query<In>::judged == Judged::first_pair;
       },
       input);
   return t;

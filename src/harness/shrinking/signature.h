@@ -9,7 +9,7 @@
 
 namespace cc::harness {
 
-/// E.g. "tri_tri oracle_defect exact=miss fcl.Intersect::intersect_Triangle:wrong:hit".
+/// E.g. "<kind> oracle_defect exact=miss fcl.Intersect::intersect_Triangle:wrong:hit".
 std::string signature_of(QueryKind kind, const Evaluation& e);
 
 /// The signature plus coarse features of the inputs (touching, parallel, degenerate) and the

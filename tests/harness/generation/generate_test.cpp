@@ -9,7 +9,7 @@
 #include <cmath>
 
 #include "harness/judging/features.h"
-#include "harness/generation/shapes.h"
+#include "harness/generation/triangles.h"
 #include "harness/formats/input_json.h"
 #include "oracle/exact/exact_reference.h"
 #include "case_budget.h"
@@ -119,7 +119,7 @@ TEST(Generate, ATriangleTouchingAtAVertexIsOnTheBoundaryOrJustOffIt) {
   for (std::uint64_t seed = 0; seed < 2000; ++seed) {
     RandomChoices c(seed);
     ValueSource values(c, {});
-    const Triangle t = detail::triangle_touching_at_a_vertex(values, box);
+    const Triangle t = triangle_touching_at_a_vertex(values, box);
     int near = 0;
     for (const Vec3& p : t.v) {
       bool on = true;

@@ -132,7 +132,7 @@ TEST(Classify, MarginsOneUlpPastTheBandAreWrong) {
     for (QueryKind kind : kinds) {
       if (kind == QueryKind::broadphase) continue;  // judged by exact comparisons of boxes, not margins
       ++checked;
-      const bool meshes = is_mesh_query(kind) || kind == QueryKind::ray_mesh;
+      const bool meshes = judged_of(kind) == Judged::all_pairs || judged_of(kind) == Judged::first_pair;
       const std::string party = library ? "library" : name_of_band;
       // The verdict: apart (or, for pairs, a pair apart) at margin m; the party says hit there.
       const auto standing_at = [&](double m, bool says_hit, bool exact_hit) {
