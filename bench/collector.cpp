@@ -47,7 +47,7 @@ void Collector::flush(const std::string& name) {
   for (const Run& run : runs) {
     double items = 1;
     if (auto it = run.counters.find("items_per_iter"); it != run.counters.end() && it->second.value > 0) items = it->second.value;
-    ns.push_back(run.GetAdjustedRealTime() * ns_per_unit(run.time_unit) / items);
+    ns.push_back((cpu_time_ ? run.GetAdjustedCPUTime() : run.GetAdjustedRealTime()) * ns_per_unit(run.time_unit) / items);
     for (const auto& [key, counter] : run.counters) counters[key].push_back(counter.value);
   }
   Measured m;

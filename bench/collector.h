@@ -12,7 +12,7 @@ namespace cc::bench {
 
 /// One benchmark's result: medians over the repetitions that ran without error.
 struct Measured {
-  double ns_per_item = 0;  // real time per iteration / counter items_per_iter (1 if absent)
+  double ns_per_item = 0;  // real (or CPU) time per iteration / counter items_per_iter (1 if absent)
   int repetitions = 0;
   std::map<std::string, double> counters;  // medians of the user counters
 };
@@ -20,6 +20,8 @@ struct Measured {
 /// Collects results by registered name (e.g. "obb_obb/mixed/lib").
 class Collector final : public benchmark::BenchmarkReporter {
  public:
+  /// cpu_time: the process's CPU time per iteration instead of the wall-clock time.
+  explicit Collector(bool cpu_time = false) : cpu_time_(cpu_time) {}
   bool ReportContext(const Context& context) override;
   void ReportRuns(const std::vector<Run>& runs) override;
   void Finalize() override;
@@ -30,6 +32,7 @@ class Collector final : public benchmark::BenchmarkReporter {
   void flush(const std::string& name);
   std::map<std::string, std::vector<Run>> pending_;
   std::map<std::string, Measured> results_;
+  bool cpu_time_;
 };
 
 }  // namespace cc::bench

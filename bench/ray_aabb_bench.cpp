@@ -22,7 +22,7 @@ void register_ray_benchmarks() {
 
   // The two must agree; a benchmark of a wrong answer is worthless.
   std::size_t scalar_hits = 0, batch_hits = 0;
-  std::vector<std::uint8_t> hits(soa->size());
+  std::vector<std::uint64_t> hits(hit_words(soa->size()));
   for (const Ray& r : scene->rays) {
     for (const Aabb& b : scene->boxes) scalar_hits += intersect_ray_aabb(r, b).hit;
     batch_hits += test_ray_aabbs(r, *soa, hits);
@@ -46,7 +46,7 @@ void register_ray_benchmarks() {
     state.counters["hit_fraction"] = hit_fraction;
   });
   benchmark::RegisterBenchmark("ray_aabb/batched/lib", [=](benchmark::State& state) {
-    std::vector<std::uint8_t> out(soa->size());
+    std::vector<std::uint64_t> out(hit_words(soa->size()));
     for (auto _ : state) {
       std::size_t n = 0;
       for (const Ray& r : scene->rays) n += test_ray_aabbs(r, *soa, out);

@@ -6,6 +6,7 @@
 
 #include "oracle/exact/domain.h"
 #include "oracle/exact/judges.h"
+#include "oracle/exact/triangle_sat.h"
 
 namespace cc::exact {
 namespace {
@@ -94,6 +95,26 @@ class PlacedVertices {
   std::map<std::uint32_t, QVec3> cache_;
 };
 
+// A mesh's vertices placed exactly as dyadic points, each computed once.
+class DyadicVertices {
+ public:
+  DyadicVertices(const Mesh& mesh, const RigidTransform& pose) : mesh_(mesh), pose_(pose), placed_(mesh.vertices.size()) {}
+  std::array<const DyadicPoint*, 3> triangle(std::uint32_t face) {
+    std::array<const DyadicPoint*, 3> out;
+    for (int k = 0; k < 3; ++k) {
+      const std::uint32_t v = mesh_.faces[face][k];
+      if (!placed_[v]) placed_[v] = placed_dyadic(pose_, mesh_.vertices[v]);
+      out[k] = &*placed_[v];
+    }
+    return out;
+  }
+
+ private:
+  const Mesh& mesh_;
+  const RigidTransform& pose_;
+  std::vector<std::optional<DyadicPoint>> placed_;
+};
+
 bool finite_pose(const RigidTransform& t) { return finite(t.rotation) && finite(t.translation); }
 
 }  // namespace
@@ -130,13 +151,20 @@ harness::ExactVerdict judge_meshes(const MeshPair& m) {
   }
   v.unlisted_margin = -kNearMargin;
   PlacedVertices a(*m.a.mesh, m.pose_a), b(*m.b.mesh, m.pose_b);
+  DyadicVertices dyadic_a(*m.a.mesh, m.pose_a), dyadic_b(*m.b.mesh, m.pose_b);
+  thread_local TriangleSat sat;
   const double apart = kNearMargin * scale * (1 + 0x1p-20);
   for (const FacePair& p : candidates) {
     if (certainly_apart(float_a[p.first], float_b[p.second], apart)) continue;  // unlisted either way
-    const SatResult r = exact_sat(a.triangle(p.first, "A"), b.triangle(p.second, "B"));
-    const double margin = r.margin / scale;
-    if (r.hit) v.answer.pairs.push_back(p);
-    if (r.hit || margin >= -kNearMargin) v.pair_margins.push_back({p, margin});
+    // exact_sat in integers; in rationals where the directions are collinear (rank 1 or 0).
+    std::optional<TriangleSatVerdict> r = sat(dyadic_a.triangle(p.first), dyadic_b.triangle(p.second));
+    if (!r) {
+      const SatResult q = exact_sat(a.triangle(p.first, "A"), b.triangle(p.second, "B"));
+      r = TriangleSatVerdict{q.hit, q.rank, q.margin};
+    }
+    const double margin = r->margin / scale;
+    if (r->hit) v.answer.pairs.push_back(p);
+    if (r->hit || margin >= -kNearMargin) v.pair_margins.push_back({p, margin});
   }
   v.answer.hit = !v.answer.pairs.empty();
   v.margin = v.unlisted_margin;

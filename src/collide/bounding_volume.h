@@ -56,7 +56,7 @@ struct BoundingVolume<Aabb> {
   static Mat3 axes(const Aabb&) { return Mat3::identity(); }
   static Vec3 center(const Aabb& b) { return 0.5 * (b.lo + b.hi); }
   static Vec3 half(const Aabb& b) { return 0.5 * (b.hi - b.lo); }
-  static BvSize size(const Aabb& b) { return box_size(half(b)); }
+  [[gnu::always_inline]] static BvSize size(const Aabb& b) { return box_size(half(b)); }
 };
 
 template <>
@@ -92,7 +92,7 @@ struct BoundingVolume<Kdop<K>> {
   static Mat3 axes(const Kdop<K>&) { return Mat3::identity(); }
   static Vec3 center(const Kdop<K>& d) { return {0.5 * (d.lo[0] + d.hi[0]), 0.5 * (d.lo[1] + d.hi[1]), 0.5 * (d.lo[2] + d.hi[2])}; }
   static Vec3 half(const Kdop<K>& d) { return {0.5 * (d.hi[0] - d.lo[0]), 0.5 * (d.hi[1] - d.lo[1]), 0.5 * (d.hi[2] - d.lo[2])}; }
-  static BvSize size(const Kdop<K>& d) { return box_size(half(d)); }
+  [[gnu::always_inline]] static BvSize size(const Kdop<K>& d) { return box_size(half(d)); }
 };
 
 }  // namespace cc

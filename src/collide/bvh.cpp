@@ -159,6 +159,7 @@ void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points) {
 void fit_obbs(Bvh<Obb>& bvh) {
   std::vector<Vec3> stack, kept;
   std::vector<std::size_t> sizes;  // of the sets on the stack
+  ConvexHull h;
   for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
     BvhNode<Obb>& n = bvh.nodes[i];
     std::size_t count = 0;
@@ -176,10 +177,17 @@ void fit_obbs(Bvh<Obb>& bvh) {
     std::sort(candidates.begin(), candidates.end(), lexicographic_less);
     const std::span<const Vec3> distinct =
         candidates.first(static_cast<std::size_t>(std::unique(candidates.begin(), candidates.end()) - candidates.begin()));
-    const ConvexHull h = fast_convex_hull(distinct);
-    n.bv = fit_obb(obb_axes(distinct, h), distinct);
     kept.clear();
-    for (std::uint32_t v : h.vertices) kept.push_back(distinct[v]);
+    const std::optional<Mat3> flat =
+        n.leaf() && distinct.size() == 3 ? triangle_axes(distinct[0], distinct[1], distinct[2]) : std::nullopt;
+    if (flat) {  // a triangle's hull: itself, every vertex kept
+      n.bv = fit_obb(*flat, distinct);
+      kept.assign(distinct.begin(), distinct.end());
+    } else {
+      fast_convex_hull(distinct, h);
+      n.bv = fit_obb(obb_axes(distinct, h), distinct);
+      for (std::uint32_t v : h.vertices) kept.push_back(distinct[v]);
+    }
     stack.resize(stack.size() - count);
     stack.insert(stack.end(), kept.begin(), kept.end());
     sizes.push_back(kept.size());

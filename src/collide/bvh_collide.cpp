@@ -17,6 +17,22 @@ Triangle moved(const RigidTransform& t, const Triangle& tri) {
   return {{apply(t, tri.v[0]), apply(t, tri.v[1]), apply(t, tri.v[2])}};
 }
 
+// A triangle of b moved into a's frame, and its box.
+struct MovedTriangle {
+  Triangle triangle;
+  Aabb box;
+};
+
+// The smallest box that holds the triangle (exactly: its vertices' own coordinates).
+Aabb box_of(const Triangle& t) {
+  Aabb b;
+  for (int k = 0; k < 3; ++k) {
+    b.lo[k] = std::min(std::min(t.v[0][k], t.v[1][k]), t.v[2][k]);
+    b.hi[k] = std::max(std::max(t.v[0][k], t.v[1][k]), t.v[2][k]);
+  }
+  return b;
+}
+
 // Moving b's vertices rounds each coordinate by at most transform_error_bound (2^-50 of b's
 // magnitude plus the translation); the approximate update's bounds carry below 2^-45 of the
 // same, times the slab direction's 1-norm (see VolumeMover); a slab along a 3-term direction
@@ -142,10 +158,11 @@ class Traversal {
 
   CollisionResult run() {
     if (a_.nodes.empty() || b_.nodes.empty()) return std::move(result_);
-    // Pairs of nodes still to test, as a stack that grows by doubling (push_back is not inlined).
+    // Pairs of nodes still to test, as a stack that grows by doubling (push_back is not inlined,
+    // nor is this lambda unless asked).
     std::vector<std::pair<std::int32_t, std::int32_t>> stack(64);
     std::size_t size = 0;
-    const auto push = [&](std::int32_t na, std::int32_t nb) {
+    const auto push = [&](std::int32_t na, std::int32_t nb) __attribute__((always_inline)) {
       if (size == stack.size()) stack.resize(2 * size);
       stack[size++] = {na, nb};
     };
@@ -188,22 +205,28 @@ class Traversal {
     return volumes_[slot];
   }
 
-  const Triangle& triangle_of(std::uint32_t s) {
+  // b's triangle in slot s moved into a's frame (as the leaf test sees it), and its box.
+  const MovedTriangle& triangle_of(std::uint32_t s) {
     std::int32_t& slot = triangle_slot_[s];
     if (slot < 0) {
       slot = static_cast<std::int32_t>(triangles_.size());
-      triangles_.push_back(moved(t_, b_.triangle(s)));
+      const Triangle t = moved(t_, b_.triangle(s));
+      triangles_.push_back({t, box_of(t)});
     }
     return triangles_[slot];
   }
 
-  // Tests every triangle pair of two leaves; true when the query is answered (first hit).
+  // Tests every triangle pair of two leaves; true when the query is answered (first hit). Pairs
+  // whose boxes are apart are not tested: their triangles are apart.
   bool test_leaves(const BvhNode<BV>& x, const BvhNode<BV>& y) {
     for (std::uint32_t s = x.first; s < x.first + x.count; ++s) {
       const Triangle ta = a_.triangle(s);
+      const Aabb box_a = box_of(ta);
       for (std::uint32_t r = y.first; r < y.first + y.count; ++r) {
+        const MovedTriangle& tb = triangle_of(r);
+        if (!test_aabb_aabb(box_a, tb.box)) continue;
         ++result_.counters.primitive_tests;
-        if (!test_triangle_triangle(ta, triangle_of(r))) continue;
+        if (!test_triangle_triangle(ta, tb.triangle)) continue;
         result_.pairs.emplace_back(a_.order[s], b_.order[r]);
         if (options_.mode == CollisionMode::first_hit) return true;
       }
@@ -218,7 +241,7 @@ class Traversal {
   VolumeMover<BV> mover_;
   std::vector<std::int32_t> volume_slot_, triangle_slot_;  // index into volumes_, triangles_; -1 until moved
   std::vector<BV> volumes_;
-  std::vector<Triangle> triangles_;
+  std::vector<MovedTriangle> triangles_;
   CollisionResult result_;
 };
 

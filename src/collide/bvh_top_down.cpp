@@ -1,8 +1,11 @@
 // Top-down building: find a node's frame and extent, split its triangles along one axis of the
-// frame, recurse. The triangles are kept in one array (with their centroids) and each split
-// partitions the node's range of it in place, so a level of the tree costs one or two passes
-// over the triangles. Gottschalk's OBBTree is longest_side + midpoint with one triangle per
-// leaf; Klosowski's k-DOP trees choose the axis by min_sum, min_max, splatter or longest_side.
+// frame, recurse. A split sees each triangle as its centroid: the frame (for OBB trees the
+// principal axes of the centroids), the extent (the centroids' least and greatest projections)
+// and the side of the split point are the centroids'. The triangles are kept in one array (their
+// centroids and faces) and each split partitions the node's range of it in place, so a level of
+// the tree costs one or two passes over the triangles. Gottschalk's OBBTree is longest_side +
+// midpoint with one triangle per leaf; Klosowski's k-DOP trees choose the axis by min_sum,
+// min_max, splatter or longest_side.
 #include <algorithm>
 #include <span>
 
@@ -11,30 +14,37 @@
 namespace cc::detail {
 namespace {
 
+// x . y summed in order: a split is a heuristic (any split gives a valid tree), and the
+// projections are its most frequent operations, so they skip fp::sum3's symmetry.
+double projection(const Vec3& x, const Vec3& y) { return x.x * y.x + x.y * y.y + x.z * y.z; }
+
 // A triangle being sorted into the tree.
 struct Item {
-  Triangle triangle;
   Vec3 centroid;  // rounded, as (1/3) (v0 + v1 + v2)
   std::uint32_t face;
 };
 
-// Where a node's triangles lie in a frame: the frame's axes, and the least and greatest
-// projection of their vertices on each.
+// Where a node's centroids (or, for the sizes of min_sum and min_max, its vertices) lie in a
+// frame: the frame's axes, and the least and greatest projection on each.
 struct Extent {
   Mat3 axes;
   Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
   double midpoint(int k) const { return 0.5 * (lo[k] + hi[k]); }
   BvSize size() const { return box_size(0.5 * (hi - lo)); }
+  void add(const Vec3& p) {
+    const Vec3 s{projection(axes.col[0], p), projection(axes.col[1], p), projection(axes.col[2], p)};
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], s[k]), hi[k] = std::max(hi[k], s[k]);
+  }
 };
 
 template <class BV>
 class TopDown {
  public:
-  TopDown(const Mesh& mesh, const BuildOptions& options) : options_(options) {
+  TopDown(const Mesh& mesh, const BuildOptions& options) : mesh_(mesh), options_(options) {
     items_.reserve(mesh.size());
     for (std::uint32_t f = 0; f < mesh.size(); ++f) {
       const Triangle t = mesh.triangle(f);
-      items_.push_back({t, (1.0 / 3) * (t.v[0] + t.v[1] + t.v[2]), f});
+      items_.push_back({(1.0 / 3) * (t.v[0] + t.v[1] + t.v[2]), f});
     }
   }
 
@@ -70,24 +80,22 @@ class TopDown {
   static constexpr bool kObb = std::is_same_v<BV, Obb>;
 
   // Aabb and k-DOPs: the coordinate axes (the x, y, z slabs of a k-DOP are its box). Obb: the
-  // principal axes of the vertices (their covariance, as FCL splits), which cost one pass;
-  // the node's own box, fitted later from its convex hull, is not known before its children.
+  // principal axes of the centroids (their covariance), which cost one pass; the node's own box,
+  // fitted later from its convex hull, is not known before its children.
   Mat3 frame_of(std::span<const Item> items) const {
     if constexpr (!kObb) {
       return Mat3::identity();
     } else {
-      const Vec3 origin = items[0].triangle.v[0];
+      const Vec3 origin = items[0].centroid;
       Vec3 sum{0, 0, 0};
       std::array<double, 6> square{};  // xx, yy, zz, xy, yz, zx
       for (const Item& item : items) {
-        for (const Vec3& v : item.triangle.v) {
-          const Vec3 d = v - origin;
-          sum = sum + d;
-          square[0] += d.x * d.x, square[1] += d.y * d.y, square[2] += d.z * d.z;
-          square[3] += d.x * d.y, square[4] += d.y * d.z, square[5] += d.z * d.x;
-        }
+        const Vec3 d = item.centroid - origin;
+        sum = sum + d;
+        square[0] += d.x * d.x, square[1] += d.y * d.y, square[2] += d.z * d.z;
+        square[3] += d.x * d.y, square[4] += d.y * d.z, square[5] += d.z * d.x;
       }
-      const double n = 3.0 * static_cast<double>(items.size());
+      const double n = static_cast<double>(items.size());
       const Vec3 mean = (1 / n) * sum;
       return principal_axes({square[0] / n - mean.x * mean.x, square[1] / n - mean.y * mean.y,
                              square[2] / n - mean.z * mean.z, square[3] / n - mean.x * mean.y,
@@ -95,18 +103,29 @@ class TopDown {
     }
   }
 
+  // The centroids' extent in the frame.
   static Extent extent_of(std::span<const Item> items, const Mat3& axes) {
     Extent e{axes};
     for (const Item& item : items) {
-      for (const Vec3& v : item.triangle.v) {
-        const Vec3 s = kObb ? transpose_times(axes, v) : v;
-        for (int k = 0; k < 3; ++k) e.lo[k] = std::min(e.lo[k], s[k]), e.hi[k] = std::max(e.hi[k], s[k]);
+      if constexpr (kObb) {
+        e.add(item.centroid);
+      } else {
+        for (int k = 0; k < 3; ++k) e.lo[k] = std::min(e.lo[k], item.centroid[k]), e.hi[k] = std::max(e.hi[k], item.centroid[k]);
       }
     }
     return e;
   }
 
-  static double projection(const Item& item, const Vec3& axis) { return dot(item.centroid, axis); }
+  // The vertices' extent in the frame: the size of a child's box, for min_sum and min_max.
+  Extent vertex_extent(std::span<const Item> items, const Mat3& axes) const {
+    Extent e{axes};
+    for (const Item& item : items) {
+      for (const Vec3& v : mesh_.triangle(item.face).v) e.add(v);
+    }
+    return e;
+  }
+
+  static double projection(const Item& item, const Vec3& axis) { return detail::projection(item.centroid, axis); }
 
   // Reorders the items so that the first ones lie before the split point along `axis`; returns
   // how many, in (0, size). Falls back to the median when the point leaves one side empty
@@ -160,8 +179,8 @@ class TopDown {
         for (int k = 0; k < 3; ++k) {
           trial.assign(items.begin(), items.end());
           const std::uint32_t left = split(trial, e.axes.col[k], e.midpoint(k));
-          const BvSize a = extent_of(std::span(trial).first(left), e.axes).size();
-          const BvSize b = extent_of(std::span(trial).subspan(left), e.axes).size();
+          const BvSize a = vertex_extent(std::span(trial).first(left), e.axes).size();
+          const BvSize b = vertex_extent(std::span(trial).subspan(left), e.axes).size();
           const BvSize cost = options_.axis == SplitAxis::min_sum ? a + b : std::max(a, b);
           if (cost < best_cost) best_cost = cost, best = k;
         }
@@ -173,11 +192,13 @@ class TopDown {
 
   // Splits a node's items in two; returns the size of the first part, in (0, size).
   std::uint32_t split_node(Items items) const {
+    if (items.size() == 2) return 1;  // every rule splits two triangles one and one
     const Extent e = extent_of(items, frame_of(items));
     const int k = choose_axis(items, e);
     return split(items, e.axes.col[k], e.midpoint(k));
   }
 
+  const Mesh& mesh_;
   BuildOptions options_;
   std::vector<Item> items_;
 };

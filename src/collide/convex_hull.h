@@ -44,5 +44,7 @@ ConvexHull convex_hull(std::span<const Vec3> points);
 ///    and collinear points: all of them.
 /// Points must be finite and distinct (repeated points are harmless but slow it down).
 ConvexHull fast_convex_hull(std::span<const Vec3> points);
+/// The same, into `hull` (its storage reused: no allocation once it has grown).
+void fast_convex_hull(std::span<const Vec3> points, ConvexHull& hull);
 
 }  // namespace cc

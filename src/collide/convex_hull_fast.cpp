@@ -19,19 +19,30 @@ using Index = std::uint32_t;
 
 double cross2(double ax, double ay, double bx, double by) { return ax * by - ay * bx; }
 
+constexpr int kNext[3] = {1, 2, 0};  // (e + 1) % 3
+
+// x . y summed in order. The facets and their distances are a fitting heuristic with a
+// tolerance (what the hull keeps is certified by orientations, below), so they need not be
+// symmetric in the coordinates as the library's tests are (fp::sum3); they are the hull's
+// most frequent operations.
+double plain_dot(const Vec3& x, const Vec3& y) { return x.x * y.x + x.y * y.y + x.z * y.z; }
+
 // The buffers are kept from one hull to the next (one object per thread): a hierarchy computes
 // a hull per node, most of them of a few points.
 class QuickHull {
  public:
-  ConvexHull run(std::span<const Vec3> points) {
+  void run(std::span<const Vec3> points, ConvexHull& hull) {
+    hull.triangles.clear(), hull.vertices.clear();
     p_ = points;
-    faces_.clear(), pending_.clear(), q_.clear(), kept_.clear();
-    if (points.empty()) return {};
+    faces_.clear(), pending_.clear(), kept_.clear();
+    const auto n = static_cast<Index>(points.size());
+    if (n == 0) return;
     // Coordinates relative to the first point; the extremes along the axes.
+    q_.resize(n);
     const Vec3 origin = points[0];
     std::array<Index, 6> extremes{};
-    for (Index i = 0; i < points.size(); ++i) {
-      q_.push_back(points[i] - origin);
+    for (Index i = 0; i < n; ++i) {
+      q_[i] = points[i] - origin;
       for (int k = 0; k < 3; ++k) {
         if (q_[i][k] < q_[extremes[2 * k]][k]) extremes[2 * k] = i;
         if (q_[i][k] > q_[extremes[2 * k + 1]][k]) extremes[2 * k + 1] = i;
@@ -47,36 +58,43 @@ class QuickHull {
       extent = std::max(extent, e);
     }
     eps_ = 0x1p-40 * extent + 0x1p-44 * max_abs(origin) + fp::subnormal_slack;
-    if (extent == 0) return {{}, {0}};
+    if (extent == 0) {
+      hull.vertices.push_back(0);
+      return;
+    }
     // The simplex: the extremes along the axis of largest spread, the point farthest from their
     // line, the point farthest from the plane of the three.
     Index a = extremes[2 * axis], b = extremes[2 * axis + 1];
     const Vec3 ab = q_[b] - q_[a];
     Index c = a;
     double far = 0;
-    for (Index i = 0; i < q_.size(); ++i) {
+    for (Index i = 0; i < n; ++i) {
       const double d = norm_squared(cross(q_[i] - q_[a], ab));
       if (d > far) far = d, c = i;
     }
-    if (std::sqrt(far) <= eps_ * std::sqrt(norm_squared(ab))) return all_points({});  // collinear
+    if (std::sqrt(far) <= eps_ * std::sqrt(norm_squared(ab))) return all_points(hull);  // collinear
     const Vec3 normal = unit(cross(ab, q_[c] - q_[a]));
-    if (q_.size() == 3) return all_points({{0, 1, 2}, {0, 2, 1}});  // a triangle, both sides
+    if (n == 3) {  // a triangle, both sides
+      hull.triangles.push_back({0, 1, 2});
+      hull.triangles.push_back({0, 2, 1});
+      return all_points(hull);
+    }
     Index d = a;
     far = 0;
     double side = 0;
-    for (Index i = 0; i < q_.size(); ++i) {
-      const double h = dot(normal, q_[i] - q_[a]);
+    for (Index i = 0; i < n; ++i) {
+      const double h = plain_dot(normal, q_[i] - q_[a]);
       if (std::fabs(h) > far) far = std::fabs(h), d = i, side = h;
     }
-    if (far <= eps_) return flat(normal);
+    if (far <= eps_) return flat(normal, hull);
     if (side > 0) std::swap(b, c);  // d below the face (a, b, c)
-    next_.assign(q_.size(), -1);
-    taken_.assign(q_.size(), false);
+    next_.resize(n);
+    if (mark_.size() < n) mark_.resize(n, 0);
     const int f0 = add_face(a, b, c), f1 = add_face(a, d, b), f2 = add_face(b, d, c), f3 = add_face(c, d, a);
     link(f0, 0, f1, 2), link(f0, 1, f2, 2), link(f0, 2, f3, 2);
     link(f1, 0, f3, 1), link(f1, 1, f2, 0), link(f2, 1, f3, 0);
     rest_.clear();
-    for (Index i = 0; i < q_.size(); ++i) {
+    for (Index i = 0; i < n; ++i) {
       if (i != a && i != b && i != c && i != d) rest_.push_back(i);
     }
     const std::array<int, 4> simplex{f0, f1, f2, f3};
@@ -87,19 +105,17 @@ class QuickHull {
       pending_.pop_back();
       if (faces_[f].alive && faces_[f].head >= 0) add_farthest_point(f);
     }
-    ConvexHull hull;
-    taken_.assign(q_.size(), false);
+    const std::uint32_t taken = next_stamp();
     for (const Face& f : faces_) {
       if (!f.alive) continue;
       hull.triangles.push_back(f.v);
       for (Index v : f.v) {
-        if (!taken_[v]) taken_[v] = true, hull.vertices.push_back(v);
+        if (mark_[v] != taken) mark_[v] = taken, hull.vertices.push_back(v);
       }
     }
     for (Index v : kept_) {
-      if (!taken_[v]) taken_[v] = true, hull.vertices.push_back(v);
+      if (mark_[v] != taken) mark_[v] = taken, hull.vertices.push_back(v);
     }
-    return hull;
   }
 
  private:
@@ -125,23 +141,28 @@ class QuickHull {
     bool alive = true;
   };
 
-  static double norm_squared(const Vec3& v) { return dot(v, v); }
+  static double norm_squared(const Vec3& v) { return plain_dot(v, v); }
   static Vec3 unit(const Vec3& v) {
     const double n = std::sqrt(norm_squared(v));
     return n > 0 ? (1 / n) * v : Vec3{0, 0, 0};
   }
-  double distance(const Face& f, Index i) const { return dot(f.n, q_[i]) - f.offset; }
+  [[gnu::always_inline]] double distance(const Face& f, Index i) const { return plain_dot(f.n, q_[i]) - f.offset; }
 
-  int add_face(Index a, Index b, Index c) {
-    Face f;
+  [[gnu::always_inline]] int add_face(Index a, Index b, Index c) {
+    Face& f = faces_.emplace_back();
     f.v = {a, b, c};
     f.adj = {-1, -1, -1};
     f.n = unit(cross(q_[b] - q_[a], q_[c] - q_[a]));
-    f.offset = dot(f.n, q_[a]);
-    faces_.push_back(f);
+    f.offset = plain_dot(f.n, q_[a]);
     return static_cast<int>(faces_.size() - 1);
   }
-  void link(int f, int edge, int g, int g_edge) { faces_[f].adj[edge] = g, faces_[g].adj[g_edge] = f; }
+
+  // A fresh value for mark_: points marked with it are those marked since.
+  std::uint32_t next_stamp() {
+    if (++stamp_ == 0) std::fill(mark_.begin(), mark_.end(), 0), stamp_ = 1;
+    return stamp_;
+  }
+  [[gnu::always_inline]] void link(int f, int edge, int g, int g_edge) { faces_[f].adj[edge] = g, faces_[g].adj[g_edge] = f; }
 
   // Each point goes to the first face it lies outside of; one outside none is dropped if it lies
   // certainly inside one of the tetrahedra, and kept otherwise.
@@ -214,7 +235,7 @@ class QuickHull {
       }
       const Face& f = faces_[step.face];
       const int e = step.edge;
-      step.edge = (e + 1) % 3, --step.left;
+      step.edge = kNext[e], --step.left;
       const int g = f.adj[e];
       if (!faces_[g].alive) continue;  // seen already
       if (distance(faces_[g], eye) > eps_) {
@@ -223,21 +244,21 @@ class QuickHull {
         // Enter g by its edge back to f; look across its other two edges.
         int back = 0;
         while (faces_[g].adj[back] != step.face) ++back;
-        path.push_back({g, (back + 1) % 3, 2});
+        path.push_back({g, kNext[back], 2});
       } else {
-        const Edge edge{f.v[e], f.v[(e + 1) % 3], g};
-        simple &= edge.from != eye && edge.to != eye && (loop.empty() || loop.back().to == edge.from);
-        loop.push_back(edge);
+        loop.push_back({f.v[e], f.v[kNext[e]], g});
       }
     }
-    // The loop must close, each vertex once (else the eye is dropped: rounding made the hull
-    // inconsistent there).
-    simple &= !loop.empty() && loop.back().to == loop[0].from;
-    for (const Edge& e : loop) {
-      simple &= !taken_[e.from];
-      taken_[e.from] = true;
+    // The loop must be one closed chain without the eye, each vertex once (else the eye is
+    // dropped: rounding made the hull inconsistent there).
+    const std::uint32_t on_loop = next_stamp();
+    const auto n = static_cast<int>(loop.size());
+    for (int k = 0; k < n; ++k) {
+      const Edge& e = loop[k];
+      simple &= e.from != eye && e.to == loop[k + 1 == n ? 0 : k + 1].from && mark_[e.from] != on_loop;
+      mark_[e.from] = on_loop;
     }
-    for (const Edge& e : loop) taken_[e.from] = false;
+    simple &= n > 0;
     if (!simple) {
       for (int f : visible) faces_[f].alive = true;
       drop(seed, eye);
@@ -246,28 +267,22 @@ class QuickHull {
       return;
     }
     const auto first = static_cast<int>(faces_.size());
-    const auto n = static_cast<int>(loop.size());
     fresh_.clear();
     for (int k = 0; k < n; ++k) {
       const int f = add_face(loop[k].from, loop[k].to, eye);
       fresh_.push_back(f);
-      Face& out = faces_[loop[k].outside];
+      const Face& out = faces_[loop[k].outside];  // has the horizon edge as to -> from
       for (int e = 0; e < 3; ++e) {
-        if (out.v[e] == loop[k].to && out.v[(e + 1) % 3] == loop[k].from) link(f, 0, loop[k].outside, e);
+        if (out.v[e] == loop[k].to && out.v[kNext[e]] == loop[k].from) link(f, 0, loop[k].outside, e);
       }
     }
-    for (int k = 0; k < n; ++k) link(first + k, 1, first + (k + 1) % n, 2);
-    // The visible faces' vertices off the horizon are swallowed: kept, as no certificate says
-    // they are inside.
-    for (const Edge& e : loop) taken_[e.from] = true;
+    for (int k = 0; k < n; ++k) link(first + k, 1, first + (k + 1 == n ? 0 : k + 1), 2);
+    // The visible faces' vertices off the horizon (which is marked on_loop) are swallowed: kept,
+    // as no certificate says they are inside.
     for (int f : visible) {
       for (Index v : faces_[f].v) {
-        if (!taken_[v]) taken_[v] = true, kept_.push_back(v);
+        if (mark_[v] != on_loop) mark_[v] = on_loop, kept_.push_back(v);
       }
-    }
-    for (const Edge& e : loop) taken_[e.from] = false;
-    for (int f : visible) {
-      for (Index v : faces_[f].v) taken_[v] = false;
     }
     rest_.clear();
     tetrahedra_.clear();
@@ -297,22 +312,19 @@ class QuickHull {
   }
 
   // Nearly collinear or flat points: nothing is certified, every point is a vertex.
-  ConvexHull all_points(std::vector<std::array<Index, 3>> triangles) const {
-    ConvexHull hull;
-    hull.triangles = std::move(triangles);
+  void all_points(ConvexHull& hull) const {
     hull.vertices.resize(q_.size());
     for (Index i = 0; i < q_.size(); ++i) hull.vertices[i] = i;
-    return hull;
   }
 
   // Points in a plane: the polygon by a monotone chain in the plane, fanned into triangles on
   // both sides (so area-weighted sums are the polygon's counted twice).
-  ConvexHull flat(const Vec3& normal) {
+  void flat(const Vec3& normal, ConvexHull& hull) {
     const Vec3 e1 = unit(std::fabs(normal.x) < 0.9 ? cross(normal, Vec3{1, 0, 0}) : cross(normal, Vec3{0, 1, 0}));
     const Vec3 e2 = cross(normal, e1);
     std::vector<Planar>& q = planar_;
     q.clear();
-    for (Index i = 0; i < q_.size(); ++i) q.push_back({dot(q_[i], e1), dot(q_[i], e2), i});
+    for (Index i = 0; i < q_.size(); ++i) q.push_back({plain_dot(q_[i], e1), plain_dot(q_[i], e2), i});
     std::sort(q.begin(), q.end(), [](const Planar& a, const Planar& b) { return a.u != b.u ? a.u < b.u : a.v < b.v; });
     std::vector<Planar>& chain = chain_;
     chain.resize(2 * q.size());
@@ -329,13 +341,12 @@ class QuickHull {
       while (k >= lower && !turns_left(q[i])) --k;
       chain[k++] = q[i];
     }
-    std::vector<std::array<Index, 3>> triangles;
     const std::size_t corners = k - 1;  // the last point repeats the first
     for (std::size_t i = 1; i + 1 < corners; ++i) {
-      triangles.push_back({chain[0].id, chain[i].id, chain[i + 1].id});
-      triangles.push_back({chain[0].id, chain[i + 1].id, chain[i].id});
+      hull.triangles.push_back({chain[0].id, chain[i].id, chain[i + 1].id});
+      hull.triangles.push_back({chain[0].id, chain[i + 1].id, chain[i].id});
     }
-    return all_points(std::move(triangles));
+    all_points(hull);
   }
 
   std::span<const Vec3> p_;
@@ -351,14 +362,21 @@ class QuickHull {
   std::vector<Edge> loop_;
   std::vector<Step> path_;
   std::vector<Planar> planar_, chain_;
-  std::vector<std::uint8_t> taken_;
+  std::vector<std::uint32_t> mark_;  // per point: the stamp it was last marked with
+  std::uint32_t stamp_ = 0;
 };
 
 }  // namespace
 
+void fast_convex_hull(std::span<const Vec3> points, ConvexHull& hull) {
+  thread_local QuickHull quickhull;
+  quickhull.run(points, hull);
+}
+
 ConvexHull fast_convex_hull(std::span<const Vec3> points) {
-  thread_local QuickHull hull;
-  return hull.run(points);
+  ConvexHull hull;
+  fast_convex_hull(points, hull);
+  return hull;
 }
 
 }  // namespace cc

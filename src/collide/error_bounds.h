@@ -8,6 +8,7 @@
 // where relative bounds fail; it is not a named term (it exceeds one rounding there by 2^16).
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 
 #include "collide/fp.h"
@@ -23,8 +24,10 @@ struct Widening {
   double relative;   // of |t|
   /// The term: how far t may be from its exact value, outside the subnormal range.
   double rounding(double t) const { return relative * std::fabs(t); }
-  double lower(double t) const { return (t > 0 ? t * (1 - relative) : t * (1 + relative)) - fp::subnormal_slack; }
-  double upper(double t) const { return (t > 0 ? t * (1 + relative) : t * (1 - relative)) + fp::subnormal_slack; }
+  /// t (1 - relative) for t > 0, t (1 + relative) otherwise, less the slack: rounding is monotone,
+  /// so that is the smaller of the two products (both the same double for t = +-0, NaN, +-inf).
+  double lower(double t) const { return std::min(t * (1 - relative), t * (1 + relative)) - fp::subnormal_slack; }
+  double upper(double t) const { return std::max(t * (1 - relative), t * (1 + relative)) + fp::subnormal_slack; }
 };
 
 /// intersect_ray_aabb (and test_ray_aabbs, and the box entries of ray_mesh): a slab parameter
@@ -48,8 +51,8 @@ inline constexpr Widening kSweepAabbTime{"aabb time", 8 * fp::u};
 /// scaled to [1, 4)) is certified against total().
 struct SphereBound {
   double dist2, reach2;  // as computed
-  /// The difference, the squares and sum3 make dist2 within 5u of its value, the subtraction
-  /// adds u of it: 8u leaves room for the bound's own rounding.
+  /// The difference, the squares and their sum (in any order) make dist2 within 5u of its value,
+  /// the subtraction adds u of it: 8u leaves room for the bound's own rounding.
   double distance() const { return 8 * fp::u * dist2; }
   /// The sum and the square make reach2 within 3u.
   double reach() const { return 8 * fp::u * reach2; }

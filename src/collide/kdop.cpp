@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "collide/bound_records.h"
+#include "collide/simd_lanes.h"
 
 namespace cc {
 namespace {
@@ -75,10 +76,96 @@ Kdop<K> fit(std::span<const Vec3> points, Records& records) {
   return dop;
 }
 
+// The same fit, L::kWidth points at a time: lane j of every slab's bounds grows by the points
+// j, j + w, j + 2w, ... exactly as fit() grows a slab by one point (the candidate first in min
+// and max, so that a NaN candidate is ignored and ties keep the earlier value, as std::min and
+// std::max do), and the lanes are merged at the end. For a point set with finite coordinates the
+// bounds are fit()'s bit for bit, except that a bound of 0 may differ from it in the sign of the
+// zero (fit()'s sign depends on which point came first): false then, and the caller takes fit().
+template <class L, int K>
+bool fit_lanes(std::span<const Vec3> points, Kdop<K>& dop) {
+  using D = typename L::D;
+  constexpr int w = L::kWidth, slabs = K / 2;
+  constexpr auto dirs = kdop_directions<K>();
+  const std::size_t n = points.size();
+  D lo[slabs], hi[slabs];
+  for (int i = 0; i < slabs; ++i) lo[i] = L::broadcast(INFINITY), hi[i] = L::broadcast(-INFINITY);
+  const D widen = L::broadcast(bounds::kKdopProjection);
+  bool finite_points = true;
+  for (std::size_t first = 0; first < n; first += w) {
+    double xs[w], ys[w], zs[w];  // the block's points by coordinate; past the end, the last again
+    for (int j = 0; j < w; ++j) {
+      const Vec3& p = points[std::min(first + j, n - 1)];
+      finite_points &= finite(p);
+      xs[j] = p.x, ys[j] = p.y, zs[j] = p.z;
+    }
+    const D coordinate[3] = {L::load(xs), L::load(ys), L::load(zs)};
+    [&]<std::size_t... I>(std::index_sequence<I...>) {
+      ([&] {
+        constexpr KdopDirection d = dirs[I];
+        constexpr int sign[3] = {d.x, d.y, d.z};
+        D t[3];  // the exact products d_k p_k of the direction's terms
+        int m = 0;
+        for (int k = 0; k < 3; ++k) {
+          if (sign[k] != 0) t[m++] = sign[k] > 0 ? coordinate[k] : coordinate[k] * L::broadcast(-1.0);
+        }
+        D low, high;
+        if (m == 1) {
+          low = high = t[0];
+        } else if (m == 2) {
+          const D s = t[0] + t[1], pad = widen * (L::abs(t[0]) + L::abs(t[1]));
+          low = s - pad, high = s + pad;
+        } else {
+          const auto sum3 = [](const D& a, const D& b, const D& c) {  // fp::sum3, lane by lane
+            const D x = (a + b) + c, y = (a + c) + b, z = (b + c) + a;
+            return L::max(L::min(x, y), L::min(L::max(x, y), z));
+          };
+          const D s = sum3(t[0], t[1], t[2]), pad = widen * sum3(L::abs(t[0]), L::abs(t[1]), L::abs(t[2]));
+          low = s - pad, high = s + pad;
+        }
+        lo[I] = L::min(low, lo[I]);
+        hi[I] = L::max(high, hi[I]);
+      }(), ...);
+    }(std::make_index_sequence<slabs>{});
+  }
+  if (!finite_points) return false;  // fit() fills the bounds with NaN
+  for (int i = 0; i < slabs; ++i) {
+    double low[w], high[w];
+    L::store(low, lo[i]), L::store(high, hi[i]);
+    for (int j = 0; j < w; ++j) {
+      dop.lo[i] = std::min(dop.lo[i], low[j]);
+      dop.hi[i] = std::max(dop.hi[i], high[j]);
+    }
+    if (dop.lo[i] == 0 || dop.hi[i] == 0) return false;
+  }
+  return true;
+}
+
+template <int K>
+[[gnu::flatten]] bool fit_scalar(std::span<const Vec3> points, Kdop<K>& dop) {
+  return fit_lanes<simd::Scalar, K>(points, dop);
+}
+template <int K>
+[[gnu::target("avx2"), gnu::flatten]] bool fit_avx2(std::span<const Vec3> points, Kdop<K>& dop) {
+  return fit_lanes<simd::Avx2, K>(points, dop);
+}
+template <int K>
+[[gnu::target("avx512f,avx512dq"), gnu::flatten]] bool fit_avx512(std::span<const Vec3> points, Kdop<K>& dop) {
+  return fit_lanes<simd::Avx512, K>(points, dop);
+}
+
 }  // namespace
 
 template <int K>
 Kdop<K> fit_kdop(std::span<const Vec3> points) {
+  Kdop<K> dop;
+  bool done = false;
+  switch (simd::selected()) {
+    case simd::Kernel::scalar: done = fit_scalar<K>(points, dop); break;
+    case simd::Kernel::avx2: done = fit_avx2<K>(points, dop); break;
+    case simd::Kernel::avx512: done = fit_avx512<K>(points, dop); break;
+  }
+  if (done) return dop;
   bounds::NoRecords none;
   return fit<K>(points, none);
 }

@@ -31,7 +31,7 @@ KdopCone<K> kdop_cone(const Vec3& m);
 /// sum c_j bound_j for the k-DOP (each product and the sum rounded: an error of at most
 /// 3u sum c_j |bound_j|). An empty k-DOP gives -inf or NaN.
 template <int K>
-double support_bound(const Kdop<K>& dop, const KdopCone<K>& cone) {
+[[gnu::always_inline]] inline double support_bound(const Kdop<K>& dop, const KdopCone<K>& cone) {
   double term[3];
   for (int j = 0; j < 3; ++j) {
     const int h = cone.normal[j];

@@ -1,6 +1,7 @@
 #include "collide/obb_fit.h"
 
 #include <Eigen/Eigenvalues>
+#include <vector>
 
 
 namespace cc {
@@ -17,10 +18,14 @@ void add_outer(Symmetric& m, double w, const Vec3& v) {
 }
 
 // The covariance of the hull's surface (each triangle weighted by its area: the sum of
-// area/12 (9 m m^T + p p^T + q q^T + r r^T), m the centroid, over the area, minus the mean's
-// outer product); coordinates relative to `origin`. With no area, the points' own covariance
-// (a segment's direction, or nothing for one point).
+// area/12 (S S^T + p p^T + q q^T + r r^T), S = p + q + r, over the area, minus the mean's outer
+// product); coordinates relative to `origin`. The vertex terms are gathered per vertex (each
+// weighted by the area of the triangles around it), one outer product per vertex instead of one
+// per corner. With no area, the points' own covariance (a segment's direction, or nothing for one
+// point).
 Symmetric covariance(std::span<const Vec3> points, const ConvexHull& hull, const Vec3& origin) {
+  thread_local std::vector<double> weight;  // per point: the area of its triangles
+  weight.assign(points.size(), 0);
   Symmetric second{};
   Vec3 centroid{0, 0, 0};
   double area = 0;
@@ -28,14 +33,17 @@ Symmetric covariance(std::span<const Vec3> points, const ConvexHull& hull, const
     const Vec3 p = points[t[0]] - origin, q = points[t[1]] - origin, r = points[t[2]] - origin;
     const Vec3 n = cross(q - p, r - p);
     const double a = 0.5 * std::sqrt(dot(n, n));
-    const Vec3 m = (1.0 / 3) * (p + q + r);
-    add_outer(second, 0.75 * a, m);
-    for (const Vec3& v : {p, q, r}) add_outer(second, a / 12, v);
-    centroid = centroid + a * m;
+    const Vec3 sum = p + q + r;
+    add_outer(second, a / 12, sum);
+    for (std::uint32_t v : t) weight[v] += a;
+    centroid = centroid + (a / 3) * sum;
     area += a;
   }
   Symmetric c{};
   if (area > 0) {
+    for (std::size_t v = 0; v < points.size(); ++v) {
+      if (weight[v] > 0) add_outer(second, weight[v] / 12, points[v] - origin);
+    }
     const Vec3 mean = (1 / area) * centroid;
     for (int i = 0; i < 6; ++i) c[i] = second[i] / area;
     add_outer(c, -1, mean);
@@ -72,6 +80,29 @@ Mat3 principal_axes(const std::array<double, 6>& m) {
 
 Mat3 obb_axes(std::span<const Vec3> points, const ConvexHull& hull) {
   return principal_axes(covariance(points, hull, points[0]));
+}
+
+std::optional<Mat3> triangle_axes(const Vec3& p, const Vec3& q, const Vec3& r) {
+  const Vec3 n = cross(q - p, r - p);
+  const double longest = std::max({dot(q - p, q - p), dot(r - q, r - q), dot(p - r, p - r)});
+  if (!(dot(n, n) > 0x1p-40 * longest * longest)) return std::nullopt;
+  // An orthonormal frame of the plane, and the vertices' 2x2 covariance about the centroid in it.
+  const Vec3 u = normalized(q - p), v = normalized(cross(n, u));
+  const Vec3 c = (1.0 / 3) * (p + q + r);
+  double xx = 0, xy = 0, yy = 0;
+  for (const Vec3& w : {p, q, r}) {
+    const double x = dot(w - c, u), y = dot(w - c, v);
+    xx += x * x, xy += x * y, yy += y * y;
+  }
+  // The eigenvector of the larger eigenvalue l: (l - yy, xy) or (xy, l - xx), whichever is longer.
+  const double half_gap = 0.5 * (xx - yy);
+  const double l = 0.5 * (xx + yy) + std::sqrt(half_gap * half_gap + xy * xy);
+  double a = l - yy, b = xy;
+  if (std::fabs(l - xx) > std::fabs(a)) a = xy, b = l - xx;
+  if (a == 0 && b == 0) a = 1;  // isotropic: any direction in the plane
+  const Vec3 major = normalized(a * u + b * v), middle = -b * u + a * v;
+  const Vec3 a0 = major, a1 = normalized(middle - dot(middle, a0) * a0);
+  return Mat3::from_columns(a0, a1, cross(a0, a1));
 }
 
 Obb fit_obb(std::span<const Vec3> points) { return fit_obb(obb_axes(points, convex_hull(points)), points); }

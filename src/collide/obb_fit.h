@@ -1,6 +1,7 @@
 // Fitting an oriented bounding box to points, the OBBTree way.
 #pragma once
 
+#include <optional>
 #include <span>
 
 #include "collide/convex_hull.h"
@@ -27,6 +28,14 @@ Obb fit_obb(std::span<const Vec3> points);
 Mat3 obb_axes(std::span<const Vec3> points, const ConvexHull& hull);
 /// ... and the smallest box with those axes that contains the points (padded as above).
 Obb fit_obb(const Mat3& axes, std::span<const Vec3> points);
+
+/// obb_axes for one triangle (whose hull is the triangle itself, on both sides), in closed form:
+/// about the centroid, a triangle's surface covariance is a twelfth of its vertices' and has the
+/// normal as an eigenvector, so the axes are the principal axes of the vertices in the plane (the
+/// larger variance first) and the normal, right-handed and orthonormal to within 2^-50. Nothing
+/// for a triangle so thin that its plane is ill-determined (twice its area at most 2^-20 of its
+/// longest edge squared, collinear and repeated vertices included): use obb_axes.
+std::optional<Mat3> triangle_axes(const Vec3& p, const Vec3& q, const Vec3& r);
 
 /// Right-handed orthonormal axes (to within 2^-50) along the eigenvectors of the symmetric
 /// matrix with entries xx, yy, zz, xy, yz, zx (a covariance), the largest eigenvalue's first,

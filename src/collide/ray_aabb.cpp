@@ -68,14 +68,19 @@ PreparedRay::PreparedRay(const Ray& given) : ray(given) {
       subnormal |= 1 << i;
     }
   }
+  plain = in_contract && subnormal == 0;
 }
 
 RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box) { return intersect_ray_aabb(PreparedRay(ray), box); }
 
-RayHit intersect_ray_aabb(const PreparedRay& r, const Aabb& box) {
+namespace detail {
+
+RayHit intersect_prepared(const PreparedRay& r, const Aabb& box) {
   bounds::NoRecords none;
   return intersect(r, box, none);
 }
+
+}  // namespace detail
 
 RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box, bounds::Records& records) {
   return intersect(PreparedRay(ray), box, records);

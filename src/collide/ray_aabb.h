@@ -1,7 +1,11 @@
 // Rays and segments against axis-aligned boxes, by slabs.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
 #include "collide/aabb.h"
+#include "collide/error_bounds.h"
 
 namespace cc {
 
@@ -52,9 +56,50 @@ struct PreparedRay {
   int subnormal = 0;          // bit i: scaled, dir[i] is subnormal (its slab in long double)
   bool negative[3] = {false, false, false};  // dir[i] < 0: the slab's near bound is its upper one
   double inv_scaled[3] = {0, 0, 0};          // 1 / scaled dir[i]
+  bool plain = false;         // in contract, no slab subnormal: the common case
 };
 
-/// The same answer as intersect_ray_aabb(ray.ray, box), with the ray's work done once.
-RayHit intersect_ray_aabb(const PreparedRay& ray, const Aabb& box);
+namespace detail {
+
+/// The whole test on a prepared ray (ray_aabb.cpp).
+RayHit intersect_prepared(const PreparedRay& ray, const Aabb& box);
+
+/// The miss decision of intersect_prepared on a plain PreparedRay, alone: the same entry and
+/// exit over the slabs, widened and compared, and the origin against the parallel slabs, so that
+/// true here is a miss there. (A slab's near parameter is the smaller of its two: for a box in
+/// the contract, lo <= hi, the one the direction's sign picks there. A box out of the contract is
+/// no hit either way.)
+template <bool kParallel>
+inline bool certainly_missed(const PreparedRay& r, const Aabb& box) {
+  double enter = -INFINITY, exit = INFINITY;  // (max and min replace them by any value but NaN)
+  for (int i = 0; i < 3; ++i) {
+    if (kParallel && ((r.parallel >> i) & 1)) {
+      if (r.ray.origin[i] < box.lo[i] || r.ray.origin[i] > box.hi[i]) return true;
+      continue;
+    }
+    const double lo = (box.lo[i] - r.ray.origin[i]) * r.inv_scaled[i], hi = (box.hi[i] - r.ray.origin[i]) * r.inv_scaled[i];
+    const double near = std::min(lo, hi), far = std::max(lo, hi);
+    enter = kParallel || i > 0 ? std::max(enter, near) : near;
+    exit = kParallel || i > 0 ? std::min(exit, far) : far;
+  }
+  if (r.tmin >= 0) {
+    // A widened entry below 0 loses to tmin, and an exit below 0 to the entry, whichever product
+    // widened them (or they are too small for the products to differ): the same decision.
+    constexpr double a = 1 - bounds::kRaySlab.relative, b = 1 + bounds::kRaySlab.relative;
+    return !(std::max(r.tmin, enter * a - fp::subnormal_slack) <= std::min(r.tmax, exit * b + fp::subnormal_slack));
+  }
+  return !(std::max(r.tmin, bounds::kRaySlab.lower(enter)) <= std::min(r.tmax, bounds::kRaySlab.upper(exit)));
+}
+
+}  // namespace detail
+
+/// The same answer as intersect_ray_aabb(ray.ray, box), with the ray's work done once. Inline:
+/// a plain ray's misses (most boxes) are decided without a call.
+inline RayHit intersect_ray_aabb(const PreparedRay& ray, const Aabb& box) {
+  if (ray.plain && (ray.parallel == 0 ? detail::certainly_missed<false>(ray, box) : detail::certainly_missed<true>(ray, box))) {
+    return {};
+  }
+  return detail::intersect_prepared(ray, box);
+}
 
 }  // namespace cc

@@ -1,17 +1,15 @@
 #include "collide/ray_aabb_batch.h"
 
-#include <immintrin.h>
-
 #include <algorithm>
 #include <array>
-#include <cfloat>
+#include <bit>
 #include <cmath>
-#include <cstring>
 #include <stdexcept>
 #include <string>
 #include <utility>
 
 #include "collide/error_bounds.h"
+#include "collide/simd_lanes.h"
 
 namespace cc {
 
@@ -28,182 +26,153 @@ namespace {
 // the largest entry and the smallest exit over the slabs.
 constexpr double kA = 1 - bounds::kRaySlab.relative, kB = 1 + bounds::kRaySlab.relative;
 
-// Box i is in the scalar test's contract: no NaN or infinite bound and lo <= hi on every axis.
-// (lo <= hi < inf and -inf < lo <= hi make both finite; NaN fails lo <= hi.)
-inline bool box_in_contract(double lo, double hi) { return (lo <= hi) & (lo > -INFINITY) & (hi < INFINITY); }
+// What the kernel reads: the boxes' arrays, each slab's near and far bound arrays as the
+// direction's sign picks them, and the ray's scaled parameters.
+struct Slabs {
+  const double* lo[3];
+  const double* hi[3];
+  const double* near[3];
+  const double* far[3];
+  double origin[3], inv[3], tmin, tmax;
 
-// Box i against the ray, for the slabs marked parallel in P: the steps of the vector kernels
-// below on one box (their tails, and the whole batch without AVX2).
-template <int P>
-inline bool one_box(const PreparedRay& r, const AabbSoa& b, std::size_t i) {
-  const double lo[3] = {b.lo_x[i], b.lo_y[i], b.lo_z[i]}, hi[3] = {b.hi_x[i], b.hi_y[i], b.hi_z[i]};
-  bool ok = true;
-  double enter = -INFINITY, exit = INFINITY;
-  for (int a = 0; a < 3; ++a) {
-    ok &= box_in_contract(lo[a], hi[a]);
-    if ((P >> a) & 1) {
-      ok &= r.ray.origin[a] >= lo[a] && r.ray.origin[a] <= hi[a];
-      continue;
+  Slabs(const PreparedRay& r, const AabbSoa& b)
+      : lo{b.lo_x.data(), b.lo_y.data(), b.lo_z.data()},
+        hi{b.hi_x.data(), b.hi_y.data(), b.hi_z.data()},
+        origin{r.ray.origin.x, r.ray.origin.y, r.ray.origin.z},
+        inv{r.inv_scaled[0], r.inv_scaled[1], r.inv_scaled[2]},
+        tmin(r.tmin),
+        tmax(r.tmax) {
+    for (int a = 0; a < 3; ++a) {
+      near[a] = r.negative[a] ? hi[a] : lo[a];
+      far[a] = r.negative[a] ? lo[a] : hi[a];
     }
-    enter = std::max(enter, ((r.negative[a] ? hi[a] : lo[a]) - r.ray.origin[a]) * r.inv_scaled[a]);
-    exit = std::min(exit, ((r.negative[a] ? lo[a] : hi[a]) - r.ray.origin[a]) * r.inv_scaled[a]);
   }
-  const double enter_low = std::max(r.tmin, std::min(enter * kA, enter * kB) - fp::subnormal_slack);
-  const double exit_high = std::min(r.tmax, std::max(exit * kA, exit * kB) + fp::subnormal_slack);
-  return ok & (enter_low <= exit_high);
+};
+
+// The kernel: boxes i .. i + L::kWidth - 1 against the ray, for the slabs marked parallel in P;
+// bit j of the result is box i + j's answer. Each lane computes what intersect_ray_aabb computes
+// on its box, in the same order: the entry and exit over the slabs that are not parallel, both
+// widened, clipped to [tmin, tmax] and compared; the origin against each parallel slab; then, on
+// the hit path only, the box's contract (no NaN or infinite bound, lo <= hi). The lanes' min and
+// max differ from std::min and std::max only for NaN, which comes only from a box out of
+// contract (rejected by the contract), and in the sign of a zero entry or exit, which the
+// widening maps to the same double.
+template <class L, int P, bool kAhead>
+inline unsigned kernel(const Slabs& s, std::size_t i) {
+  using D = typename L::D;
+  // The entry and exit start from the first slab that is not parallel (there from -inf and
+  // +inf, which max and min would replace by it).
+  constexpr int first = (P & 1) == 0 ? 0 : ((P & 2) == 0 ? 1 : ((P & 4) == 0 ? 2 : 3));
+  D enter = L::broadcast(-INFINITY), exit = L::broadcast(INFINITY);
+  for (int a = first; a < 3; ++a) {
+    if ((P >> a) & 1) continue;
+    const D o = L::broadcast(s.origin[a]), inv = L::broadcast(s.inv[a]);
+    const D near = (L::load(s.near[a] + i) - o) * inv, far = (L::load(s.far[a] + i) - o) * inv;
+    enter = a == first ? near : L::max(enter, near);
+    exit = a == first ? far : L::min(exit, far);
+  }
+  const D ka = L::broadcast(kA), kb = L::broadcast(kB), slack = L::broadcast(fp::subnormal_slack);
+  typename L::M hit;
+  if constexpr (kAhead) {
+    // tmin >= 0: a widened entry below 0 loses to tmin, whichever product widened it, so the
+    // entry takes t A; an exit below 0 loses to the entry (>= tmin >= 0) both ways, or is
+    // subnormal, where t A and t B round to t: it takes t B. The same decision, 4 fewer steps.
+    hit = L::max(L::broadcast(s.tmin), enter * ka - slack) <= L::min(L::broadcast(s.tmax), exit * kb + slack);
+  } else {
+    const D enter_low = L::max(L::broadcast(s.tmin), L::min(enter * ka, enter * kb) - slack);
+    const D exit_high = L::min(L::broadcast(s.tmax), L::max(exit * ka, exit * kb) + slack);
+    hit = enter_low <= exit_high;
+  }
+  for (int a = 0; a < 3; ++a) {
+    if (!((P >> a) & 1)) continue;
+    const D o = L::broadcast(s.origin[a]);
+    hit = hit & (o >= L::load(s.lo[a] + i)) & (o <= L::load(s.hi[a] + i));
+  }
+  if (L::bits(hit) == 0) return 0;
+  const D minus_inf = L::broadcast(-INFINITY), plus_inf = L::broadcast(INFINITY);
+  for (int a = 0; a < 3; ++a) {
+    const D lo = L::load(s.lo[a] + i), hi = L::load(s.hi[a] + i);
+    hit = hit & (lo <= hi) & (lo > minus_inf) & (hi < plus_inf);
+  }
+  return L::bits(hit);
 }
 
-template <int P>
-std::size_t run_scalar(const PreparedRay& r, const AabbSoa& b, std::uint8_t* hits, std::size_t from) {
-  std::size_t count = 0;
-  for (std::size_t i = from; i < b.size(); ++i) count += hits[i] = one_box<P>(r, b, i);
+// Every box: blocks of L::kWidth, each block's bits placed in its word, then the boxes left over
+// one at a time through the same kernel. Returns the number of hits.
+template <class L, int P, bool kAhead>
+inline std::size_t all_boxes(const PreparedRay& r, const AabbSoa& b, std::uint64_t* hits) {
+  constexpr std::size_t w = L::kWidth;
+  const Slabs s(r, b);
+  const std::size_t n = b.size();
+  std::size_t count = 0, i = 0;
+  for (std::size_t word = 0; word < hit_words(n); ++word) {
+    std::uint64_t bits = 0;
+    const std::size_t end = std::min(n, 64 * word + 64);
+    for (; i + w <= end; i += w) bits |= static_cast<std::uint64_t>(kernel<L, P, kAhead>(s, i)) << (i % 64);
+    for (; i < end; ++i) bits |= static_cast<std::uint64_t>(kernel<simd::Scalar, P, kAhead>(s, i)) << (i % 64);
+    hits[word] = bits;
+    count += static_cast<std::size_t>(std::popcount(bits));
+  }
   return count;
 }
 
-// hits[0..8) from the bits of a mask: entry m holds byte j = bit j of m.
-constexpr std::array<std::uint64_t, 256> kMaskBytes = [] {
-  std::array<std::uint64_t, 256> t{};
-  for (std::uint64_t m = 0; m < 256; ++m) {
-    for (int j = 0; j < 8; ++j) t[m] |= ((m >> j) & 1) << (8 * j);
-  }
-  return t;
-}();
+using Run = std::size_t (*)(const PreparedRay&, const AabbSoa&, std::uint64_t*);
 
-// The same steps on 8 boxes at a time (AVX-512) and on 4 (AVX2). Every lane computes what
-// one_box computes; min and max differ from std::min and std::max only for NaN operands, which
-// occur only in lanes whose box is out of contract, and those are rejected by the contract
-// check that follows any candidate hit. (GCC 12's AVX-512 header trips
-// -Wmaybe-uninitialized inside _mm512_min_pd and _mm512_max_pd: a known false positive.)
-#pragma GCC diagnostic push
-#if !defined(__clang__)
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-#endif
+// P (0..15): bits 0-2 the parallel slabs, bit 3 tmin >= 0.
 template <int P>
-[[gnu::target("avx512f,avx512dq")]] std::size_t run_avx512(const PreparedRay& r, const AabbSoa& b, std::uint8_t* hits) {
-  const double* lo[3] = {b.lo_x.data(), b.lo_y.data(), b.lo_z.data()};
-  const double* hi[3] = {b.hi_x.data(), b.hi_y.data(), b.hi_z.data()};
-  const __m512d ka = _mm512_set1_pd(kA), kb = _mm512_set1_pd(kB), slack = _mm512_set1_pd(fp::subnormal_slack);
-  const __m512d minus_inf = _mm512_set1_pd(-INFINITY), plus_inf = _mm512_set1_pd(INFINITY);
-  const __m512d tmin = _mm512_set1_pd(r.tmin), tmax = _mm512_set1_pd(r.tmax);
-  std::size_t count = 0, i = 0;
-  for (; i + 8 <= b.size(); i += 8) {
-    __mmask8 ok = 0xFF;
-    __m512d enter = minus_inf, exit = plus_inf;
-    for (int a = 0; a < 3; ++a) {
-      const __m512d l = _mm512_loadu_pd(lo[a] + i), h = _mm512_loadu_pd(hi[a] + i);
-      const __m512d o = _mm512_set1_pd(r.ray.origin[a]);
-      if ((P >> a) & 1) {
-        ok = static_cast<__mmask8>(ok & _mm512_cmp_pd_mask(o, l, _CMP_GE_OQ) & _mm512_cmp_pd_mask(o, h, _CMP_LE_OQ));
-        continue;
-      }
-      const __m512d inv = _mm512_set1_pd(r.inv_scaled[a]);
-      enter = _mm512_max_pd(enter, _mm512_mul_pd(_mm512_sub_pd(r.negative[a] ? h : l, o), inv));
-      exit = _mm512_min_pd(exit, _mm512_mul_pd(_mm512_sub_pd(r.negative[a] ? l : h, o), inv));
-    }
-    const __m512d low = _mm512_min_pd(_mm512_mul_pd(enter, ka), _mm512_mul_pd(enter, kb));
-    const __m512d high = _mm512_max_pd(_mm512_mul_pd(exit, ka), _mm512_mul_pd(exit, kb));
-    const __m512d enter_low = _mm512_max_pd(tmin, _mm512_sub_pd(low, slack));
-    const __m512d exit_high = _mm512_min_pd(tmax, _mm512_add_pd(high, slack));
-    ok = static_cast<__mmask8>(ok & _mm512_cmp_pd_mask(enter_low, exit_high, _CMP_LE_OQ));
-    if (ok) {  // the boxes' contract, checked on the hit path only (as the scalar test does)
-      for (int a = 0; a < 3; ++a) {
-        const __m512d l = _mm512_loadu_pd(lo[a] + i), h = _mm512_loadu_pd(hi[a] + i);
-        ok = static_cast<__mmask8>(ok & _mm512_cmp_pd_mask(l, h, _CMP_LE_OQ) & _mm512_cmp_pd_mask(l, minus_inf, _CMP_GT_OQ) &
-                                   _mm512_cmp_pd_mask(h, plus_inf, _CMP_LT_OQ));
-      }
-    }
-    std::memcpy(hits + i, &kMaskBytes[ok], 8);
-    count += static_cast<std::size_t>(__builtin_popcount(ok));
-  }
-  return count + run_scalar<P>(r, b, hits, i);
+[[gnu::flatten]] std::size_t run_scalar(const PreparedRay& r, const AabbSoa& b, std::uint64_t* hits) {
+  return all_boxes<simd::Scalar, P & 7, (P >> 3) != 0>(r, b, hits);
+}
+template <int P>
+[[gnu::target("avx2"), gnu::flatten]] std::size_t run_avx2(const PreparedRay& r, const AabbSoa& b, std::uint64_t* hits) {
+  return all_boxes<simd::Avx2, P & 7, (P >> 3) != 0>(r, b, hits);
+}
+template <int P>
+[[gnu::target("avx512f,avx512dq"), gnu::flatten]] std::size_t run_avx512(const PreparedRay& r, const AabbSoa& b,
+                                                                         std::uint64_t* hits) {
+  return all_boxes<simd::Avx512, P & 7, (P >> 3) != 0>(r, b, hits);
 }
 
-template <int P>
-[[gnu::target("avx2")]] std::size_t run_avx2(const PreparedRay& r, const AabbSoa& b, std::uint8_t* hits) {
-  const double* lo[3] = {b.lo_x.data(), b.lo_y.data(), b.lo_z.data()};
-  const double* hi[3] = {b.hi_x.data(), b.hi_y.data(), b.hi_z.data()};
-  const __m256d ka = _mm256_set1_pd(kA), kb = _mm256_set1_pd(kB), slack = _mm256_set1_pd(fp::subnormal_slack);
-  const __m256d minus_inf = _mm256_set1_pd(-INFINITY), plus_inf = _mm256_set1_pd(INFINITY);
-  const __m256d tmin = _mm256_set1_pd(r.tmin), tmax = _mm256_set1_pd(r.tmax);
-  std::size_t count = 0, i = 0;
-  for (; i + 4 <= b.size(); i += 4) {
-    __m256d ok = _mm256_castsi256_pd(_mm256_set1_epi64x(-1));
-    __m256d enter = minus_inf, exit = plus_inf;
-    for (int a = 0; a < 3; ++a) {
-      const __m256d l = _mm256_loadu_pd(lo[a] + i), h = _mm256_loadu_pd(hi[a] + i);
-      const __m256d o = _mm256_set1_pd(r.ray.origin[a]);
-      if ((P >> a) & 1) {
-        ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(o, l, _CMP_GE_OQ), _mm256_cmp_pd(o, h, _CMP_LE_OQ)));
-        continue;
-      }
-      const __m256d inv = _mm256_set1_pd(r.inv_scaled[a]);
-      enter = _mm256_max_pd(enter, _mm256_mul_pd(_mm256_sub_pd(r.negative[a] ? h : l, o), inv));
-      exit = _mm256_min_pd(exit, _mm256_mul_pd(_mm256_sub_pd(r.negative[a] ? l : h, o), inv));
-    }
-    const __m256d low = _mm256_min_pd(_mm256_mul_pd(enter, ka), _mm256_mul_pd(enter, kb));
-    const __m256d high = _mm256_max_pd(_mm256_mul_pd(exit, ka), _mm256_mul_pd(exit, kb));
-    const __m256d enter_low = _mm256_max_pd(tmin, _mm256_sub_pd(low, slack));
-    const __m256d exit_high = _mm256_min_pd(tmax, _mm256_add_pd(high, slack));
-    ok = _mm256_and_pd(ok, _mm256_cmp_pd(enter_low, exit_high, _CMP_LE_OQ));
-    if (_mm256_movemask_pd(ok)) {  // the boxes' contract, on the hit path only
-      for (int a = 0; a < 3; ++a) {
-        const __m256d l = _mm256_loadu_pd(lo[a] + i), h = _mm256_loadu_pd(hi[a] + i);
-        ok = _mm256_and_pd(ok, _mm256_and_pd(_mm256_cmp_pd(l, h, _CMP_LE_OQ),
-                                             _mm256_and_pd(_mm256_cmp_pd(l, minus_inf, _CMP_GT_OQ),
-                                                           _mm256_cmp_pd(h, plus_inf, _CMP_LT_OQ))));
-      }
-    }
-    const int mask = _mm256_movemask_pd(ok);
-    const std::uint32_t bytes = static_cast<std::uint32_t>(kMaskBytes[static_cast<std::size_t>(mask)]);
-    std::memcpy(hits + i, &bytes, 4);
-    count += static_cast<std::size_t>(__builtin_popcount(static_cast<unsigned>(mask)));
-  }
-  return count + run_scalar<P>(r, b, hits, i);
-}
-
-#pragma GCC diagnostic pop
-
-using Run = std::size_t (*)(const PreparedRay&, const AabbSoa&, std::uint8_t*);
-
-template <int P>
-std::size_t run_all_scalar(const PreparedRay& r, const AabbSoa& b, std::uint8_t* hits) {
-  return run_scalar<P>(r, b, hits, 0);
-}
-
-// Per kernel (in simd::Kernel's order), the runs for P = 0..7.
+// Per kernel (in simd::Kernel's order), the runs for P = 0..15.
 template <int... P>
-constexpr std::array<std::array<Run, 8>, 3> runs(std::integer_sequence<int, P...>) {
-  return {{{run_all_scalar<P>...}, {run_avx2<P>...}, {run_avx512<P>...}}};
+constexpr std::array<std::array<Run, 16>, 3> runs(std::integer_sequence<int, P...>) {
+  return {{{run_scalar<P>...}, {run_avx2<P>...}, {run_avx512<P>...}}};
 }
-constexpr auto kRuns = runs(std::make_integer_sequence<int, 8>{});
+constexpr auto kRuns = runs(std::make_integer_sequence<int, 16>{});
 static_assert(static_cast<int>(simd::Kernel::scalar) == 0 && static_cast<int>(simd::Kernel::avx2) == 1 &&
               static_cast<int>(simd::Kernel::avx512) == 2);
 
 }  // namespace
 
-std::size_t test_ray_aabbs(const Ray& ray, const AabbSoa& boxes, std::span<std::uint8_t> hits) {
+std::size_t test_ray_aabbs(const Ray& ray, const AabbSoa& boxes, std::span<std::uint64_t> hits) {
   return test_ray_aabbs(ray, boxes, hits, simd::selected());
 }
 
-std::size_t test_ray_aabbs(const Ray& ray, const AabbSoa& boxes, std::span<std::uint8_t> hits, simd::Kernel kernel) {
+std::size_t test_ray_aabbs(const Ray& ray, const AabbSoa& boxes, std::span<std::uint64_t> hits, simd::Kernel kernel) {
   if (const auto why = simd::unsupported_reason(kernel)) {
     throw std::invalid_argument("test_ray_aabbs: the " + std::string(simd::to_string(kernel)) + " kernel: " + *why);
   }
   const std::size_t n = boxes.size();
-  if (hits.size() < n) throw std::invalid_argument("test_ray_aabbs: fewer hit slots than boxes");
+  if (hits.size() < hit_words(n)) throw std::invalid_argument("test_ray_aabbs: fewer hit words than hit_words(boxes)");
   const PreparedRay r(ray);
   if (!r.in_contract) {
-    std::fill(hits.begin(), hits.begin() + static_cast<std::ptrdiff_t>(n), std::uint8_t{0});
+    std::fill(hits.begin(), hits.begin() + static_cast<std::ptrdiff_t>(hit_words(n)), std::uint64_t{0});
     return 0;
   }
   if (r.subnormal != 0) {
     // A component that is subnormal once scaled: the scalar test computes its slab in long
     // double, a path too rare to vectorise. Box by box, then.
+    std::fill(hits.begin(), hits.begin() + static_cast<std::ptrdiff_t>(hit_words(n)), std::uint64_t{0});
     std::size_t count = 0;
-    for (std::size_t b = 0; b < n; ++b) count += hits[b] = intersect_ray_aabb(r, boxes[b]).hit;
+    for (std::size_t b = 0; b < n; ++b) {
+      const bool hit = intersect_ray_aabb(r, boxes[b]).hit;
+      hits[b / 64] |= static_cast<std::uint64_t>(hit) << (b % 64);
+      count += hit;
+    }
     return count;
   }
-  return kRuns[static_cast<std::size_t>(kernel)][static_cast<std::size_t>(r.parallel)](r, boxes, hits.data());
+  const std::size_t variant = static_cast<std::size_t>(r.parallel) | (r.tmin >= 0 ? 8 : 0);
+  return kRuns[static_cast<std::size_t>(kernel)][variant](r, boxes, hits.data());
 }
 
 }  // namespace cc

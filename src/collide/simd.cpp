@@ -21,7 +21,8 @@ const std::array<bool, 3>& processor_runs() {
     std::array<bool, 3> r{};
     r[index_of(Kernel::scalar)] = true;
     r[index_of(Kernel::avx2)] = __builtin_cpu_supports("avx2");
-    r[index_of(Kernel::avx512)] = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq");
+    r[index_of(Kernel::avx512)] = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+                                  __builtin_cpu_supports("avx512vl");
     return r;
   }();
   return runs;
@@ -49,7 +50,7 @@ std::string_view features_needed(Kernel k) {
   switch (k) {
     case Kernel::scalar: return "none";
     case Kernel::avx2: return "AVX2";
-    case Kernel::avx512: return "AVX-512 F and DQ";
+    case Kernel::avx512: return "AVX-512 F, DQ and VL";
   }
   return "?";
 }
@@ -69,12 +70,19 @@ std::optional<std::string> unsupported_reason(Kernel k) {
   return "this processor lacks " + std::string(features_needed(k));
 }
 
-Kernel selected() {
+namespace detail {
+
+std::atomic<int> g_selected{-1};
+
+Kernel choose() {
   const int forced = g_forced.load(std::memory_order_relaxed);
-  if (forced >= 0) return static_cast<Kernel>(forced);
   static const Kernel best = supported_kernels().back();
-  return best;
+  const Kernel k = forced >= 0 ? static_cast<Kernel>(forced) : best;
+  g_selected.store(static_cast<int>(index_of(k)), std::memory_order_relaxed);
+  return k;
 }
+
+}  // namespace detail
 
 void force(std::optional<Kernel> k) {
   if (k) {
@@ -83,6 +91,7 @@ void force(std::optional<Kernel> k) {
     }
   }
   g_forced.store(k ? static_cast<int>(index_of(*k)) : -1, std::memory_order_relaxed);
+  detail::choose();
 }
 
 ForcedKernel::ForcedKernel(Kernel k) {

@@ -4,6 +4,7 @@
 // kernel the machine supports against the scalar one.
 #pragma once
 
+#include <atomic>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -20,7 +21,7 @@ inline constexpr Kernel kAllKernels[] = {Kernel::scalar, Kernel::avx2, Kernel::a
 std::string_view to_string(Kernel k);
 /// The kernel with that name, if any.
 std::optional<Kernel> kernel_named(std::string_view name);
-/// The processor features a kernel needs, e.g. "AVX-512 F and DQ"; "none" for scalar.
+/// The processor features a kernel needs, e.g. "AVX-512 F, DQ and VL"; "none" for scalar.
 std::string_view features_needed(Kernel k);
 
 /// Whether this processor (and its operating system) runs the kernel, checked at run time.
@@ -31,8 +32,19 @@ std::vector<Kernel> supported_kernels();
 /// Why this processor cannot run the kernel ("this processor lacks AVX2"), or nothing.
 std::optional<std::string> unsupported_reason(Kernel k);
 
-/// The kernel batched routines use: the forced one, if any, else the best supported.
-Kernel selected();
+namespace detail {
+/// What selected() returns, as an index into kAllKernels; -1 until it is first asked.
+extern std::atomic<int> g_selected;
+/// Sets g_selected from the forced kernel, or else the best supported one, and returns it.
+Kernel choose();
+}  // namespace detail
+
+/// The kernel batched routines use: the forced one, if any, else the best supported. Inline and
+/// cheap (one load), so that a test called per pair can dispatch on it.
+inline Kernel selected() {
+  const int k = detail::g_selected.load(std::memory_order_relaxed);
+  return k >= 0 ? static_cast<Kernel>(k) : detail::choose();
+}
 
 /// Makes every batched routine use `k` from now on, in every thread (nothing: the best supported
 /// again). A call already running finishes with the kernel it started with. Throws

@@ -63,7 +63,14 @@ TEST(BoundRecords, SpheresAndKdopsRecordTheirSquaresAndProjections) {
   bounds::Records records;
   EXPECT_EQ(test_sphere_sphere(a, b, records), test_sphere_sphere(a, b));
   ASSERT_EQ(records.spheres.size(), 1u);
-  EXPECT_EQ(records.spheres[0].exponent, 2);  // |d| = 5 and the reach 5 scaled to [1, 2)
+  EXPECT_EQ(records.spheres[0].exponent, 0);  // the squares' sum in [2^-900, 2^1020]: as given
+  EXPECT_EQ(records.spheres[0].bound.dist2, 25.0);
+  // Beyond that range, scaled: |d| = 5 2^600 and the reach 5 2^600 brought to [1, 2).
+  const Sphere huge_a{{0, 0, 0}, 0x1p600 * 1.5}, huge_b{{0x1p600 * 3, 0x1p600 * 4, 0}, 0x1p600 * 3.5};
+  records = {};
+  EXPECT_EQ(test_sphere_sphere(huge_a, huge_b, records), test_sphere_sphere(huge_a, huge_b));
+  ASSERT_EQ(records.spheres.size(), 1u);
+  EXPECT_EQ(records.spheres[0].exponent, 602);
   EXPECT_EQ(records.spheres[0].bound.dist2, 25.0 / 16);
 
   const std::vector<Vec3> points{{1, 2, 3}, {-1, 0.5, 2}};

@@ -6,6 +6,8 @@
 #include <limits>
 #include <vector>
 
+#include "collide/simd.h"
+
 namespace cc {
 namespace {
 
@@ -105,20 +107,27 @@ void expect_same_bits(const std::vector<Vec3>& points) {
   }
 }
 
-TEST(FitKdop, IsItsPlainDefinitionBitForBitSignedZerosIncluded) {
-  // Coordinates that make sums cancel to +0 or -0, and ordinary ones.
-  const double values[] = {0.0, -0.0, 1.0, -1.0, 0.1, -0.1, 0.3, 1e-300, -1e-300, 0x1p-1074, 3.5};
-  unsigned state = 12345;
-  const auto next = [&] { return state = state * 1103515245u + 12345u, values[(state >> 16) % std::size(values)]; };
-  for (int round = 0; round < 300; ++round) {
-    std::vector<Vec3> points;
-    for (int j = 0; j < 1 + round % 6; ++j) points.push_back({next(), next(), next()});
-    expect_same_bits<6>(points);
-    expect_same_bits<14>(points);
-    expect_same_bits<16>(points);
-    expect_same_bits<18>(points);
-    expect_same_bits<24>(points);
-    expect_same_bits<26>(points);
+// fit_kdop with every kernel this processor runs (the points taken 1, 4 or 8 at a time, the
+// lanes merged at the end, a zero bound taken from the plain loop), against the definition.
+TEST(FitKdop, IsItsPlainDefinitionBitForBitSignedZerosIncludedWithEveryKernel) {
+  // Coordinates that make sums cancel to +0 or -0, and ordinary ones; sets of 1 to 19 points,
+  // so that every kernel has blocks and a last block that repeats the last point.
+  const double values[] = {0.0, -0.0, 1.0, -1.0, 0.1, -0.1, 0.3, 1e-300, -1e-300, 0x1p-1074, 3.5, 0x1p1000, -0x1p1023};
+  for (simd::Kernel kernel : simd::supported_kernels()) {
+    const simd::ForcedKernel forced(kernel);
+    unsigned state = 12345;
+    const auto next = [&] { return state = state * 1103515245u + 12345u, values[(state >> 16) % std::size(values)]; };
+    for (int round = 0; round < 400; ++round) {
+      std::vector<Vec3> points;
+      for (int j = 0; j < 1 + round % 19; ++j) points.push_back({next(), next(), next()});
+      SCOPED_TRACE(std::string(simd::to_string(kernel)) + ", round " + std::to_string(round));
+      expect_same_bits<6>(points);
+      expect_same_bits<14>(points);
+      expect_same_bits<16>(points);
+      expect_same_bits<18>(points);
+      expect_same_bits<24>(points);
+      expect_same_bits<26>(points);
+    }
   }
 }
 

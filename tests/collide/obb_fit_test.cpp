@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 
 namespace cc {
 namespace {
@@ -68,6 +69,43 @@ TEST(FitObb, SegmentsAndPointsGiveThinBoxes) {
   EXPECT_EQ(p.axes, Mat3::identity());
   EXPECT_LT(p.half.x, 1e-9);
   EXPECT_TRUE(contains(p, point[0]));
+}
+
+// The closed form for one triangle gives obb_axes's axes (through the hull, Eigen's 3x3 solver)
+// up to sign, when the in-plane variances differ; right-handed and orthonormal; nothing for
+// slivers, collinear and repeated vertices.
+TEST(TriangleAxes, AreTheHullCovariancesAxes) {
+  std::mt19937_64 random(11);
+  std::uniform_real_distribution<double> uniform(-1, 1);
+  int compared = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    const double scale = std::ldexp(1.0, static_cast<int>(trial % 61) - 30);
+    const Vec3 offset{std::ldexp(uniform(random), trial % 40), uniform(random), 0};
+    std::vector<Vec3> t;
+    for (int k = 0; k < 3; ++k) t.push_back(offset + scale * Vec3{uniform(random), uniform(random), uniform(random)});
+    const std::optional<Mat3> axes = triangle_axes(t[0], t[1], t[2]);
+    ASSERT_TRUE(axes.has_value()) << "trial " << trial;
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) ASSERT_NEAR(dot(axes->col[i], axes->col[j]), i == j ? 1 : 0, 0x1p-50);
+    }
+    ASSERT_GT(dot(cross(axes->col[0], axes->col[1]), axes->col[2]), 0);
+    // The in-plane variances along the axes; compare directions where they differ clearly.
+    const Vec3 c = (1.0 / 3) * (t[0] + t[1] + t[2]);
+    double v0 = 0, v1 = 0;
+    for (const Vec3& p : t) v0 += dot(p - c, axes->col[0]) * dot(p - c, axes->col[0]), v1 += dot(p - c, axes->col[1]) * dot(p - c, axes->col[1]);
+    ASSERT_GE(v0, v1 * (1 - 1e-9)) << "trial " << trial;
+    if (v0 < 1.01 * v1 || std::fabs(offset.x) > 1e3 * scale) continue;
+    const Mat3 expected = obb_axes(t, convex_hull(t));
+    for (int i = 0; i < 3; ++i) ASSERT_NEAR(std::fabs(dot(axes->col[i], expected.col[i])), 1, 1e-6) << "trial " << trial;
+    ++compared;
+  }
+  EXPECT_GT(compared, 500);
+  EXPECT_FALSE(triangle_axes({0, 0, 0}, {1, 1, 1}, {3, 3, 3}).has_value());  // collinear
+  EXPECT_FALSE(triangle_axes({0, 0, 0}, {0, 0, 0}, {1, 0, 0}).has_value());  // a repeated vertex
+  EXPECT_FALSE(triangle_axes({0, 0, 0}, {1, 0, 0}, {0.5, 0x1p-30, 0}).has_value());  // a sliver
+  const std::optional<Mat3> flat = triangle_axes({0, 0, 1}, {4, 0, 1}, {0, 3, 1});
+  ASSERT_TRUE(flat.has_value());
+  EXPECT_NEAR(std::fabs(flat->col[2].z), 1, 1e-15);  // the normal last
 }
 
 TEST(FitObb, CornersSpanTheBox) {

@@ -4,6 +4,9 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
+
+#include "collide/simd.h"
 
 namespace cc {
 namespace {
@@ -66,6 +69,46 @@ TEST(TestObbObb, IsSymmetricBitForBit) {
   const Obb a = box({0.1, 0.2, 0.3}, {0.5, 0.25, 1}, about_z(0.7));
   const Obb b = box({1.3, 0.9, 0.35}, {0.5, 0.5, 0.5}, about_z(-0.2));
   EXPECT_EQ(test_obb_obb(a, b), test_obb_obb(b, a));
+}
+
+// Random pairs, each also moved along the line of centres to either side of the test's own
+// first contact (adjacent doubles of the offset's scale), where any difference in the rounding
+// would show: every kernel this processor runs answers as the scalar one, and as with the boxes
+// swapped.
+TEST(TestObbObb, EveryKernelAnswersAlikeAtItsOwnBoundary) {
+  std::mt19937_64 rng(16);
+  std::uniform_real_distribution<double> u(-1, 1), h(0.05, 0.6);
+  const auto rotation = [&] {
+    const double a = u(rng), b = u(rng), c = u(rng), d = u(rng), n = std::sqrt(a * a + b * b + c * c + d * d);
+    const double w = a / n, x = b / n, y = c / n, z = d / n;
+    return Mat3::from_columns({1 - 2 * (y * y + z * z), 2 * (x * y + w * z), 2 * (x * z - w * y)},
+                              {2 * (x * y - w * z), 1 - 2 * (x * x + z * z), 2 * (y * z + w * x)},
+                              {2 * (x * z + w * y), 2 * (y * z - w * x), 1 - 2 * (x * x + y * y)});
+  };
+  const auto scalar = [](const Obb& a, const Obb& b) {
+    const simd::ForcedKernel forced(simd::Kernel::scalar);
+    return test_obb_obb(a, b);
+  };
+  int hits = 0, pairs = 0;
+  for (int round = 0; round < 300; ++round) {
+    const Obb a = box({u(rng), u(rng), u(rng)}, {h(rng), h(rng), h(rng)}, rotation());
+    const Obb start = box({u(rng), u(rng), u(rng)}, {h(rng), h(rng), h(rng)}, rotation());
+    const Vec3 d = start.center - a.center;
+    const auto at = [&](double s) { return box(a.center + s * d, start.half, start.axes); };
+    double lo = 0, hi = 4;  // the centres together overlap; 4 times the offset apart, not
+    for (int k = 0; k < 200 && std::nextafter(lo, hi) != hi; ++k) (scalar(a, at((lo + hi) / 2)) ? lo : hi) = (lo + hi) / 2;
+    for (const Obb& b : {start, at(lo), at(hi)}) {
+      const bool expected = scalar(a, b);
+      hits += expected, ++pairs;
+      for (simd::Kernel kernel : simd::supported_kernels()) {
+        const simd::ForcedKernel forced(kernel);
+        EXPECT_EQ(test_obb_obb(a, b), expected) << to_string(kernel) << ", round " << round;
+        EXPECT_EQ(test_obb_obb(b, a), expected) << to_string(kernel) << ", swapped, round " << round;
+      }
+    }
+  }
+  EXPECT_GT(hits, pairs / 3);  // both answers are common
+  EXPECT_LT(hits, 2 * pairs / 3 + 1);
 }
 
 TEST(TestObbObb, OutOfContractInputsGiveNoContact) {

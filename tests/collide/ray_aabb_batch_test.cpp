@@ -17,9 +17,11 @@ const double kInf = std::numeric_limits<double>::infinity();
 const double kDenormMin = std::numeric_limits<double>::denorm_min();
 
 // Every box of the batch, as the selected kernel answers, against the scalar test box by box
-// and against the scalar kernel; returns the number of hits.
+// and against the scalar kernel; the bits past the last box must be cleared (the words are
+// filled with ones and with a pattern before). Returns the number of hits.
 std::size_t expect_same_as_scalar(const Ray& ray, const AabbSoa& boxes) {
-  std::vector<std::uint8_t> hits(boxes.size(), 7), scalar_hits(boxes.size(), 9);
+  std::vector<std::uint64_t> hits(hit_words(boxes.size()), ~std::uint64_t{0});
+  std::vector<std::uint64_t> scalar_hits(hit_words(boxes.size()), 0x5555555555555555);
   const std::size_t count = test_ray_aabbs(ray, boxes, hits);
   const simd::Kernel kernel = simd::selected();
   const std::size_t scalar_count = test_ray_aabbs(ray, boxes, scalar_hits, simd::Kernel::scalar);
@@ -27,13 +29,22 @@ std::size_t expect_same_as_scalar(const Ray& ray, const AabbSoa& boxes) {
   for (std::size_t i = 0; i < boxes.size(); ++i) {
     const bool scalar = intersect_ray_aabb(ray, boxes[i]).hit;
     expected += scalar;
-    EXPECT_EQ(hits[i], scalar ? 1 : 0) << to_string(kernel) << ", box " << i << " of " << boxes.size();
-    EXPECT_EQ(hits[i], scalar_hits[i]) << to_string(kernel) << " against the scalar kernel, box " << i << " of "
-                                        << boxes.size();
+    EXPECT_EQ(hit_bit(hits, i), scalar) << to_string(kernel) << ", box " << i << " of " << boxes.size();
+  }
+  EXPECT_EQ(hits, scalar_hits) << to_string(kernel) << " against the scalar kernel, " << boxes.size() << " boxes";
+  if (boxes.size() % 64 != 0) {
+    EXPECT_EQ(hits.back() >> (boxes.size() % 64), 0u) << to_string(kernel) << ": bits past the last box";
   }
   EXPECT_EQ(count, expected);
   EXPECT_EQ(count, scalar_count);
   return count;
+}
+
+// The hit bits as a string, box 0 first.
+std::string bits_of(const std::vector<std::uint64_t>& hits, std::size_t n) {
+  std::string out;
+  for (std::size_t i = 0; i < n; ++i) out += hit_bit(hits, i) ? '1' : '0';
+  return out;
 }
 
 // Each test runs once per kernel, forced; a kernel this processor lacks is skipped with the
@@ -65,9 +76,9 @@ TEST_P(TestRayAabbs, TouchingIsAHit) {
                              {{1, 1, 1}, {2, 2, 2}},       // from its corner
                              {{2, 2.6, 0}, {3, 3, 1}},     // missed
                              {{-1, -1, -1}, {0, 0, 0}}});  // touched at the origin only
-  std::vector<std::uint8_t> hits(4);
+  std::vector<std::uint64_t> hits(1);
   EXPECT_EQ(test_ray_aabbs({{0, 0, 0}, {1, 1, 1}}, boxes, hits), 3u);
-  EXPECT_EQ(hits, (std::vector<std::uint8_t>{1, 1, 0, 1}));
+  EXPECT_EQ(bits_of(hits, 4), "1101");
   expect_same_as_scalar({{0, 0, 0}, {1, 1, 1}}, boxes);
 }
 
@@ -75,9 +86,9 @@ TEST_P(TestRayAabbs, ParallelSlabsAreDecidedByTheOrigin) {
   const double outside = std::nextafter(1.0, 2.0);
   const AabbSoa boxes = soa({{{0, 0, 0}, {1, 1, 1}}, {{outside, 0, 0}, {2, 1, 1}}, {{-1, 0, 0}, {0, 1, 1}}});
   for (double dx : {0.0, -0.0, kDenormMin, -kDenormMin, 0x1p-1024, -0x1p-1024}) {
-    std::vector<std::uint8_t> hits(3);
+    std::vector<std::uint64_t> hits(1);
     EXPECT_EQ(test_ray_aabbs({{1, -1, 0.5}, {dx, 1, 0}}, boxes, hits), 1u);
-    EXPECT_EQ(hits, (std::vector<std::uint8_t>{1, 0, 0}));
+    EXPECT_EQ(bits_of(hits, 3), "100");
     expect_same_as_scalar({{1, -1, 0.5}, {dx, 1, 0}}, boxes);
     expect_same_as_scalar({{0, -1, 0.5}, {dx, 1, 0}}, boxes);
   }
@@ -93,9 +104,9 @@ TEST_P(TestRayAabbs, NaNAndInfinitiesGiveNoHit) {
                              {{-kInf, 0, 0}, {1, 1, 1}},
                              {{0, 0, 0}, {1, 1, kInf}},
                              {{1, 0, 0}, {0, 1, 1}}});  // inverted
-  std::vector<std::uint8_t> hits(boxes.size());
+  std::vector<std::uint64_t> hits(1);
   EXPECT_EQ(test_ray_aabbs({{-1, 0.5, 0.5}, {1, 0, 0}}, boxes, hits), 1u);
-  EXPECT_EQ(hits, (std::vector<std::uint8_t>{1, 0, 0, 0, 0, 0}));
+  EXPECT_EQ(bits_of(hits, 6), "100000");
   for (const Ray& ray : std::initializer_list<Ray>{{{kNan, 0.5, 0.5}, {1, 0, 0}},
                                                    {{-1, 0.5, 0.5}, {kNan, 0, 0}},
                                                    {{-1, 0.5, 0.5}, {kInf, 0, 0}},
@@ -117,10 +128,14 @@ TEST_P(TestRayAabbs, AComponentSubnormalOnceScaledTakesTheScalarPath) {
   expect_same_as_scalar({{0.5, -1, 0.5}, {0x1p-1000, 1, 0}}, boxes);
 }
 
-TEST_P(TestRayAabbs, TooFewHitSlotsThrow) {
-  const AabbSoa boxes = soa({{{0, 0, 0}, {1, 1, 1}}, {{0, 0, 0}, {1, 1, 1}}});
-  std::vector<std::uint8_t> hits(1);
+TEST_P(TestRayAabbs, TooFewHitWordsThrow) {
+  AabbSoa boxes;
+  for (int i = 0; i < 65; ++i) boxes.push_back({{0, 0, 0}, {1, 1, 1}});
+  std::vector<std::uint64_t> hits(1);
   EXPECT_THROW(test_ray_aabbs({{0, 0, 0}, {1, 0, 0}}, boxes, hits), std::invalid_argument);
+  hits.resize(hit_words(boxes.size()));
+  EXPECT_EQ(test_ray_aabbs({{0, 0, 0}, {1, 0, 0}}, boxes, hits), 65u);
+  EXPECT_EQ(hits, (std::vector<std::uint64_t>{~std::uint64_t{0}, 1}));
 }
 
 // Random rays and boxes whose coordinates come from a small set of values, so that ties,

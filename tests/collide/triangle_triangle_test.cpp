@@ -4,6 +4,9 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
+
+#include "collide/simd.h"
 
 namespace cc {
 namespace {
@@ -53,10 +56,62 @@ TEST(TestTriangleTriangle, SubnormalEdgesStillGiveWellResolvedAxes) {
   EXPECT_FALSE(test_triangle_triangle(a, b));
 }
 
+TEST(TestTriangleTriangle, ASliverKeepsItsNormalWhenScalingFlushesItsLongEdges) {
+  // b's first and third vertices are 2^-1074 apart in y: scaled down, its long edges lose their y
+  // components and e0 x e1 comes out 0; the normal from the short edge (scaled up exactly) still
+  // separates b from a, 0.13 of the largest coordinate away in the plane y = DBL_MIN.
+  const double y = 2.225073858507201e-308, below = 2.2250738585072004e-308;
+  const Triangle a = tri({0.03125, y, 1.25}, {0.014309717841332474, y, 8}, {-1, y, 8});
+  const Triangle b = tri({8, below, 2}, {-0.6795751632047552, y, -0.011761275504420956}, {8, y, 2});
+  EXPECT_FALSE(test_triangle_triangle(a, b));
+  EXPECT_FALSE(test_triangle_triangle(b, a));
+}
+
 TEST(TestTriangleTriangle, IsSymmetricBitForBit) {
   const Triangle a = tri({0.1, 0.2, 0.3}, {1.1, -0.4, 0.2}, {0.3, 0.9, -0.5});
   const Triangle b = tri({0.5, 0.1, -0.2}, {0.6, 0.4, 0.8}, {-0.3, 0.2, 0.1});
   EXPECT_EQ(test_triangle_triangle(a, b), test_triangle_triangle(b, a));
+}
+
+// Random pairs, each also moved along the line of centroids to either side of the test's own
+// first contact, where any difference in the rounding would show: every kernel this processor
+// runs answers as the scalar one, and as with the triangles swapped.
+TEST(TestTriangleTriangle, EveryKernelAnswersAlikeAtItsOwnBoundary) {
+  std::mt19937_64 rng(16);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const auto scalar = [](const Triangle& a, const Triangle& b) {
+    const simd::ForcedKernel forced(simd::Kernel::scalar);
+    return test_triangle_triangle(a, b);
+  };
+  const auto random_triangle = [&] {
+    const Vec3 c{u(rng), u(rng), u(rng)};
+    return tri(c + 0.6 * Vec3{u(rng), u(rng), u(rng)}, c + 0.6 * Vec3{u(rng), u(rng), u(rng)},
+               c + 0.6 * Vec3{u(rng), u(rng), u(rng)});
+  };
+  const auto centroid = [](const Triangle& t) { return (1.0 / 3) * (t.v[0] + t.v[1] + t.v[2]); };
+  int hits = 0, pairs = 0;
+  for (int round = 0; round < 300; ++round) {
+    const Triangle a = random_triangle(), start = random_triangle();
+    const Vec3 d = centroid(start) - centroid(a);
+    const auto at = [&](double s) {
+      const Vec3 m = s * d - d;  // s = 0 puts the centroids together, 1 is the start
+      return tri(start.v[0] + m, start.v[1] + m, start.v[2] + m);
+    };
+    double lo = 0, hi = 1;
+    if (!scalar(a, at(lo)) || scalar(a, at(hi))) continue;
+    for (int k = 0; k < 200 && std::nextafter(lo, hi) != hi; ++k) (scalar(a, at((lo + hi) / 2)) ? lo : hi) = (lo + hi) / 2;
+    for (const Triangle& b : {start, at(lo), at(hi)}) {
+      const bool expected = scalar(a, b);
+      hits += expected, ++pairs;
+      for (simd::Kernel kernel : simd::supported_kernels()) {
+        const simd::ForcedKernel forced(kernel);
+        EXPECT_EQ(test_triangle_triangle(a, b), expected) << to_string(kernel) << ", round " << round;
+        EXPECT_EQ(test_triangle_triangle(b, a), expected) << to_string(kernel) << ", swapped, round " << round;
+      }
+    }
+  }
+  EXPECT_GT(pairs, 300);
+  EXPECT_GT(hits, pairs / 4);
 }
 
 TEST(TestTriangleTriangle, OutOfContractInputsGiveNoContact) {

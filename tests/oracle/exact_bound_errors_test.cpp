@@ -45,8 +45,10 @@ TEST(BoundErrors, AnObbFrameThatIsNotOrthonormalIsMeasuredAgainstTheFrameTerm) {
   bounds::Records r;
   EXPECT_FALSE(test_obb_obb(a, b, r));  // the first axis separates: 2 (1 + e) - 1 > the bound
   const auto frame = of("frame", kExact.bound_errors(r));
-  ASSERT_EQ(frame.size(), 1u);
+  ASSERT_EQ(frame.size(), 3u);  // a's three face normals, tried at once
   EXPECT_DOUBLE_EQ(frame[0].error, 2 * e + e * e);
+  EXPECT_EQ(frame[1].error, 0);  // along a's exact axes y and z, a reaches 0 and b is a point
+  EXPECT_EQ(frame[2].error, 0);
   EXPECT_EQ(frame[0].bound, 6 * kObbOrthonormalTolerance);
   EXPECT_FALSE(frame[0].decisive);  // apart by about 1, far beyond its bound
 }

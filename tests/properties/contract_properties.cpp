@@ -8,7 +8,8 @@
 //  - kdop_cone, support_bound: the cone's nonnegative combination is its direction to within
 //    2^-46 of it, and the bound is at least every point's projection (up to its own rounding);
 //  - rotation_radius, bounding_cube, fitted_box: the radius is no less than any vertex's
-//    distance, and both boxes hold the mesh placed by the pose, exactly and as apply() places it.
+//    distance, and both boxes hold the mesh placed by the pose, exactly and as apply() places it;
+//  - transform_error_bound: apply() places each vertex within it of the exact placement.
 // The point sets are coincident, collinear, coplanar or in general position, in a random order
 // (the extremes anywhere), with repeated points, at every scale the value source draws.
 #include <gtest/gtest.h>
@@ -268,7 +269,8 @@ QVec3 placed_exactly(const RigidTransform& t, const Vec3& v) {
 
 TEST(Contracts, AnObjectsBoxesHoldItsPlacedMesh) {
   Layouts met;
-  const std::string property = "rotation_radius, bounding_cube and fitted_box hold the placed mesh";
+  const std::string property =
+      "rotation_radius, bounding_cube and fitted_box hold the placed mesh, apply() within transform_error_bound";
   const bool passed = check_property_with_choices(property, 800, [&](harness::Choices& c) {
     harness::ValueSource values(c, {.max_exponent = 8, .extreme = true, .huge = false});
     const std::vector<Vec3> points = draw_points(values, kLayouts[c.draw(4)]);
@@ -287,6 +289,10 @@ TEST(Contracts, AnObjectsBoxesHoldItsPlacedMesh) {
       const Aabb cube = bounding_cube(radius, pose), fitted = fitted_box(mesh, pose);
       for (const Vec3& v : points) {
         const QVec3 exactly = placed_exactly(pose, v), as_applied = q(apply(pose, v));
+        const Rational bound = rational(transform_error_bound(pose, norm1(v)));
+        for (int k = 0; k < 3; ++k) {
+          if (abs(as_applied[k] - exactly[k]) > bound) RC_FAIL("apply() places a vertex beyond transform_error_bound: " + text({v}) + " rotation " + text({pose.rotation.col[0], pose.rotation.col[1], pose.rotation.col[2]}) + " translation " + text({pose.translation}));
+        }
         if (!holds(cube, exactly) || !holds(cube, as_applied)) RC_FAIL("the bounding cube does not hold a placed vertex: " + text(points) + " rotation " + text({pose.rotation.col[0], pose.rotation.col[1], pose.rotation.col[2]}) + " translation " + text({pose.translation}));
         if (!holds(fitted, exactly) || !holds(fitted, as_applied)) RC_FAIL("the fitted box does not hold a placed vertex: " + text(points) + " rotation " + text({pose.rotation.col[0], pose.rotation.col[1], pose.rotation.col[2]}) + " translation " + text({pose.translation}));
       }

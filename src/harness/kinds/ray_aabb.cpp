@@ -143,20 +143,20 @@ Answer batched_ray(const RayAabbInput& in) {
   constexpr std::size_t kInBlock = 3, kInTail = 10, kBoxes = 11;
   AabbSoa boxes;
   for (std::size_t i = 0, f = 0; i < kBoxes; ++i) boxes.push_back(i == kInBlock || i == kInTail ? box : fillers[f++]);
-  std::vector<std::uint8_t> hits(kBoxes);
+  std::vector<std::uint64_t> hits(hit_words(kBoxes));
   for (simd::Kernel kernel : simd::supported_kernels()) {
     test_ray_aabbs(in.ray, boxes, hits, kernel);
     for (std::size_t i = 0; i < kBoxes; ++i) {
       const bool scalar = intersect_ray_aabb(in.ray, boxes[i]).hit;
-      if (hits[i] != (scalar ? 1 : 0)) {
+      if (hit_bit(hits, i) != scalar) {
         throw std::logic_error("the " + std::string(simd::to_string(kernel)) + " kernel says " +
-                               (hits[i] ? "hit" : "miss") + " for box " + std::to_string(i) + " of " +
+                               (hit_bit(hits, i) ? "hit" : "miss") + " for box " + std::to_string(i) + " of " +
                                std::to_string(kBoxes) + (i == kInBlock || i == kInTail ? " (the case's)" : "") +
                                ", intersect_ray_aabb " + (scalar ? "hit" : "miss"));
       }
     }
   }
-  return Answer::of(hits[kInBlock] != 0);
+  return Answer::of(hit_bit(hits, kInBlock));
 }
 
 constexpr std::string_view kConfigurations[] = {

@@ -10,8 +10,10 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <sstream>
 
+#include "harness/formats/case_file.h"
 #include "harness/generation/generate.h"
 #include "harness/judging/party.h"
 #include "harness/model/library.h"
@@ -117,8 +119,9 @@ constexpr int kRetired = 3;
     const std::int64_t elapsed = now_ns() - start;
     slot.busy_ns[kind_number] += elapsed;
     slot.counts[kind_number][static_cast<std::size_t>(e.verdict.cls)] += 1;
-    if (is_finding(e.verdict.cls)) {
-      write_line(out, "F " + std::to_string(static_cast<int>(kind)) + " " + std::to_string(index));
+    if (is_finding(e.verdict.cls)) {  // with the opinions, as case files store them (exactly)
+      write_line(out, "F " + std::to_string(static_cast<int>(kind)) + " " + std::to_string(index) + " " +
+                          opinions_to_json(e.opinions).dump());
     }
     if (second->abandoned_calls() > abandoned_before) {  // later cases must not pay for it
       ::close(out);
@@ -189,13 +192,19 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
   const auto exact = oracles.exact();
   const auto second = oracles.second();
   std::map<QueryKind, KindTally> crashed;  // cases on which a worker died
-  const auto record_finding = [&](QueryKind kind, std::uint64_t index, const std::string& crash, int phase) {
+  const auto record_finding = [&](QueryKind kind, std::uint64_t index, const std::string& crash, int phase,
+                                  const std::optional<std::vector<Opinion>>& opinions) {
     Finding f;
     f.kind = kind;
     f.case_index = index;
     f.input = campaign_case(options.seed, kind, index, options.out_of_contract_percent, options.mesh_folder);
     f.crash = crash;
-    if (crash.empty()) {  // it returned in the worker: the same again, first in a child
+    if (crash.empty() && opinions) {  // it returned in the worker, which sent the opinions it got
+      f.evaluation.library = ask_library(f.input);
+      f.evaluation.exact = exact->judge(f.input);
+      f.evaluation.opinions = *opinions;
+      f.evaluation.verdict = classify(kind, f.evaluation.library, f.evaluation.exact, f.evaluation.opinions);
+    } else if (crash.empty()) {  // (opinions that did not parse) the same again, first in a child
       if (auto e = evaluate_in_child(f.input, *exact, *second)) {
         f.evaluation = std::move(*e);
       } else {
@@ -227,13 +236,21 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
     }
     result.findings.push_back(std::move(f));
   };
-  const auto handle_line = [&](const std::string& line) {  // "F <kind> <case index>"
+  const auto handle_line = [&](const std::string& line) {  // "F <kind> <case index> <opinions>"
     std::istringstream in(line);
     char tag = 0;
     int kind_number = 0;
     std::uint64_t index = 0;
     in >> tag >> kind_number >> index;
-    if (tag == 'F' && in) record_finding(static_cast<QueryKind>(kind_number), index, "", idle);
+    if (tag != 'F' || !in) return;
+    std::optional<std::vector<Opinion>> opinions;
+    try {
+      std::string rest;
+      std::getline(in, rest);
+      opinions = opinions_from_json(Json::parse(rest), "");
+    } catch (const std::exception&) {
+    }
+    record_finding(static_cast<QueryKind>(kind_number), index, "", idle, opinions);
   };
   // The tallies: the workers' shared counters plus the cases they died on.
   const auto tallies = [&] {
@@ -292,7 +309,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
         if (slot.hung) what = "hung for more than " + format_seconds(options.case_timeout_seconds);
         const int phase = slot.phase;
         record_finding(static_cast<QueryKind>(slot.kind.load()), slot.case_index,
-                       what + " in " + std::string(phase_name(phase)), phase);
+                       what + " in " + std::string(phase_name(phase)), phase, std::nullopt);
         slot.phase = idle;
         slot.hung = false;
         if (!g_stop && now_ns() < deadline_ns) {

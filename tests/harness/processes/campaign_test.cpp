@@ -1,7 +1,7 @@
 // The campaign's supervision: a second opinion that crashes or hangs on some cases costs the
 // campaign a worker, not the run; each such case is recorded as a finding and can be rebuilt. A
 // worker whose second opinion abandoned a call is replaced before its next case, and a finding's
-// second opinions are asked again in a child process, not in the campaign's own.
+// second opinions are those its worker got, never asked in the campaign's own process.
 #include "harness/processes/campaign.h"
 
 #include <gtest/gtest.h>
@@ -130,7 +130,7 @@ class CrashesInTheCampaignProcess final : public SecondOpinion {
   pid_t campaign_;
 };
 
-TEST(Campaign, AsksAFindingsSecondOpinionsAgainInAChildProcess) {
+TEST(Campaign, TakesAFindingsSecondOpinionsFromItsWorkerNeverAsksThemItself) {
   CampaignOptions options;
   options.seconds = 1;
   options.seed = 11;
@@ -142,7 +142,7 @@ TEST(Campaign, AsksAFindingsSecondOpinionsAgainInAChildProcess) {
     EXPECT_TRUE(disagrees_on(f.input));
     EXPECT_EQ(f.evaluation.verdict.cls, CaseClass::oracle_defect);
     ASSERT_EQ(f.evaluation.opinions.size(), 1u);
-    EXPECT_NE(f.evaluation.opinions[0].answer.hit, f.evaluation.library.hit);  // as the child answered
+    EXPECT_NE(f.evaluation.opinions[0].answer.hit, f.evaluation.library.hit);  // as the worker's answered
   }
 }
 
