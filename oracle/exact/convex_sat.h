@@ -82,8 +82,4 @@ struct CandidateAxis {
 /// the coordinate axes.
 std::vector<CandidateAxis> candidate_axes_for_any_offset(const ExactShape& a, const ExactShape& b);
 
-/// The two polytopes of an obb_obb, tri_aabb, tri_obb or tri_tri query (finite inputs), in the
-/// order the verdict uses (box first); nothing for other kinds.
-std::optional<std::pair<ExactShape, ExactShape>> polytopes_of(const harness::Input& input);
-
 }  // namespace cc::exact

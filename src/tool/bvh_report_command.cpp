@@ -109,7 +109,7 @@ Tally run_fcl(const std::string& party, const std::vector<Pose>& poses) {
   t.counted = false;
   for (const Pose& p : poses) {
     const auto q = Clock::now();
-    const harness::Opinion o = fcl_oracle::fcl_collide_meshes(party, p.m, false);
+    const harness::Opinion o = fcl_oracle::fcl_collide_meshes(party, p.m);
     t.query_us.push_back(1e3 * ms_since(q));
     t.pairs += o.answer.pairs.size();
     const harness::Verdict v = harness::classify(harness::QueryKind::mesh_mesh, o.answer, p.exact, {o});

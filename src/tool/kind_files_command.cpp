@@ -28,7 +28,7 @@ struct KindFilesArgs {
   bool check = false;
 };
 
-// The kind's input type's name: ray_aabb -> RayAabbInput.
+// The kind's input type's name: its name in CamelCase, then Input.
 std::string input_type_of(std::string_view kind) {
   std::string out;
   bool upper = true;

@@ -1,5 +1,6 @@
-// The bands by kind and by party: the library's for each kind (declared in the kind's unit),
-// printed by `crosscheck bands` with every party's and quoted in the README.
+// The bands by kind and by party: the library's for each kind (declared in the kind's unit), and
+// each second-opinion party's (declared with its call by its oracle), printed by `crosscheck
+// bands` and quoted in the README.
 #pragma once
 
 #include <string>
@@ -7,7 +8,7 @@
 #include <vector>
 
 #include "harness/judging/band.h"
-#include "harness/model/query_kind.h"
+#include "harness/model/oracle.h"
 
 namespace cc::harness {
 
@@ -19,11 +20,8 @@ Band library_band(QueryKind kind);
 /// and, when wrong, is an impl_bug.
 constexpr bool is_library_party(std::string_view party) { return party.starts_with("library."); }
 
-/// A second-opinion party's band (see FclSecondOpinion for the party names). Throws
-/// std::out_of_range for an unknown party.
-Band party_band(std::string_view party);
-
-/// Every band, for printing: (query or party name, band).
-std::vector<std::pair<std::string, Band>> all_bands();
+/// Every band, for printing: (query or party name, band), the library's for each kind, then
+/// each party of `second` once.
+std::vector<std::pair<std::string, Band>> all_bands(const SecondOpinion& second);
 
 }  // namespace cc::harness

@@ -5,6 +5,7 @@
 #include <iterator>
 #include <optional>
 #include <sstream>
+#include <stdexcept>
 
 #include "harness/judging/bands.h"
 
@@ -250,7 +251,8 @@ Verdict classify(const Band& band_of_library, Judged judged, const Answer& libra
       continue;
     }
     const bool own = is_library_party(o.party);
-    Band band = own ? band_of_library : (o.band ? *o.band : party_band(o.party));
+    if (!own && !o.band) throw std::invalid_argument("the opinion of " + o.party + " carries no band");
+    Band band = own ? band_of_library : *o.band;
     if (!own) band.param_width = 0;  // second opinions give no parameters
     Answer said = o.answer;
     if (!own) said.params.clear();

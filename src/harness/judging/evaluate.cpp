@@ -24,6 +24,15 @@ Evaluation evaluate(const Input& input, const ExactReference& exact, const Secon
   return e;
 }
 
+void restore_bands(std::vector<Opinion>& opinions, const SecondOpinion& second, QueryKind kind) {
+  const std::vector<PartyBand> declared = second.parties(kind);
+  for (Opinion& o : opinions) {
+    for (const PartyBand& p : declared) {
+      if (p.party == o.party) o.band = p.band;
+    }
+  }
+}
+
 std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactReference& exact, const SecondOpinion& second) {
   int fds[2];
   if (pipe(fds) != 0) return std::nullopt;
@@ -59,6 +68,7 @@ std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactRefer
   Evaluation e;
   try {
     e.opinions = opinions_from_json(Json::parse(text), "");
+    restore_bands(e.opinions, second, kind_of(input));
   } catch (const std::exception&) {
     return std::nullopt;
   }

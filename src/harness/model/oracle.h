@@ -80,13 +80,20 @@ class ExactReference {
   virtual std::vector<TermError> bound_errors(const bounds::Records& records) const = 0;
 };
 
+/// A second-opinion party as its oracle declares it: its name and its band.
+struct PartyBand {
+  std::string party;
+  Band band;
+};
+
 class SecondOpinion {
  public:
   virtual ~SecondOpinion() = default;
-  /// One opinion per party that covers this kind of query (possibly "not applicable").
+  /// One opinion per party that covers this kind of query (possibly "not applicable"), each
+  /// with its party's name and band.
   virtual std::vector<Opinion> opinions(const Input& input) const = 0;
-  /// The parties that answer this kind of query, in the order of opinions().
-  virtual std::vector<std::string> parties(QueryKind kind) const = 0;
+  /// The parties that answer this kind of query, with their bands, in the order of opinions().
+  virtual std::vector<PartyBand> parties(QueryKind kind) const = 0;
   /// How many opinions this process has cut short by a jump out of a party's code (a time
   /// limit, or an abort() caught). What that code held is leaked and the heap may be left
   /// inconsistent: a process that goes on to other cases after one should be replaced.

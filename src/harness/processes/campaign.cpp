@@ -217,9 +217,10 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       if (phase != in_library) f.evaluation.library = ask_library(f.input);
       if (phase != in_exact && phase != in_library) f.evaluation.exact = exact->judge(f.input);
       if (phase == in_second_opinion) {
-        for (const std::string& party : second->parties(kind)) {
+        for (const PartyBand& party : second->parties(kind)) {
           Opinion o = failed(f.crash);
-          o.party = party;
+          o.party = party.party;
+          o.band = party.band;
           f.evaluation.opinions.push_back(std::move(o));
         }
         f.evaluation.verdict = classify(kind, f.evaluation.library, f.evaluation.exact, f.evaluation.opinions);
@@ -248,6 +249,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       std::string rest;
       std::getline(in, rest);
       opinions = opinions_from_json(Json::parse(rest), "");
+      restore_bands(*opinions, *second, static_cast<QueryKind>(kind_number));
     } catch (const std::exception&) {
     }
     record_finding(static_cast<QueryKind>(kind_number), index, "", idle, opinions);

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <fstream>
 #include <map>
+#include <stdexcept>
 
 #include "collide/box_pairs.h"
 #include "collide/collision_world.h"
@@ -16,11 +17,21 @@
 #include "harness/model/mesh_collide.h"
 #include "tool/scenes/rock_slide.h"
 #include "oracle/exact/exact_meshes.h"
+#include "oracle/fcl/fcl_oracle.h"
 #include "oracle/fcl/fcl_scene.h"
 #include "tool/commands.h"
 
 namespace cc::tool {
 namespace {
+
+// The party the scene's FCL pipeline stands for, and its band as oracle/fcl declares it.
+const std::string kFclParty = "fcl.BVHModel<OBBRSSd>";
+harness::Band fcl_party_band() {
+  for (const harness::PartyBand& p : fcl_oracle::FclSecondOpinion().parties(harness::QueryKind::mesh_mesh)) {
+    if (p.party == kFclParty) return p.band;
+  }
+  throw std::logic_error("oracle/fcl declares no party " + kFclParty);
+}
 
 using harness::median;
 
@@ -150,13 +161,15 @@ int run_scene(const SceneArgs& args, harness::BvType bv_type) {
       tallies[m].candidates += fcl_candidates;
       const std::vector<ObjectPair> diff = differing(contacts, theirs);
       tallies[m].differing += diff.size();
+      static const harness::Band fcl_band = fcl_party_band();
       for (const ObjectPair& p : diff) {
         harness::MeshPair mp;
         mp.a = harness::triangles_mesh(*slide.mesh_of(p.first));
         mp.b = harness::triangles_mesh(*slide.mesh_of(p.second));
         mp.pose_a = slide.pose_of(p.first), mp.pose_b = slide.pose_of(p.second);
         mp.library.bv = bv_type;
-        const harness::Opinion said{"fcl.BVHModel<OBBRSSd>", harness::Opinion::Status::answered, answer_of(triangles_of(theirs, p)), ""};
+        const harness::Opinion said{kFclParty, harness::Opinion::Status::answered, answer_of(triangles_of(theirs, p)), "",
+                                    fcl_band};
         const harness::Verdict v = harness::classify(harness::QueryKind::mesh_mesh, answer_of(triangles_of(contacts, p)),
                                                      exact::judge_meshes(mp), {said});
         ++tallies[m].classes[v.cls];

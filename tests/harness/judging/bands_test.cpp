@@ -2,17 +2,28 @@
 
 #include <gtest/gtest.h>
 
+#include "harness/processes/campaign.h"
 #include "oracle/fcl/fcl_oracle.h"
 
 namespace cc::harness {
 namespace {
 
-TEST(Bands, EverySecondOpinionPartyHasABand) {
+// Each party's band comes with its opinions: the one its oracle declares for it, said why.
+TEST(Bands, EverySecondOpinionCarriesItsPartysBand) {
   const fcl_oracle::FclSecondOpinion fcl;
   for (QueryKind kind : kAllQueryKinds) {
-    for (const std::string& party : fcl.parties(kind)) EXPECT_NO_THROW(party_band(party)) << party;
+    const std::vector<PartyBand> parties = fcl.parties(kind);
+    for (const PartyBand& p : parties) EXPECT_FALSE(p.band.why.empty()) << p.party;
+    const Input in = campaign_case(1, kind, 0, 0);
+    const std::vector<Opinion> opinions = fcl.opinions(in);
+    ASSERT_EQ(opinions.size(), parties.size()) << name(kind);
+    for (std::size_t i = 0; i < parties.size(); ++i) {
+      EXPECT_EQ(opinions[i].party, parties[i].party);
+      ASSERT_TRUE(opinions[i].band.has_value()) << parties[i].party;
+      EXPECT_EQ(opinions[i].band->width, parties[i].band.width) << parties[i].party;
+      EXPECT_EQ(opinions[i].band->sides, parties[i].band.sides) << parties[i].party;
+    }
   }
-  EXPECT_THROW(party_band("nobody"), std::out_of_range);
 }
 
 // Primitive tests round outward; a mesh query moves one mesh into the other's frame in

@@ -31,15 +31,18 @@ CampaignResult aabb_campaign(CampaignOptions options, Args... args) {
   return run_campaign(options, oracles);
 }
 
+// The fake second opinions' party's band (exact, as the real fcl.AABBd::overlap's).
+constexpr Band kBand{0, BandSides::exact, 0, "comparisons of inputs only: exact"};
+
 // Answers like FCL's AABB test, but crashes or hangs on a few inputs.
 class Unreliable final : public SecondOpinion {
  public:
   std::vector<Opinion> opinions(const Input& in) const override {
     if (crashes_on(in)) std::raise(SIGSEGV);
     while (hangs_on(in)) pause();
-    return {{"fcl.AABBd::overlap", Opinion::Status::answered, ask_library(in), ""}};
+    return {{"fcl.AABBd::overlap", Opinion::Status::answered, ask_library(in), "", kBand}};
   }
-  std::vector<std::string> parties(QueryKind) const override { return {"fcl.AABBd::overlap"}; }
+  std::vector<PartyBand> parties(QueryKind) const override { return {{"fcl.AABBd::overlap", kBand}}; }
 };
 
 TEST(Campaign, SurvivesCrashesAndHangsInAnOracle) {
@@ -81,13 +84,13 @@ class DamagedAfterAbandoning final : public SecondOpinion {
   std::vector<Opinion> opinions(const Input& in) const override {
     if (abandoned_on(in)) {
       ++abandoned_;
-      return {{"fcl.AABBd::overlap", Opinion::Status::failed, {}, "did not return within the time limit"}};
+      return {{"fcl.AABBd::overlap", Opinion::Status::failed, {}, "did not return within the time limit", kBand}};
     }
     Answer a = ask_library(in);
     if (abandoned_ > 0) a.hit = !a.hit;
-    return {{"fcl.AABBd::overlap", Opinion::Status::answered, a, ""}};
+    return {{"fcl.AABBd::overlap", Opinion::Status::answered, a, "", kBand}};
   }
-  std::vector<std::string> parties(QueryKind) const override { return {"fcl.AABBd::overlap"}; }
+  std::vector<PartyBand> parties(QueryKind) const override { return {{"fcl.AABBd::overlap", kBand}}; }
   int abandoned_calls() const override { return abandoned_; }
 
  private:
@@ -122,9 +125,9 @@ class CrashesInTheCampaignProcess final : public SecondOpinion {
     if (::getpid() == campaign_) std::raise(SIGSEGV);
     Answer a = ask_library(in);
     if (disagrees_on(in)) a.hit = !a.hit;
-    return {{"fcl.AABBd::overlap", Opinion::Status::answered, a, ""}};
+    return {{"fcl.AABBd::overlap", Opinion::Status::answered, a, "", kBand}};
   }
-  std::vector<std::string> parties(QueryKind) const override { return {"fcl.AABBd::overlap"}; }
+  std::vector<PartyBand> parties(QueryKind) const override { return {{"fcl.AABBd::overlap", kBand}}; }
 
  private:
   pid_t campaign_;

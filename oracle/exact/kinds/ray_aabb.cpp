@@ -8,11 +8,12 @@
 // the ray touches it. Every condition of the answer is linear in delta -- entry_i(delta) =
 // (near_i - o_i - delta)/d_i, exit likewise -- so delta* is the largest of the deltas that each
 // condition needs, and margin = -delta* / scale.
-#include "oracle/exact/exact_ray_aabb.h"
+#include "oracle/exact/kinds/ray_aabb.h"
 
 #include <cmath>
 
 #include "oracle/exact/domain.h"
+#include "oracle/exact/explain.h"
 #include "oracle/exact/judges.h"
 
 namespace cc::exact {
@@ -73,6 +74,7 @@ RayAnalysis analyse_ray(const harness::RayAabbInput& in) {
   return r;
 }
 
+template <>
 ExactVerdict judge(const harness::RayAabbInput& in) {
   const Ray& ray = in.ray;
   const Aabb& box = in.box;
@@ -111,6 +113,38 @@ ExactVerdict judge(const harness::RayAabbInput& in) {
     v.note = "direction component(s) " + r.flushed + " have an overflowing reciprocal: parallel by contract";
   }
   return v;
+}
+
+template <>
+harness::Explanation explain(const harness::RayAabbInput& in) {
+  using harness::Explanation;
+  const RayAnalysis r = analyse_ray(in);
+  Explanation e;
+  e.title = "slabs: the t interval of each";
+  e.columns = {"slab", "dir", "t interval exact", "t interval float", "note"};
+  const char* const names[] = {"x", "y", "z"};
+  for (const RaySlab& s : r.slabs) {
+    const int k = s.axis;
+    if (s.parallel) {
+      e.rows.push_back({names[k], num(in.ray.dir[k]), "-", "-",
+                        std::string("parallel: origin ") + (s.origin_inside ? "inside" : "outside") + " the closed slab"});
+      continue;
+    }
+    const double inv = 1.0 / in.ray.dir[k];
+    double t0 = (in.box.lo[k] - in.ray.origin[k]) * inv, t1 = (in.box.hi[k] - in.ray.origin[k]) * inv;
+    if (inv < 0) std::swap(t0, t1);
+    e.rows.push_back({names[k], num(in.ray.dir[k]), interval(to_double(s.near_t), to_double(s.far_t)), interval(t0, t1), ""});
+  }
+  e.facts.push_back({"[tmin, tmax]", interval(in.ray.tmin, in.ray.tmax)});
+  e.facts.push_back({"t_enter (exact)", r.enter ? num(*r.enter) : "-inf"});
+  e.facts.push_back({"t_exit (exact)", r.exit ? num(*r.exit) : "inf"});
+  if (!r.flushed.empty()) e.facts.push_back({"parallel by contract", r.flushed});
+  e.deciding = r.empty_range ? "tmin > tmax: no parameter at all" : "the box growth needed for contact, bound by " + r.binding;
+  e.deciding_value = -to_double(r.delta);
+  e.deciding_ulps = in_ulps(e.deciding_value, max_magnitude({in.ray.origin.x, in.ray.origin.y, in.ray.origin.z,
+                                                              in.box.lo.x, in.box.lo.y, in.box.lo.z, in.box.hi.x,
+                                                              in.box.hi.y, in.box.hi.z}));
+  return e;
 }
 
 }  // namespace cc::exact

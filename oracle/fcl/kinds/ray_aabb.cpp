@@ -1,5 +1,5 @@
-// libccd's GJK and MPR on a segment against a box, through support functions. FCL has no rays;
-// libccd answers for segments only (finite tmin and tmax).
+// ray_aabb's second opinions: libccd's GJK and MPR on a segment against a box, through support
+// functions. FCL has no rays; libccd answers for segments only (finite tmin and tmax).
 #include <ccd/ccd.h>
 
 #include <cmath>
@@ -42,10 +42,10 @@ void box_center(const void* obj, ccd_vec3_t* out) {
 }
 
 template <class Algorithm>
-Opinion segment_box(const std::string& party, const harness::RayAabbInput& in, Algorithm intersect) {
+Opinion segment_box(const harness::RayAabbInput& in, Algorithm intersect) {
   const Ray& r = in.ray;
-  if (!std::isfinite(r.tmin) || !std::isfinite(r.tmax)) return not_applicable(party, "a ray of infinite length");
-  if (!(r.tmin <= r.tmax)) return not_applicable(party, "an empty parameter range (tmin > tmax)");
+  if (!std::isfinite(r.tmin) || !std::isfinite(r.tmax)) return not_applicable("a ray of infinite length");
+  if (!(r.tmin <= r.tmax)) return not_applicable("an empty parameter range (tmin > tmax)");
   // The segment's end points, rounded to nearest: libccd sees this segment, not the exact one.
   const Segment s{r.origin + r.tmin * r.dir, r.origin + r.tmax * r.dir};
   ccd_t ccd;
@@ -58,14 +58,23 @@ Opinion segment_box(const std::string& party, const harness::RayAabbInput& in, A
   ccd.mpr_tolerance = 1e-6;  // as FCL configures it for collision queries
   int result = 0;
   if (!run_with_time_limit(kLibccdTimeLimit, [&] { result = intersect(&s, &in.box, &ccd); })) {
-    return failed(party, "did not return within " + std::to_string(kLibccdTimeLimit) + " s (a libccd loop)");
+    return failed("did not return within " + std::to_string(kLibccdTimeLimit) + " s (a libccd loop)");
   }
-  return answered(party, result != 0);
+  return answered(result != 0);
 }
 
 }  // namespace
 
-Opinion ccd_gjk_segment_box(const harness::RayAabbInput& in) { return segment_box("libccd.GJK", in, ccdGJKIntersect); }
-Opinion ccd_mpr_segment_box(const harness::RayAabbInput& in) { return segment_box("libccd.MPR", in, ccdMPRIntersect); }
+template <>
+const std::vector<Party<harness::RayAabbInput>>& fcl_parties() {
+  static const std::vector<Party<harness::RayAabbInput>> parties = {
+      {"libccd.GJK",
+       {0x1p-18, BandSides::two_sided, 0,
+        "libccd stops on absolute tolerances (around 1e-6): the band they mean at unit scale"},
+       [](const harness::RayAabbInput& in) { return segment_box(in, ccdGJKIntersect); }},
+      {"libccd.MPR", {0x1p-18, BandSides::two_sided, 0, "mpr_tolerance = 1e-6, absolute: the band it means at unit scale"},
+       [](const harness::RayAabbInput& in) { return segment_box(in, ccdMPRIntersect); }}};
+  return parties;
+}
 
 }  // namespace cc::fcl_oracle

@@ -1,4 +1,4 @@
-// broadphase: every FCL manager given the boxes as its objects' AABBs, frame by frame
+// broadphase's second opinions: every FCL manager given the boxes as its objects' AABBs, frame by frame
 // (registered when a box appears, unregistered when it goes, update() every frame), asked for the
 // overlapping pairs with a callback that only records them. setup() after the first frame,
 // update() after every later one.
@@ -71,11 +71,11 @@ Opinion run_manager(const std::string& manager, const harness::BroadphaseInput& 
     for (const auto& box : frame) {
       for (int k = 0; box && k < 3; ++k) {
         // FCL's managers assume lo <= hi (SaP's update crashes on an inverted box).
-        if (!(box->lo[k] <= box->hi[k])) return not_applicable(party_of(manager), "a box with lo > hi or NaN");
+        if (!(box->lo[k] <= box->hi[k])) return not_applicable("a box with lo > hi or NaN");
         // FCL 0.7's SaP crashes (SIGSEGV in SaPCollisionManager::update_) when a box flat on an
         // axis moves, e.g. one segment box over two frames (a case in corpora/broadphase).
         if (manager == "SaP" && box->lo[k] == box->hi[k] && in.frames.size() > 1) {
-          return not_applicable(party_of(manager), "a box of zero extent moves: SaP's update crashes on it");
+          return not_applicable("a box of zero extent moves: SaP's update crashes on it");
         }
       }
     }
@@ -84,7 +84,7 @@ Opinion run_manager(const std::string& manager, const harness::BroadphaseInput& 
   const auto fcl_manager = make_fcl_manager(manager, world, cell);
   const auto geometry = std::make_shared<fcl::Boxd>(1, 1, 1);
   std::vector<std::unique_ptr<BoxObject>> objects;
-  Opinion o = answered(party_of(manager), false);
+  Opinion o = answered(false);
   for (const auto& frame : in.frames) {
     objects.resize(std::max(objects.size(), frame.size()));
     for (std::size_t i = 0; i < frame.size(); ++i) {
@@ -114,14 +114,6 @@ Opinion run_manager(const std::string& manager, const harness::BroadphaseInput& 
   return o;
 }
 
-}  // namespace
-
-std::vector<std::string> fcl_broadphase_parties() {
-  std::vector<std::string> parties;
-  for (const std::string& name : fcl_manager_names()) parties.push_back(party_of(name));
-  return parties;
-}
-
 Opinion fcl_broadphase(const std::string& manager, const harness::BroadphaseInput& in) {
   // IntervalTree's unregisterObject can loop for ever in deleteNode (about 3% of the campaign's
   // cases): every manager runs under a time limit, and what it leaves behind is leaked. A
@@ -130,10 +122,26 @@ Opinion fcl_broadphase(const std::string& manager, const harness::BroadphaseInpu
   // costs the whole limit.
   Opinion o;
   if (!run_with_time_limit(kBroadphaseTimeLimit, [&] { o = run_manager(manager, in); })) {
-    return failed(party_of(manager), "did not return within 50 ms of CPU time");
+    return failed("did not return within 50 ms of CPU time");
   }
   return o;
 }
 
+}  // namespace
+
+template <>
+const std::vector<Party<harness::BroadphaseInput>>& fcl_parties() {
+  static const std::vector<Party<harness::BroadphaseInput>> parties = [] {
+    // Every manager is given the boxes as the objects' AABBs and reports the pairs it finds overlapping.
+    constexpr Band kManagerBand{0, BandSides::exact, 0, "AABB::overlap on the given bounds (closed boxes): exact"};
+    std::vector<Party<harness::BroadphaseInput>> out;
+    for (const std::string& manager : fcl_manager_names()) {
+      out.push_back({party_of(manager), kManagerBand,
+                     [manager](const harness::BroadphaseInput& in) { return fcl_broadphase(manager, in); }});
+    }
+    return out;
+  }();
+  return parties;
+}
 
 }  // namespace cc::fcl_oracle

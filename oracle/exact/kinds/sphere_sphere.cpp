@@ -4,11 +4,13 @@
 #include <cmath>
 
 #include "oracle/exact/domain.h"
+#include "oracle/exact/explain.h"
 #include "oracle/exact/judges.h"
 #include "oracle/exact/rational.h"
 
 namespace cc::exact {
 
+template <>
 ExactVerdict judge(const harness::SphereSphereInput& in) {
   const Sphere &a = in.a, &b = in.b;
   const std::initializer_list<double> all = {a.center.x, a.center.y, a.center.z, a.radius,
@@ -28,6 +30,26 @@ ExactVerdict judge(const harness::SphereSphereInput& in) {
   const double denominator = to_double(reach) + length(d).to_double();
   v.margin = denominator > 0 ? to_double(slack) / denominator / scale_of(magnitude) : 0.0;
   return v;
+}
+
+template <>
+harness::Explanation explain(const harness::SphereSphereInput& in) {
+  using harness::Explanation;
+  Explanation e;
+  const QVec3 d = rational(in.a.center) - rational(in.b.center);
+  const Rational reach = rational(in.a.radius) + rational(in.b.radius);
+  const Rational slack = reach * reach - dot(d, d);
+  const Vec3 fd = in.a.center - in.b.center;
+  const double fd2 = fd.x * fd.x + fd.y * fd.y + fd.z * fd.z, fr = in.a.radius + in.b.radius;
+  e.title = "distances";
+  e.facts = {{"|c_a - c_b|", num(length(d).to_double())},
+             {"r_a + r_b", num(reach)},
+             {"(r_a + r_b)^2 - |c_a - c_b|^2 exact", num(slack)},
+             {"(r_a + r_b)^2 - |c_a - c_b|^2 float", num(fr * fr - fd2)}};
+  e.deciding = "(r_a + r_b)^2 - |c_a - c_b|^2";
+  e.deciding_value = to_double(slack);
+  e.deciding_ulps = in_ulps(e.deciding_value, std::max(to_double(reach * reach), to_double(dot(d, d))));
+  return e;
 }
 
 }  // namespace cc::exact

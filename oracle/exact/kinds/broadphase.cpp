@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "oracle/exact/domain.h"
+#include "oracle/exact/explain.h"
 #include "oracle/exact/judges.h"
 
 namespace cc::exact {
@@ -37,6 +38,7 @@ double signed_overlap(const Aabb& a, const Aabb& b) {
 
 }  // namespace
 
+template <>
 ExactVerdict judge(const harness::BroadphaseInput& in) {
   double magnitude = 0;
   for (std::size_t f = 0; f < in.frames.size(); ++f) {
@@ -69,6 +71,34 @@ ExactVerdict judge(const harness::BroadphaseInput& in) {
   }
   if (std::isinf(v.margin)) v.margin = v.margin > 0 ? 1 : -1;  // no pair, or only unbounded ones
   return v;
+}
+
+// Per frame: the boxes present, the overlapping pairs, and the pair nearest to touching.
+template <>
+harness::Explanation explain(const harness::BroadphaseInput& in) {
+  using harness::Explanation;
+  const harness::ExactVerdict v = judge(in);
+  Explanation e;
+  e.title = "boxes per frame (closed-box overlap by comparisons of the bounds)";
+  if (v.contract != harness::Contract::in) {
+    e.deciding = v.note;
+    return e;
+  }
+  e.columns = {"frame", "boxes", "overlapping pairs", "pairs"};
+  for (std::size_t f = 0; f < in.frames.size(); ++f) {
+    std::size_t present = 0;
+    for (const auto& box : in.frames[f]) present += box.has_value();
+    std::string listed;
+    for (std::size_t i = 0; i < v.answer.frames[f].size() && i < 8; ++i) {
+      const auto& [a, b] = v.answer.frames[f][i];
+      listed.append("(").append(std::to_string(a)).append(", ").append(std::to_string(b)).append(") ");
+    }
+    if (v.answer.frames[f].size() > 8) listed.append("...");
+    e.rows.push_back({std::to_string(f), std::to_string(present), std::to_string(v.answer.frames[f].size()), listed});
+  }
+  e.deciding = "the pair nearest to touching, over all frames (overlap > 0, gap < 0, relative to the scale)";
+  e.deciding_value = v.margin;
+  return e;
 }
 
 }  // namespace cc::exact

@@ -8,6 +8,7 @@
 #include "harness/judging/bands.h"
 #include "oracle/exact/domain.h"
 #include "oracle/exact/exact_sweep.h"
+#include "oracle/exact/explain.h"
 #include "oracle/exact/judges.h"
 
 namespace cc::exact {
@@ -56,6 +57,7 @@ double closest_approach_margin(const std::vector<MovingAxis>& axes, double scale
 
 }  // namespace
 
+template <>
 ExactVerdict judge(const harness::MovingObbInput& in) {
   for (const MovingObb* m : {&in.a, &in.b}) {
     if (!all_finite(m->box) || !all_finite({m->velocity.x, m->velocity.y, m->velocity.z})) {
@@ -89,6 +91,37 @@ ExactVerdict judge(const harness::MovingObbInput& in) {
   const ExactWindow grown = exact_sweep(axes, rational(harness::library_band(harness::QueryKind::moving_obb).width * scale));
   v.param_ranges = {{round_down(grown.first), round_up(window.first)}, {round_down(window.last), round_up(grown.last)}};
   return v;
+}
+
+// Per candidate axis: the projected centres' offset p + t s against the radii r, and the
+// times at which the projections overlap.
+template <>
+harness::Explanation explain(const harness::MovingObbInput& in) {
+  using harness::Explanation;
+  const harness::ExactVerdict v = judge(in);
+  Explanation e;
+  e.title = "moving separating axes: |p + t s| <= r";
+  if (v.contract != harness::Contract::in) {
+    e.deciding = v.note;
+    return e;
+  }
+  e.columns = {"axis", "p", "s", "r", "times"};
+  const std::vector<MovingAxis> axes = moving_axes(in.a, in.b);
+  for (const MovingAxis& m : axes) {
+    ExactWindow w;
+    w.restrict(m.p, m.s, m.r);
+    e.rows.push_back({m.axis.name, num(m.p), num(m.s), num(m.r), w.hit() ? interval(to_double(w.first), to_double(w.last)) : "never"});
+  }
+  const ExactWindow window = exact_sweep(axes);
+  e.facts.push_back({"window", window.hit() ? interval(to_double(window.first), to_double(window.last)) : "empty"});
+  if (v.answer.hit) {
+    e.facts.push_back({"t_first allowed", interval(v.param_ranges[0].first, v.param_ranges[0].second)});
+    e.facts.push_back({"t_last allowed", interval(v.param_ranges[1].first, v.param_ranges[1].second)});
+  }
+  e.deciding = v.answer.hit ? "overlap halfway through the window, relative to the scale"
+                            : "the closest approach: minus the largest gap over the axes, relative to the scale";
+  e.deciding_value = v.margin;
+  return e;
 }
 
 }  // namespace cc::exact

@@ -1,4 +1,4 @@
-// moving_obb: FCL's continuousCollide by conservative advancement on two boxes under
+// moving_obb's second opinion: FCL's continuousCollide by conservative advancement on two boxes under
 // translation, as a second opinion on whether they meet during the step.
 #include <fcl/geometry/shape/box.h>
 #include <fcl/narrowphase/continuous_collision.h>
@@ -8,12 +8,12 @@
 #include "oracle/fcl/time_limit.h"
 
 namespace cc::fcl_oracle {
+namespace {
 
 Opinion fcl_continuous_collide(const harness::MovingObbInput& in) {
-  const std::string party = "fcl.continuousCollide";
   for (const MovingObb* m : {&in.a, &in.b}) {
     if (m->box.half.x <= 0 || m->box.half.y <= 0 || m->box.half.z <= 0) {
-      return not_applicable(party, "a box with a zero extent (FCL's Box needs positive sides)");
+      return not_applicable("a box with a zero extent (FCL's Box needs positive sides)");
     }
   }
   const fcl::Boxd a(2 * in.a.box.half.x, 2 * in.a.box.half.y, 2 * in.a.box.half.z);
@@ -29,9 +29,22 @@ Opinion fcl_continuous_collide(const harness::MovingObbInput& in) {
   fcl::ContinuousCollisionResultd result;
   const Guarded outcome =
       run_guarded(kLibccdTimeLimit * 10, [&] { fcl::continuousCollide(&a, a0, a1, &b, b0, b1, request, result); });
-  if (outcome == Guarded::timed_out) return failed(party, "did not return within its time limit");
-  if (outcome == Guarded::aborted) return failed(party, "aborted (a failed assertion in FCL's libccd code)");
-  return answered(party, result.is_collide);
+  if (outcome == Guarded::timed_out) return failed("did not return within its time limit");
+  if (outcome == Guarded::aborted) return failed("aborted (a failed assertion in FCL's libccd code)");
+  return answered(result.is_collide);
+}
+
+}  // namespace
+
+template <>
+const std::vector<Party<harness::MovingObbInput>>& fcl_parties() {
+  static const std::vector<Party<harness::MovingObbInput>> parties = {
+      {"fcl.continuousCollide",
+       {0x1p-12, BandSides::two_sided, 0,
+        "conservative advancement stops within toc_err = 1e-4 of the step and GJK's 1e-6 distance tolerance, "
+        "absolute: the band they mean at unit scale"},
+       fcl_continuous_collide}};
+  return parties;
 }
 
 }  // namespace cc::fcl_oracle

@@ -11,6 +11,7 @@
 #include "oracle/exact/domain.h"
 #include "oracle/exact/exact_meshes.h"
 #include "oracle/exact/exact_ray_triangle.h"
+#include "oracle/exact/explain.h"
 #include "oracle/exact/judges.h"
 
 namespace cc::exact {
@@ -66,6 +67,7 @@ std::optional<std::pair<std::optional<Rational>, std::optional<Rational>>> range
 
 }  // namespace
 
+template <>
 ExactVerdict judge(const harness::RayMeshInput& in) {
   const Ray& ray = in.ray;
   if (!all_finite({ray.origin.x, ray.origin.y, ray.origin.z, ray.dir.x, ray.dir.y, ray.dir.z}) ||
@@ -132,6 +134,34 @@ ExactVerdict judge(const harness::RayMeshInput& in) {
     v.param_ranges = {{lowest, round_up(*first)}};
   }
   return v;
+}
+
+// The faces near the ray, each with its exact first point and its margin.
+template <>
+harness::Explanation explain(const harness::RayMeshInput& in) {
+  using harness::Explanation;
+  const harness::ExactVerdict v = judge(in);
+  Explanation e;
+  e.title = "faces near the ray (segment against triangle, exact separating axes)";
+  if (v.contract != harness::Contract::in) {
+    e.deciding = v.note;
+    return e;
+  }
+  e.columns = {"face", "hit", "margin"};
+  for (const harness::PairMargin& p : v.pair_margins) {
+    const bool hit = std::binary_search(v.answer.pairs.begin(), v.answer.pairs.end(), p.pair);
+    e.rows.push_back({std::to_string(p.pair.first), hit ? "yes" : "no", num(p.margin)});
+    if (std::fabs(p.margin) == std::fabs(v.margin)) e.deciding_row = static_cast<int>(e.rows.size()) - 1;
+  }
+  e.facts.push_back({"faces", std::to_string(in.mesh.mesh->size())});
+  e.facts.push_back({"faces near the ray", std::to_string(v.pair_margins.size())});
+  if (v.answer.hit) {
+    e.facts.push_back({"first t (exact, rounded)", num(v.answer.params[0])});
+    e.facts.push_back({"t allowed", interval(v.param_ranges[0].first, v.param_ranges[0].second)});
+  }
+  e.deciding = "the face nearest the boundary";
+  e.deciding_value = v.margin;
+  return e;
 }
 
 }  // namespace cc::exact

@@ -5,11 +5,13 @@
 #include <cmath>
 
 #include "oracle/exact/domain.h"
+#include "oracle/exact/explain.h"
 #include "oracle/exact/judges.h"
 #include "oracle/exact/rational.h"
 
 namespace cc::exact {
 
+template <>
 ExactVerdict judge(const harness::AabbAabbInput& in) {
   const Aabb &a = in.a, &b = in.b;
   const std::initializer_list<double> all = {a.lo.x, a.lo.y, a.lo.z, a.hi.x, a.hi.y, a.hi.z,
@@ -38,6 +40,30 @@ ExactVerdict judge(const harness::AabbAabbInput& in) {
   v.answer.hit = sgn(*overlap) >= 0;
   v.margin = to_double(*overlap) / scale_of(max_magnitude(all));
   return v;
+}
+
+template <>
+harness::Explanation explain(const harness::AabbAabbInput& in) {
+  using harness::Explanation;
+  Explanation e;
+  e.title = "axes";
+  e.columns = {"axis", "A", "B", "overlap"};
+  const char* const names[] = {"x", "y", "z"};
+  double worst = INFINITY;
+  for (int k = 0; k < 3; ++k) {
+    const double overlap = std::min(in.a.hi[k], in.b.hi[k]) - std::max(in.a.lo[k], in.b.lo[k]);
+    e.rows.push_back({names[k], interval(in.a.lo[k], in.a.hi[k]), interval(in.b.lo[k], in.b.hi[k]), num(overlap)});
+    if (overlap < worst) {
+      worst = overlap, e.deciding_row = k;
+      e.a_lo = in.a.lo[k], e.a_hi = in.a.hi[k], e.b_lo = in.b.lo[k], e.b_hi = in.b.hi[k];
+      Vec3 axis;
+      axis[k] = 1;
+      e.axis = axis;
+    }
+  }
+  e.deciding = "the smallest overlap (a comparison of inputs: exact)";
+  e.deciding_value = worst;
+  return e;
 }
 
 }  // namespace cc::exact
