@@ -3,7 +3,6 @@
 #include <poll.h>
 #include <signal.h>
 #include <sys/mman.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -17,6 +16,7 @@
 #include "harness/generation/generate.h"
 #include "harness/judging/party.h"
 #include "harness/model/library.h"
+#include "harness/processes/child.h"
 
 namespace cc::harness {
 namespace {
@@ -58,15 +58,7 @@ std::string_view phase_name(int phase) {
 volatile sig_atomic_t g_stop = 0;
 void on_interrupt(int) { g_stop = 1; }
 
-void write_line(int fd, const std::string& line) {
-  const std::string s = line + "\n";
-  std::size_t done = 0;
-  while (done < s.size()) {
-    const ssize_t n = ::write(fd, s.data() + done, s.size() - done);
-    if (n <= 0) return;
-    done += static_cast<std::size_t>(n);
-  }
-}
+void write_line(int fd, const std::string& line) { write_all(fd, line + "\n"); }
 
 std::string format_seconds(double s) {
   std::ostringstream out;
@@ -174,18 +166,9 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
   const std::int64_t start_ns = now_ns();
   const std::int64_t deadline_ns = start_ns + static_cast<std::int64_t>(options.seconds * 1e9);
   std::vector<Worker> workers(static_cast<std::size_t>(options.workers));
-  std::fflush(nullptr);  // nothing buffered may be written twice by the children
   const auto spawn = [&](int w) {
-    int fds[2];
-    if (pipe(fds) != 0) throw std::runtime_error("campaign: pipe failed");
-    const pid_t pid = fork();
-    if (pid < 0) throw std::runtime_error("campaign: fork failed");
-    if (pid == 0) {
-      ::close(fds[0]);
-      run_worker(w, options, oracles, slots[w], fds[1], deadline_ns);
-    }
-    ::close(fds[1]);
-    workers[static_cast<std::size_t>(w)] = {pid, fds[0], ""};
+    const Child child = start_child([&](int out) -> int { run_worker(w, options, oracles, slots[w], out, deadline_ns); });
+    workers[static_cast<std::size_t>(w)] = {child.pid, child.out, ""};
   };
   for (int w = 0; w < options.workers; ++w) spawn(w);
 
@@ -295,19 +278,16 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       // End of the pipe: the worker finished or died.
       ::close(w.fd);
       w.fd = -1;
-      int status = 0;
-      waitpid(w.pid, &status, 0);
+      const ChildEnd end = wait_child(w.pid);
       Slot& slot = slots[i];
-      const bool retired = WIFEXITED(status) && WEXITSTATUS(status) == kRetired;
-      const bool died = !(WIFEXITED(status) && WEXITSTATUS(status) == 0) && !retired;
+      const bool retired = end.status == kRetired;
+      const bool died = !end.succeeded() && !retired;
       if (retired && !g_stop && now_ns() < deadline_ns) {
         spawn(static_cast<int>(i));
         continue;
       }
       if (died) {
-        std::string what = WIFSIGNALED(status) ? "killed by signal " + std::to_string(WTERMSIG(status)) + " (" +
-                                                     strsignal(WTERMSIG(status)) + ")"
-                                               : "exited with status " + std::to_string(WEXITSTATUS(status));
+        std::string what = end.what();
         if (slot.hung) what = "hung for more than " + format_seconds(options.case_timeout_seconds);
         const int phase = slot.phase;
         record_finding(static_cast<QueryKind>(slot.kind.load()), slot.case_index,
