@@ -117,7 +117,7 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
         static const exact::ExactRationalReference exact;
         e.library = ask_library(input);
         e.exact = exact.judge(input);
-        e.opinions = {{"fcl/libccd", Opinion::Status::failed, {}, how, std::nullopt}};
+        e.opinions = {{"fcl/libccd", Opinion::Status::failed, {}, how}};
         e.verdict.cls = CaseClass::oracle_crash;
       }
       write_new_case_file(path, case_of(input, e, provenance, note + "; " + how));

@@ -42,7 +42,7 @@ struct Opinion {
   std::string detail;  // why not applicable, or what failed
   /// The party's band, declared with it (judging/party.h); case files do not store it, a party
   /// of today gives it.
-  std::optional<Band> band;
+  std::optional<Band> band = std::nullopt;
 };
 
 }  // namespace cc::harness
