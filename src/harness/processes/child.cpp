@@ -58,7 +58,8 @@ ChildEnd finish_child(Child child, double timeout_seconds) {
   for (;;) {
     int wait_ms = -1;
     if (timeout_seconds > 0 && !killed) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+      // Rounded up, so that the child is never killed before its time.
+      const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now()).count();
       if (left <= 0) {
         kill(child.pid, SIGKILL);
         killed = true;
