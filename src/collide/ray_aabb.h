@@ -66,9 +66,8 @@ RayHit intersect_prepared(const PreparedRay& ray, const Aabb& box);
 
 /// The miss decision of intersect_prepared on a plain PreparedRay, alone: the same entry and
 /// exit over the slabs, widened and compared, and the origin against the parallel slabs, so that
-/// true here is a miss there. (A slab's near parameter is the smaller of its two: for a box in
-/// the contract, lo <= hi, the one the direction's sign picks there. A box out of the contract is
-/// no hit either way.)
+/// true here is a miss there: a slab's near and far parameters are the same expressions (the
+/// bound the direction's sign picks, minus the origin, times the reciprocal) on every box.
 template <bool kParallel>
 inline bool certainly_missed(const PreparedRay& r, const Aabb& box) {
   double enter = -INFINITY, exit = INFINITY;  // (max and min replace them by any value but NaN)
@@ -77,8 +76,8 @@ inline bool certainly_missed(const PreparedRay& r, const Aabb& box) {
       if (r.ray.origin[i] < box.lo[i] || r.ray.origin[i] > box.hi[i]) return true;
       continue;
     }
-    const double lo = (box.lo[i] - r.ray.origin[i]) * r.inv_scaled[i], hi = (box.hi[i] - r.ray.origin[i]) * r.inv_scaled[i];
-    const double near = std::min(lo, hi), far = std::max(lo, hi);
+    const double near = ((r.negative[i] ? box.hi[i] : box.lo[i]) - r.ray.origin[i]) * r.inv_scaled[i];
+    const double far = ((r.negative[i] ? box.lo[i] : box.hi[i]) - r.ray.origin[i]) * r.inv_scaled[i];
     enter = kParallel || i > 0 ? std::max(enter, near) : near;
     exit = kParallel || i > 0 ? std::min(exit, far) : far;
   }

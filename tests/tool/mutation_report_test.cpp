@@ -65,7 +65,7 @@ MutationRun sample_run() {
                  result("h.not_run", MutantStatus::not_run),
                  result("i.error", MutantStatus::error),
                  result("j.avx512_only", MutantStatus::not_executable)};
-  run.results.back().note = "its code is the avx512 kernel, and this processor lacks AVX-512 F and DQ";
+  run.results.back().note = "its code is the avx512 kernel, and this processor lacks AVX-512 F, DQ and VL";
   run.results.back().mutant.description = "`|x| < 1` for `|x| <= 1` in the avx512 kernel";
   return run;
 }
@@ -151,7 +151,7 @@ TEST(MutationReport, AMutantOfAKernelThisProcessorLacksIsSaidSo) {
   const std::vector<std::string> cells = columns_of(md, "j.avx512_only");
   ASSERT_EQ(cells.size(), 8u) << md;
   EXPECT_EQ(cells[3], " not executable here ");
-  EXPECT_TRUE(contains(cells[7], "this processor lacks AVX-512 F and DQ")) << cells[7];
+  EXPECT_TRUE(contains(cells[7], "this processor lacks AVX-512 F, DQ and VL")) << cells[7];
   EXPECT_EQ(score_of(sample_run()).counted, 4);  // not a survivor: left out of the score
 }
 
