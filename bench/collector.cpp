@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 
-#include "harness/median.h"
+#include "harness/judging/median.h"
 
 namespace cc::bench {
 namespace {

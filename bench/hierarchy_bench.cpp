@@ -24,10 +24,10 @@
 #include "bench/inputs.h"
 #include "bench/suites.h"
 #include "collide/bvh_collide.h"
-#include "harness/choices.h"
-#include "harness/mesh_files.h"
-#include "harness/mesh_poses.h"
-#include "harness/mesh_query.h"
+#include "harness/generation/choices.h"
+#include "harness/formats/mesh_files.h"
+#include "harness/generation/mesh_poses.h"
+#include "harness/model/mesh_query.h"
 #include "collide/procedural_mesh.h"
 #include "oracle/fcl/parties.h"
 
@@ -156,12 +156,12 @@ void register_all_pairs(std::shared_ptr<const Mesh> env, std::shared_ptr<const M
     })->Unit(benchmark::kMillisecond);
     if (c.fcl_party == nullptr) continue;
     const std::string party = c.fcl_party;
-    fcl_oracle::fcl_collide_meshes(party, poses->front(), false);  // builds and caches FCL's models
+    fcl_oracle::fcl_collide_meshes(party, poses->front());  // builds and caches FCL's models
     benchmark::RegisterBenchmark((name + "/fcl").c_str(), [=](benchmark::State& state) {
       std::size_t pairs = 0;
       for (auto _ : state) {
         pairs = 0;
-        for (const harness::MeshPair& m : *poses) pairs += fcl_oracle::fcl_collide_meshes(party, m, false).answer.pairs.size();
+        for (const harness::MeshPair& m : *poses) pairs += fcl_oracle::fcl_collide_meshes(party, m).answer.pairs.size();
         benchmark::DoNotOptimize(pairs);
       }
       state.counters["items_per_iter"] = queries;

@@ -8,7 +8,7 @@
 
 #include "collide/triangle_box.h"
 #include "collide/triangle_triangle.h"
-#include "harness/rotation.h"
+#include "harness/generation/rotation.h"
 
 namespace cc::bench {
 namespace {

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <fstream>
 
-#include "harness/evaluate.h"
-#include "harness/fuzz_record.h"
-#include "harness/input_json.h"
+#include "harness/judging/evaluate.h"
+#include "harness/formats/fuzz_record.h"
+#include "harness/formats/input_json.h"
 #include "oracle/exact/exact_reference.h"
 #include "oracle/fcl/fcl_oracle.h"
 

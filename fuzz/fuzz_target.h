@@ -4,11 +4,11 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "harness/query_kind.h"
+#include "harness/model/query_kind.h"
 
 namespace cc::fuzz {
 
-/// Decodes the record at the front of the input (harness/fuzz_record.h), answers it three ways
+/// Decodes the record at the front of the input (harness/formats/fuzz_record.h), answers it three ways
 /// and classifies it. An impl_bug prints the case and aborts, so that the fuzzer keeps the
 /// input. An oracle_defect, or a second opinion that threw or did not return, is written to
 /// $CROSSCHECK_FUZZ_FINDINGS/<query>/ (when that variable is set) and fuzzing goes on.

@@ -4,9 +4,9 @@
 #include <limits>
 
 #include "fuzz/fuzz_target.h"
-#include "harness/choices.h"
-#include "harness/fuzz_record.h"
-#include "harness/touch.h"
+#include "harness/generation/choices.h"
+#include "harness/formats/fuzz_record.h"
+#include "harness/generation/touch.h"
 
 extern "C" std::size_t LLVMFuzzerMutate(std::uint8_t* data, std::size_t size, std::size_t max_size);
 
@@ -53,9 +53,10 @@ std::size_t mutate(QueryKind kind, std::uint8_t* data, std::size_t size, std::si
   mutated = with_record_values(input, values);
   std::vector<std::uint8_t> bytes = encode_record(mutated);
   if (bytes.size() > max_size) return LLVMFuzzerMutate(data, size, max_size);
-  // Keep the flags and the k-DOP header of the original record; the rest is the mutated values.
-  if (size > 0) bytes[0] = data[0];
-  for (std::size_t i = 1; i < 4 && i < size && kind == QueryKind::kdop_kdop; ++i) bytes[i] = data[i];
+  // Keep the flags and the header bytes of the original record (they read the same); the rest is
+  // the mutated values.
+  const std::size_t header = bytes.size() - 8 * record_values(mutated).size();
+  for (std::size_t i = 0; i < header && i < size; ++i) bytes[i] = data[i];
   std::memcpy(data, bytes.data(), bytes.size());
   return bytes.size();
 }

@@ -6,7 +6,7 @@
 # per target the executions per second, the coverage (features) before and after, and the
 # findings by class. Ctrl-C stops the fuzzers and still merges, converts and reports what was found.
 #
-#   fuzz/nightly.sh [--minutes 10] [--jobs 2] [--report build/fuzz-report] [--targets "ray_aabb obb_obb"]
+#   fuzz/nightly.sh [--minutes 10] [--jobs 2] [--report build/fuzz-report] [--targets "KIND ..."]
 #                   [--max-shrink 5]
 #
 # Every finding is classified; the first of each kind of finding (same class, parties, features
@@ -17,7 +17,7 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 minutes=10
 jobs=2
 report="$root/build/fuzz-report"
-targets="ray_aabb sphere_sphere aabb_aabb kdop_kdop obb_obb tri_aabb tri_obb tri_tri mesh_mesh mesh_mesh_first broadphase ray_mesh moving_obb"
+targets=""  # default: every query kind (the fuzz build lists them in fuzz/targets.txt)
 max_shrink=5
 while [ $# -gt 0 ]; do
   case "$1" in
@@ -32,7 +32,9 @@ done
 
 cd "$root" || exit 2
 ./.ci/deps || exit 2
-cmake --preset fuzz > /dev/null && cmake --build --preset fuzz --target $(printf 'fuzz_%s ' $targets) || exit 2
+cmake --preset fuzz > /dev/null || exit 2
+[ -n "$targets" ] || targets=$(cat "$root/build/fuzz/fuzz/targets.txt") || exit 2
+cmake --build --preset fuzz --target $(printf 'fuzz_%s ' $targets) || exit 2
 cmake --preset release > /dev/null && cmake --build --preset release --target crosscheck || exit 2
 crosscheck="$root/build/release/crosscheck"
 bin="$root/build/fuzz/fuzz"

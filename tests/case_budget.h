@@ -1,7 +1,7 @@
 // How many generated cases a test runs per query kind.
 #pragma once
 
-#include "harness/query_kind.h"
+#include "harness/generation/generate.h"
 
 namespace cc::test {
 
@@ -9,8 +9,7 @@ namespace cc::test {
 /// `hierarchy_cases` for a mesh query or a ray against a mesh, which builds hierarchies and
 /// judges its near pairs exactly (about 30 ms each).
 inline int case_budget(harness::QueryKind kind, int primitive_cases, int hierarchy_cases) {
-  const bool builds_hierarchies = harness::is_mesh_query(kind) || kind == harness::QueryKind::ray_mesh;
-  return builds_hierarchies ? hierarchy_cases : primitive_cases;
+  return harness::builds_hierarchies(kind) ? hierarchy_cases : primitive_cases;
 }
 
 /// The same with a fifth as many cases for the queries that build hierarchies.

@@ -14,7 +14,7 @@
 #include <optional>
 #include <utility>
 
-#include "harness/input.h"
+#include "harness/model/input.h"
 #include "oracle/exact/rational.h"
 
 namespace cc::exact {
@@ -81,9 +81,5 @@ struct CandidateAxis {
 /// or a plane; for collinear directions g, the line and two directions across it; for points,
 /// the coordinate axes.
 std::vector<CandidateAxis> candidate_axes_for_any_offset(const ExactShape& a, const ExactShape& b);
-
-/// The two polytopes of an obb_obb, tri_aabb, tri_obb or tri_tri query (finite inputs), in the
-/// order the verdict uses (box first); nothing for other kinds.
-std::optional<std::pair<ExactShape, ExactShape>> polytopes_of(const harness::Input& input);
 
 }  // namespace cc::exact

@@ -7,7 +7,7 @@
 
 #include "collide/obb.h"
 #include "collide/triangle.h"
-#include "harness/oracle.h"
+#include "harness/model/oracle.h"
 
 namespace cc::exact {
 

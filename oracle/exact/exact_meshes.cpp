@@ -252,7 +252,4 @@ std::pair<ExactShape, ExactShape> placed_triangles(const MeshPair& m, const Face
   return {a.triangle(pair.first, "A"), b.triangle(pair.second, "B")};
 }
 
-ExactVerdict judge(const harness::MeshMeshInput& in) { return judge_meshes(in.meshes); }
-ExactVerdict judge(const harness::MeshMeshFirstInput& in) { return judge_meshes(in.meshes); }
-
 }  // namespace cc::exact

@@ -7,8 +7,8 @@
 #include <string>
 #include <utility>
 
-#include "harness/input.h"
-#include "harness/oracle.h"
+#include "harness/model/input.h"
+#include "harness/model/oracle.h"
 #include "oracle/exact/convex_sat.h"
 
 namespace cc::exact {

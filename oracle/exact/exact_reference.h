@@ -1,7 +1,7 @@
 // The exact rational reference, as the harness sees it.
 #pragma once
 
-#include "harness/oracle.h"
+#include "harness/model/oracle.h"
 
 namespace cc::exact {
 

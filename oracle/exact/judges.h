@@ -1,25 +1,22 @@
-// The exact reference's verdict for each kind of query (one file per kind).
+// The exact reference's pieces of a query kind: its verdict and the reasoning behind it, defined
+// in the kind's unit, oracle/exact/kinds/<kind>.cpp, as judge<its input> and explain<its input>.
+// A kind whose unit lacks one fails to link (exact_reference.cpp asks every kind's).
 #pragma once
 
-#include "harness/input.h"
-#include "harness/oracle.h"
+#include "harness/model/explanation.h"
+#include "harness/model/input.h"
+#include "harness/model/oracle.h"
 
 namespace cc::exact {
 
 using harness::ExactVerdict;
 
-ExactVerdict judge(const harness::RayAabbInput& in);
-ExactVerdict judge(const harness::SphereSphereInput& in);
-ExactVerdict judge(const harness::AabbAabbInput& in);
-ExactVerdict judge(const harness::KdopKdopInput& in);
-ExactVerdict judge(const harness::ObbObbInput& in);
-ExactVerdict judge(const harness::TriAabbInput& in);
-ExactVerdict judge(const harness::TriObbInput& in);
-ExactVerdict judge(const harness::TriTriInput& in);
-ExactVerdict judge(const harness::MeshMeshInput& in);
-ExactVerdict judge(const harness::MeshMeshFirstInput& in);
-ExactVerdict judge(const harness::BroadphaseInput& in);
-ExactVerdict judge(const harness::RayMeshInput& in);
-ExactVerdict judge(const harness::MovingObbInput& in);
+/// The exact verdict on `in`: in or out of the library's contract, the answer and its margin.
+template <class In>
+ExactVerdict judge(const In& in);
+
+/// The reasoning behind judge(in), for triage, for inputs in the library's contract.
+template <class In>
+harness::Explanation explain(const In& in);
 
 }  // namespace cc::exact

@@ -1,5 +1,5 @@
-// FCL's mesh-mesh collision: BVHModel<OBBd>, <OBBRSSd>, <AABBd> and <KDOPd<18>>, asked for all
-// contacts (mesh_mesh) or for the first (mesh_mesh_first).
+// FCL's mesh-mesh collision, for the mesh kinds' units: BVHModel<OBBd>, <OBBRSSd>, <AABBd> and
+// <KDOPd<18>>, asked for all contacts or for the first.
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/math/bv/AABB.h>
 #include <fcl/math/bv/OBB.h>
@@ -54,15 +54,15 @@ fcl::Transform3d to_fcl(const RigidTransform& t) {
 }
 
 template <class BV>
-Opinion collide_models(const std::string& party, const harness::MeshPair& m, bool first_only) {
-  if (m.a.mesh->size() == 0 || m.b.mesh->size() == 0) return not_applicable(party, "a mesh without triangles");
+Opinion collide_models(const harness::MeshPair& m, bool first_only) {
+  if (m.a.mesh->size() == 0 || m.b.mesh->size() == 0) return not_applicable("a mesh without triangles");
   const auto a = model_of<BV>(m.a.mesh), b = model_of<BV>(m.b.mesh);
   fcl::CollisionRequestd request(first_only ? 1 : std::numeric_limits<std::size_t>::max(), false);
   fcl::CollisionResultd result;
   fcl::collide(a.get(), to_fcl(m.pose_a), b.get(), to_fcl(m.pose_b), request, result);
   std::vector<fcl::Contactd> contacts;
   result.getContacts(contacts);
-  Opinion o = answered(party, !contacts.empty());
+  Opinion o = answered(!contacts.empty());
   for (const fcl::Contactd& c : contacts) {
     o.answer.pairs.emplace_back(static_cast<std::uint32_t>(c.b1), static_cast<std::uint32_t>(c.b2));
   }
@@ -73,16 +73,14 @@ Opinion collide_models(const std::string& party, const harness::MeshPair& m, boo
 
 }  // namespace
 
-std::vector<std::string> fcl_mesh_parties() {
-  return {"fcl.BVHModel<OBBd>", "fcl.BVHModel<OBBRSSd>", "fcl.BVHModel<AABBd>", "fcl.BVHModel<KDOPd<18>>"};
-}
-
-Opinion fcl_collide_meshes(const std::string& party, const harness::MeshPair& m, bool first_only) {
-  const auto parties = fcl_mesh_parties();
-  if (party == parties[0]) return collide_models<fcl::OBBd>(party, m, first_only);
-  if (party == parties[1]) return collide_models<fcl::OBBRSSd>(party, m, first_only);
-  if (party == parties[2]) return collide_models<fcl::AABBd>(party, m, first_only);
-  return collide_models<fcl::KDOPd<18>>(party, m, first_only);
+Opinion fcl_collide_models(Volume volume, const harness::MeshPair& m, bool first_only) {
+  switch (volume) {
+    case Volume::obb: return collide_models<fcl::OBBd>(m, first_only);
+    case Volume::obbrss: return collide_models<fcl::OBBRSSd>(m, first_only);
+    case Volume::aabb: return collide_models<fcl::AABBd>(m, first_only);
+    case Volume::kdop18: return collide_models<fcl::KDOPd<18>>(m, first_only);
+  }
+  return failed("an unknown volume type");
 }
 
 }  // namespace cc::fcl_oracle

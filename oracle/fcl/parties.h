@@ -1,66 +1,44 @@
-// The individual FCL and libccd adapters (internal to oracle/fcl).
+// A kind's second opinions from FCL and libccd (internal to oracle/fcl): each party's name, band
+// and call, declared together in the kind's unit, oracle/fcl/kinds/<kind>.cpp. A kind whose unit
+// does not define fcl_parties<its input>() fails to link (fcl_oracle.cpp asks every kind's).
 #pragma once
 
-#include "harness/input.h"
-#include "harness/answer.h"
+#include <string>
+#include <vector>
+
+#include "harness/judging/party.h"
+#include "harness/model/input.h"
 
 namespace cc::fcl_oracle {
 
+using harness::answered;
+using harness::Band;
+using harness::BandSides;
+using harness::failed;
+using harness::not_applicable;
 using harness::Opinion;
+using harness::Party;
 
-// libccd, segment vs box.
-Opinion ccd_gjk_segment_box(const harness::RayAabbInput& in);
-Opinion ccd_mpr_segment_box(const harness::RayAabbInput& in);
+/// The second opinions on inputs of type In, in the order they are asked and stored.
+template <class In>
+const std::vector<Party<In>>& fcl_parties();
 
-// FCL bounding volumes.
-Opinion fcl_aabb_overlap(const harness::AabbAabbInput& in);
-Opinion fcl_obb_overlap(const harness::ObbObbInput& in);
-Opinion fcl_kdop_overlap(const harness::KdopKdopInput& in);
+/// FCL's BVHModel collision on two placed meshes with volume type BV, all contacts or only the
+/// first (fcl_meshes.cpp, for the mesh kinds' units): the colliding pairs, sorted.
+enum class Volume { obb, obbrss, aabb, kdop18 };
+Opinion fcl_collide_models(Volume volume, const harness::MeshPair& m, bool first_only);
 
-// FCL shapes and primitives.
-Opinion fcl_collide_spheres(const harness::SphereSphereInput& in);
-Opinion fcl_collide_boxes(const harness::ObbObbInput& in);
-Opinion fcl_shape_triangle(const harness::TriAabbInput& in);
-Opinion fcl_shape_triangle(const harness::TriObbInput& in);
-Opinion fcl_intersect_triangle(const harness::TriTriInput& in);
-
-// FCL's BVHModel collision on meshes: one party per volume type, answering with pairs.
+/// The BVHModel parties on two placed meshes, asked for every contact, by name (for the
+/// commands and benchmarks that compare hierarchies; defined with those parties): their names, and
+/// the opinion of one, with its name and band. Throws std::out_of_range for another name.
 std::vector<std::string> fcl_mesh_parties();
-Opinion fcl_collide_meshes(const std::string& party, const harness::MeshPair& m, bool first_only);
+Opinion fcl_collide_meshes(const std::string& party, const harness::MeshPair& m);
 
-// FCL's broadphase managers, each over the boxes of every frame.
-std::vector<std::string> fcl_broadphase_parties();
-Opinion fcl_broadphase(const std::string& manager, const harness::BroadphaseInput& in);
-// FCL's continuousCollide (conservative advancement, translation) on two moving boxes.
-Opinion fcl_continuous_collide(const harness::MovingObbInput& in);
-/// True when FCL's collision matrix (libccd solver) has the shape pairs used above.
+/// FCL's GJKSolver_libccd::shapeTriangleIntersect of a box (half extents, axes, centre) and a
+/// triangle, under the libccd time limit (fcl_shapes.cpp, for the kinds of a triangle and a box).
+Opinion fcl_shape_triangle(const Vec3& half, const Mat3& axes, const Vec3& center, const Triangle& t);
+
+/// True when FCL's collision matrix (libccd solver) has the shape pairs the units use.
 bool fcl_supports_used_pairs();
-
-/// An opinion that answered.
-inline Opinion answered(std::string party, bool hit) {
-  Opinion o;
-  o.party = std::move(party);
-  o.status = Opinion::Status::answered;
-  o.answer.hit = hit;
-  return o;
-}
-
-/// An opinion that failed: an exception, or a call that did not return in time.
-inline Opinion failed(std::string party, std::string what) {
-  Opinion o;
-  o.party = std::move(party);
-  o.status = Opinion::Status::failed;
-  o.detail = std::move(what);
-  return o;
-}
-
-/// An opinion that does not apply to this input.
-inline Opinion not_applicable(std::string party, std::string why) {
-  Opinion o;
-  o.party = std::move(party);
-  o.status = Opinion::Status::not_applicable;
-  o.detail = std::move(why);
-  return o;
-}
 
 }  // namespace cc::fcl_oracle

@@ -1,13 +1,13 @@
 // crosscheck bounds: how close the library's actual rounding comes to each term of its certified
-// error bounds over generated cases (harness/bound_coverage.h).
+// error bounds over generated cases (harness/judging/bound_coverage.h).
 #include <cstdio>
 #include <fstream>
 
 #include <nlohmann/json.hpp>
 
-#include "harness/bound_coverage.h"
-#include "harness/generate.h"
-#include "harness/mesh_files.h"
+#include "harness/judging/bound_coverage.h"
+#include "harness/generation/generate.h"
+#include "harness/formats/mesh_files.h"
 #include "oracle/exact/exact_reference.h"
 #include "tool/commands.h"
 
@@ -45,7 +45,7 @@ int run(const BoundsArgs& args) {
   std::printf("crosscheck bounds: seed %llu, %d cases per primitive query kind (a twentieth for meshes)\n\n",
               static_cast<unsigned long long>(args.seed), args.cases);
   for (harness::QueryKind kind : kinds) {
-    const bool meshes = harness::is_mesh_query(kind) || kind == harness::QueryKind::ray_mesh;
+    const bool meshes = harness::builds_hierarchies(kind);
     const int n = meshes ? std::max(1, args.cases / 20) : args.cases;
     for (int i = 0; i < n; ++i) {
       harness::RandomChoices choices(harness::mix_seed(args.seed, static_cast<std::uint64_t>(i)));

@@ -8,13 +8,13 @@
 #include <cstdio>
 #include <fstream>
 
-#include "harness/classify.h"
-#include "harness/input_json.h"
-#include "harness/median.h"
-#include "harness/mesh_collide.h"
-#include "harness/mesh_files.h"
-#include "harness/mesh_poses.h"
-#include "harness/choices.h"
+#include "harness/judging/classify.h"
+#include "harness/formats/input_json.h"
+#include "harness/judging/median.h"
+#include "harness/model/mesh_collide.h"
+#include "harness/formats/mesh_files.h"
+#include "harness/generation/mesh_poses.h"
+#include "harness/generation/choices.h"
 #include "oracle/exact/exact_meshes.h"
 #include "oracle/fcl/parties.h"
 #include "tool/commands.h"
@@ -109,7 +109,7 @@ Tally run_fcl(const std::string& party, const std::vector<Pose>& poses) {
   t.counted = false;
   for (const Pose& p : poses) {
     const auto q = Clock::now();
-    const harness::Opinion o = fcl_oracle::fcl_collide_meshes(party, p.m, false);
+    const harness::Opinion o = fcl_oracle::fcl_collide_meshes(party, p.m);
     t.query_us.push_back(1e3 * ms_since(q));
     t.pairs += o.answer.pairs.size();
     const harness::Verdict v = harness::classify(harness::QueryKind::mesh_mesh, o.answer, p.exact, {o});

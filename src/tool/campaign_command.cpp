@@ -1,7 +1,6 @@
 // crosscheck campaign: the main job. Runs every query kind (or those named) for a time budget
 // and prints a table of classes per kind; each impl_bug, oracle_defect and oracle_crash is
 // printed with its exact inputs.
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -12,13 +11,15 @@
 #include <algorithm>
 #include <chrono>
 #include <csignal>
+#include <system_error>
 
-#include "harness/campaign.h"
-#include "harness/median.h"
-#include "harness/mesh_files.h"
-#include "harness/input_json.h"
-#include "harness/shrink.h"
-#include "harness/signature.h"
+#include "harness/processes/campaign.h"
+#include "harness/processes/child.h"
+#include "harness/judging/median.h"
+#include "harness/formats/mesh_files.h"
+#include "harness/formats/input_json.h"
+#include "harness/shrinking/shrink.h"
+#include "harness/shrinking/signature.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
 #include "tool/oracles.h"
@@ -135,7 +136,7 @@ int store_one(const Finding& f, const CampaignArgs& args, const std::vector<std:
     e = r.evaluation;
   }
   const std::string counts = std::to_string(complex_values(f.input)) + " " + std::to_string(complex_values(input)) + "\n";
-  if (::write(report, counts.data(), counts.size()) < 0) return 1;
+  if (!harness::write_all(report, counts)) return 1;
   if (is_known(input)) return 3;
   const Provenance provenance{"campaign", std::nullopt, f.case_index, "seed " + std::to_string(args.seed)};
   Case c = case_of(input, e, provenance, "untriaged: " + signature_of(f.kind, e) + (f.crash.empty() ? "" : "; " + f.crash));
@@ -159,35 +160,18 @@ Stored store_findings(const CampaignResult& r, const CampaignArgs& args) {
       ++s.grouped;
       continue;
     }
-    int fds[2];
-    if (pipe(fds) != 0) break;
-    std::fflush(nullptr);
-    const pid_t pid = fork();
-    if (pid == 0) {
-      ::close(fds[0]);
-      std::_Exit(store_one(f, args, known, fds[1]));
+    harness::ChildEnd child;
+    try {
+      child = harness::run_in_child([&](int out) { return store_one(f, args, known, out); }, 120);
+    } catch (const std::system_error&) {
+      break;
     }
-    ::close(fds[1]);
-    int status = 0;
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-    while (waitpid(pid, &status, WNOHANG) == 0) {
-      if (std::chrono::steady_clock::now() > deadline) {
-        kill(pid, SIGKILL);
-        waitpid(pid, &status, 0);
-        break;
-      }
-      usleep(10000);
+    int before = 0, after = 0;
+    if (std::sscanf(child.output.c_str(), "%d %d", &before, &after) == 2) {
+      s.complex_before.push_back(before);
+      s.complex_after.push_back(after);
     }
-    char counts[64] = {};
-    if (::read(fds[0], counts, sizeof counts - 1) > 0) {
-      int before = 0, after = 0;
-      if (std::sscanf(counts, "%d %d", &before, &after) == 2) {
-        s.complex_before.push_back(before);
-        s.complex_after.push_back(after);
-      }
-    }
-    ::close(fds[0]);
-    const int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const int code = child.status;
     if (code == 0) {
       ++s.written;
       known = stored_case_names(args.corpora);  // the new file may be under the corpus root

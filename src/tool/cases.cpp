@@ -6,8 +6,8 @@
 #include <iostream>
 #include <sstream>
 
-#include "harness/library.h"
-#include "harness/number_text.h"
+#include "harness/model/library.h"
+#include "harness/formats/number_text.h"
 #include "oracle/exact/exact_reference.h"
 #include "oracle/fcl/fcl_oracle.h"
 

@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "harness/case_file.h"
-#include "harness/evaluate.h"
-#include "harness/explanation.h"
+#include "harness/formats/case_file.h"
+#include "harness/judging/evaluate.h"
+#include "harness/model/explanation.h"
 
 namespace cc::tool {
 

@@ -2,17 +2,16 @@
 // file of that query as a record, and generated cases.
 // crosscheck fuzz-case QUERY FILE...: fuzz inputs as case files (unshrunk; `crosscheck shrink`
 // minimises them), each answered in a child process so that a crash is recorded, not suffered.
-#include <sys/wait.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
 #include <iterator>
 
-#include "harness/campaign.h"
-#include "harness/fuzz_record.h"
-#include "harness/library.h"
-#include "harness/signature.h"
+#include "harness/processes/campaign.h"
+#include "harness/processes/child.h"
+#include "harness/formats/fuzz_record.h"
+#include "harness/model/library.h"
+#include "harness/shrinking/signature.h"
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
@@ -79,17 +78,6 @@ struct FuzzCaseArgs {
   std::string out = "corpora/new";
 };
 
-// Runs f in a child process; its exit status, or 128 + the signal that killed it.
-template <class F>
-int in_child(F f) {
-  std::fflush(nullptr);
-  const pid_t pid = fork();
-  if (pid == 0) std::_Exit(f());
-  int status = 0;
-  waitpid(pid, &status, 0);
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-}
-
 int run_fuzz_case(const FuzzCaseArgs& args) {
   const auto kind = query_kind_named(args.query);
   if (!kind) {
@@ -108,28 +96,21 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
     const auto path = std::filesystem::path(args.out) / args.query / case_file_name(input);
     const std::string note = "untriaged: from fuzz input " + std::filesystem::path(file).filename().string();
     // A full answer in a child; if that child dies, find out which party it was.
-    int pipe_fds[2];
-    if (pipe(pipe_fds) != 0) return kExitBadInput;
-    const int status = in_child([&] {
+    const ChildEnd full = run_in_child([&](int out) {
       const Evaluation e = evaluate_with_oracles(input);
       write_new_case_file(path, case_of(input, e, provenance, note));
-      const std::string key = finding_key(input, e);
-      if (::write(pipe_fds[1], key.data(), key.size()) < 0) return 255;
+      if (!write_all(out, finding_key(input, e))) return 255;
       return static_cast<int>(e.verdict.cls);
     });
-    ::close(pipe_fds[1]);
-    char key[512] = {};
-    const ssize_t n = ::read(pipe_fds[0], key, sizeof key - 1);
-    ::close(pipe_fds[0]);
     std::string what;
-    if (status >= 128) {
-      const int library = in_child([&] {
+    if (full.signal != 0) {
+      const ChildEnd library = run_in_child([&](int) {
         (void)ask_library(input);
         return 0;
       });
       Evaluation e;
-      const std::string how = "crashed with signal " + std::to_string(status - 128);
-      if (library != 0) {
+      const std::string how = "crashed with signal " + std::to_string(full.signal);
+      if (!library.succeeded()) {
         e.verdict.cls = CaseClass::impl_bug;
         e.verdict.parties = {{"library", Standing::wrong, how}};
       } else {
@@ -142,8 +123,7 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
       write_new_case_file(path, case_of(input, e, provenance, note + "; " + how));
       what = std::string(to_string(e.verdict.cls)) + " " + path.string() + " crash " + how;
     } else {
-      what = std::string(to_string(static_cast<CaseClass>(status))) + " " + path.string() + " " +
-             std::string(key, n > 0 ? static_cast<std::size_t>(n) : 0);
+      what = std::string(to_string(static_cast<CaseClass>(full.status))) + " " + path.string() + " " + full.output;
     }
     // The input, its class, its case file, and the kind of finding it is (for grouping).
     std::printf("%s %s\n", file.c_str(), what.c_str());

@@ -13,9 +13,9 @@ namespace cc::tool {
 /// One mutant: in `file` (relative to the source root) the text `original`, which must occur
 /// exactly once, becomes `replacement`.
 struct Mutant {
-  std::string id;           // unique, e.g. "ray_aabb.parallel_check_dropped"
-  std::string query;        // the query kind whose campaign aims at it, e.g. "ray_aabb"
-  std::string file;         // e.g. "src/collide/ray_aabb.cpp"
+  std::string id;           // unique, e.g. "sphere.strict_compare"
+  std::string query;        // the query kind whose campaign aims at it, a name from the registry
+  std::string file;         // e.g. "src/collide/sphere.cpp"
   std::string original;     // exact text, occurring once in the file
   std::string replacement;  // what it becomes
   std::string description;  // one line: the bug a real engineer could have written

@@ -1,7 +1,7 @@
 // The oracles the tool wires into the harness: the exact rational reference and FCL/libccd.
 #pragma once
 
-#include "harness/campaign.h"
+#include "harness/processes/campaign.h"
 
 namespace cc::tool {
 

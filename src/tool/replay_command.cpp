@@ -1,9 +1,9 @@
 // crosscheck replay DIR...: re-answers every stored case and reports each change (see
-// harness/replay.h): the library now wrong, any party's whole answer or the exact verdict
+// harness/judging/replay.h): the library now wrong, any party's whole answer or the exact verdict
 // otherwise than recorded, a party gone or new, or the class changing. Exit 1 on any change (ctest's corpus label runs this), 2 on bad input.
 #include <cstdio>
 
-#include "harness/replay.h"
+#include "harness/judging/replay.h"
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"

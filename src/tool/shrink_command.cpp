@@ -1,8 +1,8 @@
 // crosscheck shrink FILE [-o OUT]: the simplest case that shows the same disagreement.
 #include <cstdio>
 
-#include "harness/shrink.h"
-#include "harness/signature.h"
+#include "harness/shrinking/shrink.h"
+#include "harness/shrinking/signature.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
 

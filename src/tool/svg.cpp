@@ -1,5 +1,6 @@
-// Drawing a case as SVG: the shapes in three orthographic views (x-y, x-z, y-z), and the
-// projections of both shapes onto the deciding axis as two intervals on a line.
+// Drawing a case as SVG: its drawing (harness/formats/drawing.h) in three orthographic views
+// (x-y, x-z, y-z), and the projections of both shapes onto the deciding axis as two intervals on
+// a line.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -7,6 +8,7 @@
 #include <sstream>
 #include <vector>
 
+#include "harness/formats/drawing.h"
 #include "tool/cases.h"
 
 namespace cc::tool {
@@ -14,126 +16,13 @@ namespace {
 
 using namespace harness;
 
-struct Segment {
-  Vec3 p, q;
-  int shape;  // 0: A, 1: B
-};
-struct Circle {
-  Vec3 c;
-  double r;
-  int shape;
-};
-
-struct Scene {
-  std::vector<Segment> segments;
-  std::vector<Circle> circles;
-  std::vector<std::pair<Vec3, int>> points;
-
-  void box(const Vec3& center, const std::array<Vec3, 3>& half_edges, int shape) {
-    std::array<Vec3, 8> corner;
-    for (int i = 0; i < 8; ++i) {
-      Vec3 p = center;
-      for (int k = 0; k < 3; ++k) p = p + ((i >> k) & 1 ? 1.0 : -1.0) * half_edges[static_cast<std::size_t>(k)];
-      corner[static_cast<std::size_t>(i)] = p;
-    }
-    for (int i = 0; i < 8; ++i) {
-      for (int k = 0; k < 3; ++k) {
-        if (!((i >> k) & 1)) segments.push_back({corner[static_cast<std::size_t>(i)], corner[static_cast<std::size_t>(i | (1 << k))], shape});
-      }
-    }
-  }
-  void aabb(const Aabb& b, int shape) {
-    box(0.5 * (b.lo + b.hi), {Vec3{0.5 * (b.hi.x - b.lo.x), 0, 0}, Vec3{0, 0.5 * (b.hi.y - b.lo.y), 0},
-                              Vec3{0, 0, 0.5 * (b.hi.z - b.lo.z)}}, shape);
-  }
-  void obb(const Obb& b, int shape) {
-    box(b.center, {b.half.x * b.axes.col[0], b.half.y * b.axes.col[1], b.half.z * b.axes.col[2]}, shape);
-  }
-  void triangle(const Triangle& t, int shape) {
-    for (int i = 0; i < 3; ++i) {
-      segments.push_back({t.v[static_cast<std::size_t>(i)], t.v[static_cast<std::size_t>((i + 1) % 3)], shape});
-      points.push_back({t.v[static_cast<std::size_t>(i)], shape});  // a degenerate triangle stays visible
-    }
-  }
-};
-
-Scene scene_of(const Input& input) {
-  Scene s;
-  std::visit(
-      [&s](const auto& in) {
-        using T = std::decay_t<decltype(in)>;
-        if constexpr (std::is_same_v<T, RayAabbInput>) {
-          s.aabb(in.box, 1);
-          const double reach = std::max({max_abs(in.box.lo - in.ray.origin), max_abs(in.box.hi - in.ray.origin), 1.0}) * 2;
-          const double len = std::max(max_abs(in.ray.dir), 1e-300);
-          const double t0 = std::max(in.ray.tmin, -reach / len), t1 = std::min(in.ray.tmax, reach / len);
-          s.segments.push_back({in.ray.origin + t0 * in.ray.dir, in.ray.origin + t1 * in.ray.dir, 0});
-          s.points.push_back({in.ray.origin, 0});
-        } else if constexpr (std::is_same_v<T, SphereSphereInput>) {
-          s.circles.push_back({in.a.center, in.a.radius, 0});
-          s.circles.push_back({in.b.center, in.b.radius, 1});
-        } else if constexpr (std::is_same_v<T, AabbAabbInput>) {
-          s.aabb(in.a, 0);
-          s.aabb(in.b, 1);
-        } else if constexpr (std::is_same_v<T, KdopKdopInput>) {
-          for (const Vec3& p : in.a) s.points.push_back({p, 0});
-          for (const Vec3& p : in.b) s.points.push_back({p, 1});
-        } else if constexpr (std::is_same_v<T, ObbObbInput>) {
-          s.obb(in.a, 0);
-          s.obb(in.b, 1);
-        } else if constexpr (std::is_same_v<T, TriAabbInput>) {
-          s.triangle(in.tri, 0);
-          s.aabb(in.box, 1);
-        } else if constexpr (std::is_same_v<T, TriObbInput>) {
-          s.triangle(in.tri, 0);
-          s.obb(in.box, 1);
-        } else if constexpr (std::is_same_v<T, TriTriInput>) {
-          s.triangle(in.a, 0);
-          s.triangle(in.b, 1);
-        } else if constexpr (std::is_same_v<T, BroadphaseInput>) {  // the last frame's boxes
-          if (in.frames.empty()) return;
-          for (const auto& box : in.frames.back()) {
-            if (box) s.aabb(*box, 0);
-          }
-        } else if constexpr (std::is_same_v<T, RayMeshInput>) {  // the ray and the first 400 faces
-          const Mesh& mesh = *in.mesh.mesh;
-          double reach = 1;
-          for (std::size_t f = 0; f < std::min<std::size_t>(mesh.size(), 400); ++f) {
-            s.triangle(mesh.triangle(f), 1);
-            for (const Vec3& p : mesh.triangle(f).v) reach = std::max(reach, 2 * max_abs(p - in.ray.origin));
-          }
-          const double len = std::max(max_abs(in.ray.dir), 1e-300);
-          const double t0 = std::max(in.ray.tmin, -reach / len), t1 = std::min(in.ray.tmax, reach / len);
-          s.segments.push_back({in.ray.origin + t0 * in.ray.dir, in.ray.origin + t1 * in.ray.dir, 0});
-          s.points.push_back({in.ray.origin, 0});
-        } else if constexpr (std::is_same_v<T, MovingObbInput>) {  // at the start and the end of the step
-          s.obb(in.a.box, 0);
-          s.obb({in.a.box.center + in.a.velocity, in.a.box.half, in.a.box.axes}, 0);
-          s.obb(in.b.box, 1);
-          s.obb({in.b.box.center + in.b.velocity, in.b.box.half, in.b.box.axes}, 1);
-        } else {  // meshes, placed in the world (the first 200 triangles of each)
-          const MeshPair& m = in.meshes;
-          for (int side = 0; side < 2; ++side) {
-            const Mesh& mesh = side == 0 ? *m.a.mesh : *m.b.mesh;
-            const RigidTransform& pose = side == 0 ? m.pose_a : m.pose_b;
-            for (std::size_t f = 0; f < std::min<std::size_t>(mesh.size(), 200); ++f) {
-              Triangle t = mesh.triangle(f);
-              for (Vec3& p : t.v) p = apply(pose, p);
-              s.triangle(t, side);
-            }
-          }
-        }
-      },
-      input);
-  return s;
-}
-
 const char* const kColour[] = {"#1f6fb4", "#e07b00"};
 
 }  // namespace
 
 std::string svg_of(const Input& input, const Explanation& why) {
-  const Scene s = scene_of(input);
+  Drawing s = drawing_of(input);
+  draw_rays(s);
   Vec3 lo{INFINITY, INFINITY, INFINITY}, hi{-INFINITY, -INFINITY, -INFINITY};
   const auto grow = [&](const Vec3& p, double r) {
     for (int k = 0; k < 3; ++k) {
@@ -142,9 +31,9 @@ std::string svg_of(const Input& input, const Explanation& why) {
       hi[k] = std::max(hi[k], p[k] + r);
     }
   };
-  for (const Segment& g : s.segments) grow(g.p, 0), grow(g.q, 0);
-  for (const Circle& c : s.circles) grow(c.c, std::isfinite(c.r) ? std::fabs(c.r) : 0);
-  for (const auto& [p, shape] : s.points) grow(p, 0);
+  for (const Drawing::Segment& g : s.segments) grow(g.p, 0), grow(g.q, 0);
+  for (const Drawing::Circle& c : s.circles) grow(c.center, std::isfinite(c.radius) ? std::fabs(c.radius) : 0);
+  for (const Drawing::Point& p : s.points) grow(p.p, 0);
   for (int k = 0; k < 3; ++k) {
     if (!(lo[k] <= hi[k])) lo[k] = -1, hi[k] = 1;
   }
@@ -170,16 +59,16 @@ std::string svg_of(const Input& input, const Explanation& why) {
         << "\" fill=\"none\" stroke=\"#ccc\"/>\n";
     svg << "<text x=\"" << ox + 8 << "\" y=\"16\">" << axis_name[u] << " (right), " << axis_name[w]
         << " (up); <tspan fill=\"" << kColour[0] << "\">A</tspan>, <tspan fill=\"" << kColour[1] << "\">B</tspan></text>\n";
-    for (const Segment& g : s.segments) {
+    for (const Drawing::Segment& g : s.segments) {
       svg << "<line x1=\"" << px(g.p) << "\" y1=\"" << py(g.p) << "\" x2=\"" << px(g.q) << "\" y2=\"" << py(g.q)
-          << "\" stroke=\"" << kColour[g.shape] << "\" stroke-width=\"1.5\"/>\n";
+          << "\" stroke=\"" << kColour[g.shape % 2] << "\" stroke-width=\"1.5\"/>\n";
     }
-    for (const Circle& c : s.circles) {
-      svg << "<circle cx=\"" << px(c.c) << "\" cy=\"" << py(c.c) << "\" r=\""
-          << std::fabs(c.r) / extent * (kPanel - 2 * kMargin) << "\" fill=\"none\" stroke=\"" << kColour[c.shape] << "\"/>\n";
+    for (const Drawing::Circle& c : s.circles) {
+      svg << "<circle cx=\"" << px(c.center) << "\" cy=\"" << py(c.center) << "\" r=\""
+          << std::fabs(c.radius) / extent * (kPanel - 2 * kMargin) << "\" fill=\"none\" stroke=\"" << kColour[c.shape % 2] << "\"/>\n";
     }
-    for (const auto& [p, shape] : s.points) {
-      svg << "<circle cx=\"" << px(p) << "\" cy=\"" << py(p) << "\" r=\"3\" fill=\"" << kColour[shape] << "\"/>\n";
+    for (const Drawing::Point& p : s.points) {
+      svg << "<circle cx=\"" << px(p.p) << "\" cy=\"" << py(p.p) << "\" r=\"3\" fill=\"" << kColour[p.shape % 2] << "\"/>\n";
     }
   }
   // The deciding axis as a number line with both projected intervals.

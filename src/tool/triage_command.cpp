@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "harness/query_cost.h"
+#include "harness/judging/query_cost.h"
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"

@@ -9,8 +9,8 @@
 #include <random>
 
 #include "collide/bvh_collide.h"
-#include "harness/mesh_files.h"
-#include "harness/mesh_query.h"
+#include "harness/formats/mesh_files.h"
+#include "harness/model/mesh_query.h"
 
 namespace cc::exact {
 namespace {

@@ -55,7 +55,7 @@ TEST(FclSecondOpinion, PartiesMatchTheOpinions) {
   const auto opinions = fcl.opinions(harness::ObbObbInput{});
   const auto parties = fcl.parties(harness::QueryKind::obb_obb);
   ASSERT_EQ(opinions.size(), parties.size());
-  for (std::size_t i = 0; i < parties.size(); ++i) EXPECT_EQ(opinions[i].party, parties[i]);
+  for (std::size_t i = 0; i < parties.size(); ++i) EXPECT_EQ(opinions[i].party, parties[i].party);
 }
 
 TEST(FclSecondOpinion, ACallThatNeverReturnsIsAFailedOpinion) {

@@ -4,7 +4,7 @@
 
 #include <stdexcept>
 
-#include "harness/rock_slide.h"
+#include "tool/scenes/rock_slide.h"
 
 namespace cc::fcl_oracle {
 namespace {

@@ -1,4 +1,4 @@
-// The library's certified error bounds, term by term, over generated cases (harness/bound_coverage.h):
+// The library's certified error bounds, term by term, over generated cases (harness/judging/bound_coverage.h):
 // no case's actual error exceeds the term that covers it or the whole bound (a failing case is
 // shrunk), and every term is approached within 2^-8 by some case at its decision. A term no case
 // comes near is a term no test checks: a generator that stopped reaching its regime fails here.
@@ -7,8 +7,8 @@
 
 #include <algorithm>
 
-#include "harness/bound_coverage.h"
-#include "harness/input_json.h"
+#include "harness/judging/bound_coverage.h"
+#include "harness/formats/input_json.h"
 #include "oracle/exact/exact_reference.h"
 #include "properties/property.h"
 

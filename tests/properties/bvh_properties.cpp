@@ -15,11 +15,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include "harness/bands.h"
-#include "harness/features.h"
-#include "harness/input_json.h"
-#include "harness/mesh_collide.h"
-#include "harness/mesh_poses.h"
+#include "harness/judging/bands.h"
+#include "harness/judging/features.h"
+#include "harness/formats/input_json.h"
+#include "harness/model/mesh_collide.h"
+#include "harness/generation/mesh_poses.h"
 #include "collide/procedural_mesh.h"
 #include "oracle/exact/exact_meshes.h"
 #include "oracle/exact/rational.h"

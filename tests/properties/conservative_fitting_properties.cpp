@@ -11,8 +11,8 @@
 
 #include "collide/convex_hull.h"
 #include "collide/kdop.h"
-#include "harness/input_json.h"
-#include "harness/values.h"
+#include "harness/formats/input_json.h"
+#include "harness/generation/values.h"
 #include "oracle/exact/rational.h"
 #include "properties/property.h"
 

@@ -23,9 +23,9 @@
 #include "collide/kdop_support.h"
 #include "collide/obb_fit.h"
 #include "collide/object_bounds.h"
-#include "harness/number_text.h"
-#include "harness/rotation.h"
-#include "harness/values.h"
+#include "harness/formats/number_text.h"
+#include "harness/generation/rotation.h"
+#include "harness/generation/values.h"
 #include "oracle/exact/rational.h"
 #include "properties/property.h"
 

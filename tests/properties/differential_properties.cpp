@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
-#include "harness/configurations.h"
-#include "harness/evaluate.h"
-#include "harness/input_json.h"
+#include "harness/judging/configurations.h"
+#include "harness/judging/evaluate.h"
+#include "harness/formats/input_json.h"
 #include "oracle/exact/exact_reference.h"
 #include "case_budget.h"
 #include "properties/property.h"

@@ -7,16 +7,16 @@
 //    nearest doubles on the allowed side, not one ulp further;
 //  - ray_mesh's t: the range of the exact verdict, whose upper end is the exact first point
 //    rounded up.
-// (The margins' bands are checked the same way in tests/harness/classify_test.cpp.)
+// (The margins' bands are checked the same way in tests/harness/judging/classify_test.cpp.)
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 
 #include <cmath>
 
-#include "harness/bands.h"
-#include "harness/classify.h"
-#include "harness/input_json.h"
-#include "harness/number_text.h"
+#include "harness/judging/bands.h"
+#include "harness/judging/classify.h"
+#include "harness/formats/input_json.h"
+#include "harness/formats/number_text.h"
 #include "oracle/exact/exact_reference.h"
 #include "oracle/exact/exact_sweep.h"
 #include "oracle/exact/rational.h"

@@ -28,10 +28,10 @@
 #include <algorithm>
 
 #include "collide/ray_mesh.h"
-#include "harness/evaluate.h"
-#include "harness/input_json.h"
-#include "harness/library.h"
-#include "harness/metamorphic.h"
+#include "harness/judging/evaluate.h"
+#include "harness/formats/input_json.h"
+#include "harness/model/library.h"
+#include "harness/judging/metamorphic.h"
 #include "oracle/exact/exact_reference.h"
 #include "case_budget.h"
 #include "properties/property.h"

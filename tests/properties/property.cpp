@@ -3,7 +3,7 @@
 #include <gtest/gtest.h>
 #include <rapidcheck.h>
 #include "test_paths.h"
-#include "harness/configurations.h"
+#include "harness/judging/configurations.h"
 
 #include <cstdlib>
 #include <iostream>

@@ -12,15 +12,15 @@
 #include <string_view>
 #include <vector>
 
-#include "harness/features.h"
-#include "harness/generate.h"
+#include "harness/judging/features.h"
+#include "harness/generation/generate.h"
 
 namespace cc::test {
 
 /// How often a property met each kind of configuration (counted over every case it ran).
 struct Met {
   int cases = 0, touching = 0, parallel = 0, degenerate = 0;
-  std::map<std::string_view, int> configurations;  // harness/configurations.h
+  std::map<std::string_view, int> configurations;  // harness/judging/configurations.h
   void count(const harness::Features& f);
   void count(const std::vector<std::string_view>& names);
 };

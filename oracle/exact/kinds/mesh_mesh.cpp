@@ -1,0 +1,18 @@
+// mesh_mesh in exact arithmetic: every pair of triangles near contact, exactly (exact_meshes.h).
+#include "oracle/exact/exact_meshes.h"
+#include "oracle/exact/explain.h"
+#include "oracle/exact/judges.h"
+
+namespace cc::exact {
+
+template <>
+ExactVerdict judge(const harness::MeshMeshInput& in) {
+  return judge_meshes(in.meshes);
+}
+
+template <>
+harness::Explanation explain(const harness::MeshMeshInput& in) {
+  return explain_meshes(in.meshes);
+}
+
+}  // namespace cc::exact

@@ -1,0 +1,30 @@
+// tri_aabb in exact arithmetic: a box and a triangle through the exact separating-axis test
+// (exact_polytopes.h).
+#include <algorithm>
+
+#include "oracle/exact/domain.h"
+#include "oracle/exact/exact_polytopes.h"
+#include "oracle/exact/explain.h"
+#include "oracle/exact/judges.h"
+
+namespace cc::exact {
+
+template <>
+ExactVerdict judge(const harness::TriAabbInput& in) {
+  if (!all_finite(in.tri) || !all_finite({in.box.lo.x, in.box.lo.y, in.box.lo.z, in.box.hi.x, in.box.hi.y, in.box.hi.z})) {
+    return documented(false, "NaN or infinite input");
+  }
+  for (int k = 0; k < 3; ++k) {
+    if (in.box.lo[k] > in.box.hi[k]) return documented(false, "inverted box");
+  }
+  const double magnitude = std::max(magnitude_of(in.tri), magnitude_of(in.box));
+  if (auto why = scale_outside(magnitude, kTriangleMinExponent, kTriangleMaxExponent)) return unspecified(*why);
+  return verdict_of(exact_sat(box_shape(in.box.lo, in.box.hi, "B"), shape_of(in.tri, "T")), magnitude);
+}
+
+template <>
+harness::Explanation explain(const harness::TriAabbInput& in) {
+  return explain_polytopes(box_shape(in.box.lo, in.box.hi, "B"), shape_of(in.tri, "T"));
+}
+
+}  // namespace cc::exact

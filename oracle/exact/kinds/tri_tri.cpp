@@ -1,0 +1,25 @@
+// tri_tri in exact arithmetic: two triangles through the exact separating-axis test
+// (exact_polytopes.h).
+#include <algorithm>
+
+#include "oracle/exact/domain.h"
+#include "oracle/exact/exact_polytopes.h"
+#include "oracle/exact/explain.h"
+#include "oracle/exact/judges.h"
+
+namespace cc::exact {
+
+template <>
+ExactVerdict judge(const harness::TriTriInput& in) {
+  if (!all_finite(in.a) || !all_finite(in.b)) return documented(false, "NaN or infinite input");
+  const double magnitude = std::max(magnitude_of(in.a), magnitude_of(in.b));
+  if (auto why = scale_outside(magnitude, kTriangleMinExponent, kTriangleMaxExponent)) return unspecified(*why);
+  return verdict_of(exact_sat(shape_of(in.a, "A"), shape_of(in.b, "B")), magnitude);
+}
+
+template <>
+harness::Explanation explain(const harness::TriTriInput& in) {
+  return explain_polytopes(shape_of(in.a, "A"), shape_of(in.b, "B"));
+}
+
+}  // namespace cc::exact

@@ -1,0 +1,309 @@
+#include "harness/formats/case_file.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include "harness/formats/number_text.h"
+
+namespace cc::harness {
+namespace {
+
+std::string_view contract_name(Contract c) {
+  switch (c) {
+    case Contract::in: return "in";
+    case Contract::documented: return "documented";
+    case Contract::unspecified: return "unspecified";
+  }
+  return "?";
+}
+
+std::string_view status_name(Opinion::Status s) {
+  switch (s) {
+    case Opinion::Status::answered: return "answered";
+    case Opinion::Status::not_applicable: return "n/a";
+    case Opinion::Status::failed: return "failed";
+  }
+  return "?";
+}
+
+Json numbers(const std::vector<double>& xs) {
+  Json a = Json::array();
+  for (double x : xs) a.push_back(number_to_json(x));
+  return a;
+}
+
+// Reading helpers that name the place of every problem.
+const Json& member(const Json& j, const std::string& pointer, const std::string& name) {
+  if (!j.is_object()) throw FormatError(pointer, "expected an object");
+  const auto it = j.find(name);
+  if (it == j.end()) throw FormatError(pointer, "missing field \"" + name + "\"");
+  return *it;
+}
+std::string text(const Json& j, const std::string& pointer) {
+  if (!j.is_string()) throw FormatError(pointer, "expected a string");
+  return j.get<std::string>();
+}
+bool boolean(const Json& j, const std::string& pointer) {
+  if (!j.is_boolean()) throw FormatError(pointer, "expected true or false");
+  return j.get<bool>();
+}
+std::vector<double> numbers_from(const Json& j, const std::string& pointer) {
+  if (!j.is_array()) throw FormatError(pointer, "expected an array of numbers");
+  std::vector<double> out;
+  for (std::size_t i = 0; i < j.size(); ++i) out.push_back(number_from_json(j[i], pointer + "/" + std::to_string(i)));
+  return out;
+}
+std::uint64_t unsigned_from(const Json& j, const std::string& pointer) {
+  if (!j.is_number_unsigned()) throw FormatError(pointer, "expected a non-negative integer");
+  return j.get<std::uint64_t>();
+}
+std::vector<FacePair> pairs_from(const Json& j, const std::string& pointer) {
+  if (!j.is_array()) throw FormatError(pointer, "expected an array of [face of a, face of b] pairs");
+  std::vector<FacePair> out;
+  for (std::size_t i = 0; i < j.size(); ++i) {
+    const std::string p = pointer + "/" + std::to_string(i);
+    if (!j[i].is_array() || j[i].size() != 2 || !j[i][0].is_number_unsigned() || !j[i][1].is_number_unsigned()) {
+      throw FormatError(p, "expected [face of a, face of b]");
+    }
+    out.emplace_back(j[i][0].get<std::uint32_t>(), j[i][1].get<std::uint32_t>());
+  }
+  return out;
+}
+// hit, and the parameters or pairs when there are any.
+void read_answer(const Json& j, const std::string& pointer, Answer& a) {
+  a.hit = boolean(member(j, pointer, "hit"), pointer + "/hit");
+  if (j.contains("params")) a.params = numbers_from(j["params"], pointer + "/params");
+  if (j.contains("pairs")) a.pairs = pairs_from(j["pairs"], pointer + "/pairs");
+  if (j.contains("frames")) {
+    const Json& frames = j["frames"];
+    if (!frames.is_array()) throw FormatError(pointer + "/frames", "expected an array of frames, each a list of pairs");
+    for (std::size_t f = 0; f < frames.size(); ++f) {
+      a.frames.push_back(pairs_from(frames[f], pointer + "/frames/" + std::to_string(f)));
+    }
+  }
+}
+Answer answer_from(const Json& j, const std::string& pointer) {
+  Answer a;
+  read_answer(j, pointer, a);
+  return a;
+}
+void write_answer(const Answer& a, Json& j) {
+  j["hit"] = a.hit;
+  if (!a.params.empty()) j["params"] = numbers(a.params);
+  if (!a.pairs.empty()) {
+    Json pairs = Json::array();
+    for (const auto& [i, k] : a.pairs) pairs.push_back(Json::array({i, k}));
+    j["pairs"] = pairs;
+  }
+  if (!a.frames.empty()) {
+    Json frames = Json::array();
+    for (const auto& frame : a.frames) {
+      Json pairs = Json::array();
+      for (const auto& [i, k] : frame) pairs.push_back(Json::array({i, k}));
+      frames.push_back(pairs);
+    }
+    j["frames"] = frames;
+  }
+}
+
+std::uint64_t fnv1a(std::string_view s) {
+  std::uint64_t h = 0xcbf29ce484222325ULL;
+  for (unsigned char c : s) {
+    h ^= c;
+    h *= 0x100000001b3ULL;
+  }
+  return h;
+}
+
+// "line L, column C" of a byte offset in a text.
+std::string line_and_column(const std::string& content, std::size_t offset) {
+  std::size_t line = 1, column = 1;
+  for (std::size_t i = 0; i < std::min(offset, content.size()); ++i) {
+    if (content[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+}  // namespace
+
+CaseFileError::CaseFileError(std::string file, std::string place, const std::string& message)
+    : std::runtime_error(file + ": " + (place.empty() ? "" : place + ": ") + message),
+      file_(std::move(file)),
+      place_(std::move(place)) {}
+
+Json answer_json(const Answer& a) {
+  Json j = Json::object();
+  write_answer(a, j);
+  return j;
+}
+
+Json opinions_to_json(const std::vector<Opinion>& opinions) {
+  Json out = Json::array();
+  for (const Opinion& o : opinions) {
+    Json j = {{"party", o.party}, {"status", status_name(o.status)}};
+    if (o.status == Opinion::Status::answered) write_answer(o.answer, j);
+    if (!o.detail.empty()) j["detail"] = o.detail;
+    out.push_back(j);
+  }
+  return out;
+}
+
+std::vector<Opinion> opinions_from_json(const Json& opinions, const std::string& place) {
+  if (!opinions.is_array()) throw FormatError(place, "expected an array");
+  std::vector<Opinion> out;
+  for (std::size_t i = 0; i < opinions.size(); ++i) {
+    const std::string p = place + "/" + std::to_string(i);
+    Opinion o;
+    o.party = text(member(opinions[i], p, "party"), p + "/party");
+    const std::string status = text(member(opinions[i], p, "status"), p + "/status");
+    if (status == "answered") {
+      o.status = Opinion::Status::answered;
+      read_answer(opinions[i], p, o.answer);
+    } else if (status == "n/a") {
+      o.status = Opinion::Status::not_applicable;
+    } else if (status == "failed") {
+      o.status = Opinion::Status::failed;
+    } else {
+      throw FormatError(p + "/status", "expected \"answered\", \"n/a\" or \"failed\"");
+    }
+    o.detail = opinions[i].contains("detail") ? text(opinions[i]["detail"], p + "/detail") : "";
+    out.push_back(o);
+  }
+  return out;
+}
+
+Json case_to_json(const Case& c) {
+  const Json opinions = opinions_to_json(c.opinions);
+  Json exact = answer_json(c.exact.answer);
+  exact["contract"] = contract_name(c.exact.contract);
+  exact["decided"] = c.exact.decided;
+  if (!c.exact.note.empty()) exact["note"] = c.exact.note;
+  Json provenance = {{"source", c.provenance.source}};
+  if (c.provenance.seed) provenance["seed"] = *c.provenance.seed;
+  if (c.provenance.case_index) provenance["case"] = *c.provenance.case_index;
+  if (!c.provenance.detail.empty()) provenance["detail"] = c.provenance.detail;
+  return {{"format", "crosscheck-case"},
+          {"version", kCaseFormatVersion},
+          {"query", name(kind_of(c.input))},
+          {"note", c.note},
+          {"class", to_string(c.cls)},
+          {"margin", number_to_json(c.exact.margin)},
+          {"inputs", input_to_json(c.input)},
+          {"answers", {{"library", answer_json(c.library)}, {"exact", exact}, {"oracles", opinions}}},
+          {"provenance", provenance}};
+}
+
+Case case_from_json(const Json& json, const std::filesystem::path& case_dir) {
+  if (!json.is_object()) throw FormatError("", "expected a JSON object");
+  const auto version = member(json, "", "version");
+  if (!version.is_number_integer()) throw FormatError("/version", "expected an integer");
+  if (version.get<int>() > kCaseFormatVersion || version.get<int>() < 1) {
+    throw FormatError("/version", "format version " + std::to_string(version.get<int>()) +
+                                      " is not supported (this build reads version " +
+                                      std::to_string(kCaseFormatVersion) + ")");
+  }
+  const std::string query = text(member(json, "", "query"), "/query");
+  const auto kind = query_kind_named(query);
+  if (!kind) throw FormatError("/query", "unknown query kind \"" + query + "\"");
+
+  Case c;
+  c.input = input_from_json(*kind, member(json, "", "inputs"), "/inputs", case_dir);
+  c.note = json.contains("note") ? text(json["note"], "/note") : "";
+  const std::string cls = text(member(json, "", "class"), "/class");
+  const auto parsed = case_class_named(cls);
+  if (!parsed) throw FormatError("/class", "unknown class \"" + cls + "\"");
+  c.cls = *parsed;
+
+  const Json& answers = member(json, "", "answers");
+  c.library = answer_from(member(answers, "/answers", "library"), "/answers/library");
+  const Json& exact = member(answers, "/answers", "exact");
+  c.exact.answer = answer_from(exact, "/answers/exact");
+  c.exact.margin = number_from_json(member(json, "", "margin"), "/margin");
+  const std::string contract = text(member(exact, "/answers/exact", "contract"), "/answers/exact/contract");
+  if (contract == "in") {
+    c.exact.contract = Contract::in;
+  } else if (contract == "documented") {
+    c.exact.contract = Contract::documented;
+  } else if (contract == "unspecified") {
+    c.exact.contract = Contract::unspecified;
+  } else {
+    throw FormatError("/answers/exact/contract", "expected \"in\", \"documented\" or \"unspecified\"");
+  }
+  c.exact.decided = exact.contains("decided") ? boolean(exact["decided"], "/answers/exact/decided") : true;
+  c.exact.note = exact.contains("note") ? text(exact["note"], "/answers/exact/note") : "";
+  c.opinions = opinions_from_json(member(answers, "/answers", "oracles"), "/answers/oracles");
+  if (json.contains("provenance")) {
+    const Json& p = json["provenance"];
+    c.provenance.source = text(member(p, "/provenance", "source"), "/provenance/source");
+    if (p.contains("seed")) c.provenance.seed = unsigned_from(p["seed"], "/provenance/seed");
+    if (p.contains("case")) c.provenance.case_index = unsigned_from(p["case"], "/provenance/case");
+    if (p.contains("detail")) c.provenance.detail = text(p["detail"], "/provenance/detail");
+  }
+  return c;
+}
+
+Case read_case_file(const std::filesystem::path& path) {
+  const std::string file = path.string();
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw CaseFileError(file, "", "cannot read the file");
+  std::stringstream buffer;
+  buffer << in.rdbuf();
+  if (in.bad()) throw CaseFileError(file, "", "cannot read the file");
+  const std::string content = buffer.str();
+  Json json;
+  try {
+    json = Json::parse(content);
+  } catch (const Json::parse_error& e) {
+    std::string message = e.what();
+    const auto at = message.find("syntax error");
+    if (at != std::string::npos) message = message.substr(at);
+    throw CaseFileError(file, line_and_column(content, e.byte == 0 ? 0 : e.byte - 1), message);
+  }
+  try {
+    return case_from_json(json, path.parent_path());
+  } catch (const FormatError& e) {
+    throw CaseFileError(file, e.pointer().empty() ? "/" : e.pointer(), e.what());
+  }
+}
+
+std::string case_file_name(const Input& input) {
+  const Json key = {{"query", name(kind_of(input))}, {"inputs", input_to_json(input)}};
+  char hex[17];
+  std::snprintf(hex, sizeof hex, "%016llx", static_cast<unsigned long long>(fnv1a(key.dump())));
+  return std::string(hex) + ".json";
+}
+
+bool write_new_case_file(const std::filesystem::path& path, const Case& c) {
+  if (std::filesystem::exists(path)) return false;
+  std::error_code ec;
+  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
+  std::ofstream out(path);
+  out << case_to_json(c).dump(2) << "\n";
+  if (!out) throw CaseFileError(path.string(), "", "cannot write the file");
+  return true;
+}
+
+std::vector<std::filesystem::path> case_files_under(const std::vector<std::filesystem::path>& roots) {
+  std::vector<std::filesystem::path> files;
+  for (const auto& root : roots) {
+    if (std::filesystem::is_regular_file(root)) {
+      files.push_back(root);
+      continue;
+    }
+    if (!std::filesystem::is_directory(root)) continue;
+    for (const auto& entry : std::filesystem::recursive_directory_iterator(root)) {
+      if (entry.is_regular_file() && entry.path().extension() == ".json") files.push_back(entry.path());
+    }
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+}  // namespace cc::harness

@@ -1,0 +1,77 @@
+// Case files: one JSON text file per case (DESIGN.md, "Case files"). A case file holds the query
+// kind, its inputs with exact round-trip numbers, the three parties' answers, the class and the
+// margin, where the case came from, and a one-line note by whoever triaged it. Files are named
+// by a hash of the query and its inputs, so a case is stored once and never overwritten.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "harness/judging/classify.h"
+#include "harness/formats/input_json.h"
+
+namespace cc::harness {
+
+inline constexpr int kCaseFormatVersion = 1;
+
+/// Where a case came from: "campaign" (seed and case index), "property" (its name), "fuzz"
+/// (the input bytes in hex), "shrink" (the file it was shrunk from) or "hand-written".
+struct Provenance {
+  std::string source = "hand-written";
+  std::optional<std::uint64_t> seed;
+  std::optional<std::uint64_t> case_index;
+  std::string detail;  // property name, fuzz bytes, original file
+};
+
+struct Case {
+  Input input;
+  Answer library;
+  ExactVerdict exact;
+  std::vector<Opinion> opinions;
+  CaseClass cls = CaseClass::agree;
+  Provenance provenance;
+  std::string note;
+};
+
+/// A problem with a case file: the file, the place in it ("line 3, column 14" or a JSON pointer
+/// such as "/inputs/origin/1"), and what is wrong.
+class CaseFileError : public std::runtime_error {
+ public:
+  CaseFileError(std::string file, std::string place, const std::string& message);
+  const std::string& file() const { return file_; }
+  const std::string& place() const { return place_; }
+
+ private:
+  std::string file_, place_;
+};
+
+Json case_to_json(const Case& c);
+/// An answer as a case file stores it ({"hit", "params", "pairs", "frames"}, doubles exactly):
+/// two answers are the same, bit for bit, when their JSON is.
+Json answer_json(const Answer& a);
+/// The opinions as a case file stores them ("answers"/"oracles"), doubles exactly.
+Json opinions_to_json(const std::vector<Opinion>& opinions);
+/// Reads them back; throws FormatError naming the place (`place` is the array's JSON pointer).
+std::vector<Opinion> opinions_from_json(const Json& opinions, const std::string& place);
+/// Throws FormatError (with a JSON pointer) for a document that is not a valid case. Mesh files
+/// are looked for from case_dir (see find_mesh_file).
+Case case_from_json(const Json& json, const std::filesystem::path& case_dir = {});
+
+/// Reads a case file; throws CaseFileError for an unreadable file, a syntax error, an unknown
+/// query kind, a missing field, a number that does not parse, or a newer format version.
+Case read_case_file(const std::filesystem::path& path);
+
+/// The file name of a case: 16 hex digits of a 64-bit FNV-1a hash of its query and inputs.
+std::string case_file_name(const Input& input);
+
+/// Writes the case to `path`. Never overwrites: returns false (and writes nothing) if the file
+/// exists. Throws CaseFileError if it cannot be written.
+bool write_new_case_file(const std::filesystem::path& path, const Case& c);
+
+/// Every case file (*.json) under the directories given, recursively, sorted.
+std::vector<std::filesystem::path> case_files_under(const std::vector<std::filesystem::path>& roots);
+
+}  // namespace cc::harness

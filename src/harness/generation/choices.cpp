@@ -1,0 +1,48 @@
+#include "harness/generation/choices.h"
+
+namespace cc::harness {
+namespace {
+
+std::uint64_t splitmix(std::uint64_t& x) {
+  std::uint64_t z = (x += 0x9e3779b97f4a7c15ULL);
+  z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+  return z ^ (z >> 31);
+}
+
+std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
+
+}  // namespace
+
+RandomChoices::RandomChoices(std::uint64_t seed) {
+  for (auto& s : s_) s = splitmix(seed);
+}
+
+std::uint64_t RandomChoices::next() {
+  const std::uint64_t result = rotl(s_[1] * 5, 7) * 9;
+  const std::uint64_t t = s_[1] << 17;
+  s_[2] ^= s_[0];
+  s_[3] ^= s_[1];
+  s_[1] ^= s_[2];
+  s_[0] ^= s_[3];
+  s_[2] ^= t;
+  s_[3] = rotl(s_[3], 45);
+  return result;
+}
+
+std::uint64_t RandomChoices::draw(std::uint64_t n) {
+  return next() % n;  // the bias for n far below 2^64 is irrelevant here
+}
+
+std::uint64_t ReplayChoices::draw(std::uint64_t n) {
+  if (next_ >= recorded_.size()) return 0;
+  return recorded_[next_++] % n;
+}
+
+std::uint64_t mix_seed(std::uint64_t a, std::uint64_t b) {
+  std::uint64_t x = a ^ rotl(b, 32) ^ 0x2545f4914f6cdd1dULL;
+  splitmix(x);
+  return splitmix(x);
+}
+
+}  // namespace cc::harness

@@ -1,0 +1,86 @@
+#include "harness/generation/values.h"
+
+#include <cmath>
+#include <limits>
+
+namespace cc::harness {
+namespace {
+
+// Zigzag order: 0, 1, -1, 2, -2, ...
+long long zigzag(std::uint64_t i) {
+  const auto h = static_cast<long long>((i + 1) / 2);
+  return (i % 2 == 1) ? h : -h;
+}
+
+}  // namespace
+
+int ValueSource::small_int(int limit) {
+  return static_cast<int>(zigzag(choices_.draw(2 * static_cast<std::uint64_t>(limit) + 1)));
+}
+
+double ValueSource::nudge(double x) {
+  const auto steps = 1 + choices_.draw(4);
+  const double toward = choices_.chance(50) ? INFINITY : -INFINITY;
+  for (std::uint64_t i = 0; i < steps; ++i) x = std::nextafter(x, toward);
+  return x;
+}
+
+double ValueSource::remember(double x) {
+  pool_.push_back(x);
+  return x;
+}
+
+double ValueSource::coordinate() {
+  const auto c = choices_.draw(100);
+  if (c < 10) return remember(0.0);
+  if (c < 25) return remember(static_cast<double>(small_int(8)));
+  if (c < 35) return remember(static_cast<double>(small_int(32)) / 4);
+  if (c < 48 && !pool_.empty()) return remember(pool_[choices_.draw(pool_.size())]);
+  if (c < 56 && !pool_.empty()) return remember(nudge(pool_[choices_.draw(pool_.size())]));
+  if (c < 64) {
+    const double sign = choices_.chance(50) ? -1.0 : 1.0;
+    return remember(sign * std::ldexp(1.0, small_int(24)));
+  }
+  if (c < 92 || !range_.extreme) {
+    // A generic value: sign, mantissa, exponent; the simplest is 1.0.
+    const double sign = choices_.chance(50) ? -1.0 : 1.0;
+    const double mantissa = 1.0 + static_cast<double>(choices_.draw(std::uint64_t{1} << 52)) * 0x1p-52;
+    const int exponent = small_int(range_.max_exponent);
+    return remember(sign * std::ldexp(mantissa, exponent));
+  }
+  if (c < 94) return remember(-0.0);
+  const double sign = choices_.chance(50) ? -1.0 : 1.0;
+  if (c < 96) {
+    // Subnormals: the smallest, the largest, or one in between.
+    switch (choices_.draw(3)) {
+      case 0: return remember(sign * std::numeric_limits<double>::denorm_min());
+      case 1: return remember(sign * std::nextafter(std::numeric_limits<double>::min(), 0.0));
+      default: return remember(sign * std::ldexp(static_cast<double>(1 + choices_.draw(1u << 30)), -1074));
+    }
+  }
+  const int e = 100 + static_cast<int>(choices_.draw(190));
+  if (c < 98 || !(range_.huge || range_.special)) return remember(sign * std::ldexp(1.0, -e));  // tiny
+  if (!range_.special || choices_.chance(50)) {
+    return remember(range_.huge ? sign * std::ldexp(1.0, e) : sign * std::ldexp(1.0, -e));
+  }
+  switch (choices_.draw(3)) {
+    case 0: return remember(std::numeric_limits<double>::quiet_NaN());
+    case 1: return remember(INFINITY);
+    default: return remember(-INFINITY);
+  }
+}
+
+double ValueSource::length() {
+  const auto c = choices_.draw(100);
+  if (c < 15) return remember(0.0);
+  if (c < 85) return remember(std::fabs(coordinate()));
+  // Sometimes a generic length of moderate size, so shapes have room to overlap.
+  return remember(std::ldexp(1.0 + static_cast<double>(choices_.draw(1u << 20)) * 0x1p-20, small_int(4)));
+}
+
+Vec3 ValueSource::point() {
+  const double x = coordinate(), y = coordinate(), z = coordinate();
+  return {x, y, z};
+}
+
+}  // namespace cc::harness

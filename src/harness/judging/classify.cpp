@@ -1,0 +1,278 @@
+#include "harness/judging/classify.h"
+
+#include <algorithm>
+#include <cmath>
+#include <iterator>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+
+#include "harness/judging/bands.h"
+
+namespace cc::harness {
+
+double ExactVerdict::margin_of(const FacePair& pair) const {
+  const auto it = std::lower_bound(pair_margins.begin(), pair_margins.end(), pair,
+                                   [](const PairMargin& m, const FacePair& p) { return m.pair < p; });
+  return it != pair_margins.end() && it->pair == pair ? it->margin : unlisted_margin;
+}
+
+std::string_view to_string(CaseClass c) {
+  switch (c) {
+    case CaseClass::agree: return "agree";
+    case CaseClass::impl_bug: return "impl_bug";
+    case CaseClass::oracle_defect: return "oracle_defect";
+    case CaseClass::oracle_crash: return "oracle_crash";
+    case CaseClass::boundary: return "boundary";
+    case CaseClass::out_of_contract: return "out_of_contract";
+    case CaseClass::undecided: return "undecided";
+  }
+  return "?";
+}
+
+std::optional<CaseClass> case_class_named(std::string_view name) {
+  for (CaseClass c : kAllClasses) {
+    if (to_string(c) == name) return c;
+  }
+  return std::nullopt;
+}
+
+std::string_view to_string(Standing s) {
+  switch (s) {
+    case Standing::right: return "right";
+    case Standing::within_band: return "within band";
+    case Standing::wrong: return "wrong";
+    case Standing::not_applicable: return "n/a";
+    case Standing::failed: return "failed";
+  }
+  return "?";
+}
+
+namespace {
+
+std::string describe(bool says_hit, const ExactVerdict& exact) {
+  std::ostringstream s;
+  s << "says " << (says_hit ? "hit" : "miss") << ", exact " << (exact.answer.hit ? "hit" : "miss") << " at margin "
+    << exact.margin;
+  return s.str();
+}
+
+// Parameters (ray t) within the band's relative width of the exact ones.
+bool params_agree(const Band& band, const Answer& said, const Answer& exact) {
+  if (said.params.size() != exact.params.size()) return false;
+  for (std::size_t i = 0; i < said.params.size(); ++i) {
+    const double a = said.params[i], e = exact.params[i];
+    if (a == e) continue;  // also equal infinities
+    if (!(std::fabs(a - e) <= band.param_width * std::fabs(e) + 0x1p-1060)) return false;
+  }
+  return true;
+}
+
+std::string pair_text(const FacePair& p) {
+  std::ostringstream s;
+  s << '(' << p.first << ", " << p.second << ')';
+  return s.str();
+}
+
+// Mesh queries: every pair where the party and the exact answer differ is judged on its own
+// margin. all_pairs: the pairs in one set and not the other. first_hit: the pair found must
+// collide; a miss must leave only pairs within the band.
+PartyStanding judge_pairs(std::string party, const Band& band, const Answer& said, const ExactVerdict& exact,
+                          bool first_hit) {
+  struct Difference {
+    FacePair pair;
+    bool says_hit;
+  };
+  std::vector<Difference> differences;
+  const auto& truth = exact.answer.pairs;
+  const auto collides = [&](const FacePair& p) { return std::binary_search(truth.begin(), truth.end(), p); };
+  if (!first_hit) {
+    std::vector<FacePair> only_said, only_exact;
+    std::set_difference(said.pairs.begin(), said.pairs.end(), truth.begin(), truth.end(), std::back_inserter(only_said));
+    std::set_difference(truth.begin(), truth.end(), said.pairs.begin(), said.pairs.end(), std::back_inserter(only_exact));
+    for (const FacePair& p : only_said) differences.push_back({p, true});
+    for (const FacePair& p : only_exact) differences.push_back({p, false});
+  } else if (said.hit) {
+    if (said.pairs.empty()) return {std::move(party), Standing::wrong, "says hit without naming a pair"};
+    if (!collides(said.pairs[0])) differences.push_back({said.pairs[0], true});
+  } else {
+    for (const FacePair& p : truth) differences.push_back({p, false});
+  }
+  PartyStanding standing{std::move(party), Standing::right, ""};
+  int wrong = 0, in_band = 0;
+  std::string first_wrong, first_in_band;
+  for (const Difference& d : differences) {
+    const double m = exact.margin_of(d.pair);
+    std::ostringstream s;
+    s << "says " << pair_text(d.pair) << (d.says_hit ? " collides" : " does not collide") << ", exact "
+      << (d.says_hit ? "apart" : "colliding") << " at margin " << m;
+    if (within_band(band, d.says_hit, m)) {
+      if (in_band++ == 0) first_in_band = s.str();
+    } else if (wrong++ == 0) {
+      first_wrong = s.str();
+    }
+  }
+  const auto more = [](int n) {
+    std::ostringstream s;
+    if (n > 1) s << " (and " << n - 1 << " more pairs)";
+    return s.str();
+  };
+  if (wrong > 0) {
+    standing.standing = Standing::wrong;
+    standing.why = first_wrong + more(wrong);
+  } else if (in_band > 0) {
+    standing.standing = Standing::within_band;
+    standing.why = first_in_band + more(in_band);
+  }
+  return standing;
+}
+
+// Pairs over frames: every pair of every frame where the party and the exact answer differ; the
+// truth is exact comparisons of the given bounds, so within a band only if the band allows.
+PartyStanding judge_frames(std::string party, const Band& band, const Answer& said, const ExactVerdict& exact) {
+  PartyStanding standing{std::move(party), Standing::right, ""};
+  const auto& truth = exact.answer.frames;
+  if (said.frames.size() != truth.size()) {
+    standing.standing = Standing::wrong;
+    standing.why = "answers " + std::to_string(said.frames.size()) + " frames of " + std::to_string(truth.size());
+    return standing;
+  }
+  int differing = 0;
+  std::string first;
+  for (std::size_t f = 0; f < truth.size(); ++f) {
+    std::vector<FacePair> only_said, only_exact;
+    std::set_difference(said.frames[f].begin(), said.frames[f].end(), truth[f].begin(), truth[f].end(),
+                        std::back_inserter(only_said));
+    std::set_difference(truth[f].begin(), truth[f].end(), said.frames[f].begin(), said.frames[f].end(),
+                        std::back_inserter(only_exact));
+    if (differing == 0 && !(only_said.empty() && only_exact.empty())) {
+      const bool says = !only_said.empty();
+      first = "frame " + std::to_string(f) + ": says boxes " + pair_text(says ? only_said[0] : only_exact[0]) +
+              (says ? " overlap, exact apart" : " are apart, exact overlapping");
+    }
+    differing += static_cast<int>(only_said.size() + only_exact.size());
+  }
+  if (differing > 0) {
+    standing.standing = band.sides == BandSides::exact ? Standing::wrong : Standing::within_band;
+    standing.why = first + (differing > 1 ? " (and " + std::to_string(differing - 1) + " more pairs)" : "");
+  }
+  return standing;
+}
+
+// A hit's parameters against the ranges of the exact verdict, or within the band's relative
+// width of the exact parameters. Nothing when they agree, or when the party gives none (the
+// batched ray test, any hit): it is judged on its hit alone. Else why not.
+std::optional<std::string> params_wrong(const Band& band, const Answer& said, const ExactVerdict& exact) {
+  const auto& ranges = exact.param_ranges;
+  if (said.params.empty()) return std::nullopt;
+  bool wrong = false;
+  if (!ranges.empty()) {
+    wrong = said.params.size() != ranges.size();
+    for (std::size_t i = 0; !wrong && i < ranges.size(); ++i) {
+      wrong = !(ranges[i].first <= said.params[i] && said.params[i] <= ranges[i].second);
+    }
+  } else {
+    if (band.param_width <= 0) return std::nullopt;
+    wrong = !params_agree(band, said, exact.answer);
+  }
+  if (!wrong) return std::nullopt;
+  std::ostringstream s;
+  s.precision(17);
+  s << "parameters differ:";
+  for (double v : said.params) s << ' ' << v;
+  if (ranges.empty()) {
+    s << " vs exact";
+    for (double v : exact.answer.params) s << ' ' << v;
+  } else {
+    s << " outside";
+    for (const auto& [lo, hi] : ranges) s << " [" << lo << ", " << hi << ']';
+  }
+  return s.str();
+}
+
+PartyStanding judge_party(std::string party, const Band& band, const Answer& said, const ExactVerdict& exact,
+                          Judged judged) {
+  if (judged == Judged::frames) return judge_frames(std::move(party), band, said, exact);
+  PartyStanding p{std::move(party), Standing::right, ""};
+  if (judged == Judged::all_pairs || judged == Judged::first_pair) {
+    p = judge_pairs(std::move(p.party), band, said, exact, judged == Judged::first_pair);
+  } else if (said.hit != exact.answer.hit) {
+    p.standing = within_band(band, said.hit, exact.margin) ? Standing::within_band : Standing::wrong;
+    p.why = describe(said.hit, exact);
+  }
+  if (p.standing != Standing::wrong && said.hit && exact.answer.hit) {
+    if (auto why = params_wrong(band, said, exact)) {
+      p.standing = Standing::wrong;
+      p.why = *why;
+    }
+  }
+  return p;
+}
+
+}  // namespace
+
+Judged judged_of(QueryKind kind) {
+  return with_kind(kind, []<class In>() { return Query<In>::judged; });
+}
+
+Verdict classify(QueryKind kind, const Answer& library, const ExactVerdict& exact, const std::vector<Opinion>& opinions) {
+  return classify(library_band(kind), judged_of(kind), library, exact, opinions);
+}
+
+Verdict classify(const Band& band_of_library, Judged judged, const Answer& library, const ExactVerdict& exact,
+                 const std::vector<Opinion>& opinions) {
+  Verdict v;
+  if (exact.contract != Contract::in) {
+    PartyStanding lib{"library", Standing::right, exact.note};
+    if (exact.contract == Contract::documented && library.hit != exact.answer.hit) {
+      lib.standing = Standing::wrong;
+      lib.why = "breaks its documented answer (" + std::string(exact.answer.hit ? "hit" : "miss") + ") for: " + exact.note;
+    }
+    v.parties.push_back(lib);
+    v.cls = lib.standing == Standing::wrong ? CaseClass::impl_bug : CaseClass::out_of_contract;
+    return v;
+  }
+  if (!exact.decided) {
+    v.parties.push_back({"library", Standing::not_applicable, exact.note});
+    v.cls = CaseClass::undecided;
+    return v;
+  }
+
+  v.parties.push_back(judge_party("library", band_of_library, library, exact, judged));
+  bool any_wrong = false, library_wrong = false, any_failed = false, any_band = v.parties[0].standing == Standing::within_band;
+  for (const Opinion& o : opinions) {
+    if (o.status == Opinion::Status::not_applicable) {
+      v.parties.push_back({o.party, Standing::not_applicable, o.detail});
+      continue;
+    }
+    if (o.status == Opinion::Status::failed) {
+      v.parties.push_back({o.party, Standing::failed, o.detail});
+      (is_library_party(o.party) ? library_wrong : any_failed) = true;  // the library's own failure is a bug
+      continue;
+    }
+    const bool own = is_library_party(o.party);
+    if (!own && !o.band) throw std::invalid_argument("the opinion of " + o.party + " carries no band");
+    Band band = own ? band_of_library : *o.band;
+    if (!own) band.param_width = 0;  // second opinions give no parameters
+    Answer said = o.answer;
+    if (!own) said.params.clear();
+    v.parties.push_back(judge_party(o.party, band, said, exact, judged));
+    const bool wrong = v.parties.back().standing == Standing::wrong;
+    (own ? library_wrong : any_wrong) |= wrong;
+    any_band |= v.parties.back().standing == Standing::within_band;
+  }
+  if (v.parties[0].standing == Standing::wrong || library_wrong) {
+    v.cls = CaseClass::impl_bug;
+  } else if (any_failed) {
+    v.cls = CaseClass::oracle_crash;
+  } else if (any_wrong) {
+    v.cls = CaseClass::oracle_defect;
+  } else if (any_band) {
+    v.cls = CaseClass::boundary;
+  } else {
+    v.cls = CaseClass::agree;
+  }
+  return v;
+}
+
+}  // namespace cc::harness

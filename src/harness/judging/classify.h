@@ -1,0 +1,59 @@
+// How a case is classified from the three answers (DESIGN.md, "The three parties").
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "harness/model/answer.h"
+#include "harness/model/input.h"
+#include "harness/model/oracle.h"
+
+namespace cc::harness {
+
+enum class CaseClass {
+  agree,            // every party matches the exact answer
+  impl_bug,         // the library is wrong outside its band (or breaks its documented answer)
+  oracle_defect,    // a second opinion is wrong outside its band, the library is right
+  oracle_crash,     // a second opinion threw or crashed
+  boundary,         // some party differs, inside its band
+  out_of_contract,  // inputs outside the library's domain; its documented answer holds
+  undecided,        // the exact reference cannot decide
+};
+
+inline constexpr CaseClass kAllClasses[] = {CaseClass::agree,          CaseClass::impl_bug,       CaseClass::oracle_defect,
+                                            CaseClass::oracle_crash,   CaseClass::boundary,       CaseClass::out_of_contract,
+                                            CaseClass::undecided};
+
+std::string_view to_string(CaseClass c);
+std::optional<CaseClass> case_class_named(std::string_view name);
+
+/// How one party fared against the exact answer.
+enum class Standing { right, within_band, wrong, not_applicable, failed };
+std::string_view to_string(Standing s);
+
+struct PartyStanding {
+  std::string party;  // "library" or a second opinion's name
+  Standing standing = Standing::right;
+  std::string why;    // for wrong / within_band / failed
+};
+
+struct Verdict {
+  CaseClass cls = CaseClass::agree;
+  std::vector<PartyStanding> parties;  // the library first
+};
+
+/// Classifies a case from the library's answer, the exact verdict and the other parties'
+/// opinions (each judged by its own band; the library's parties by the kind's).
+Verdict classify(QueryKind kind, const Answer& library, const ExactVerdict& exact, const std::vector<Opinion>& opinions);
+
+/// The same for answers judged as a kind's are (`judged`, with the library's band), e.g. the
+/// pairs of two placed meshes outside a case.
+Verdict classify(const Band& library_band, Judged judged, const Answer& library, const ExactVerdict& exact,
+                 const std::vector<Opinion>& opinions);
+
+/// How a kind's answers are judged (its unit says).
+Judged judged_of(QueryKind kind);
+
+}  // namespace cc::harness

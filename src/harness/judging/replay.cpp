@@ -1,0 +1,73 @@
+#include "harness/judging/replay.h"
+
+#include <algorithm>
+
+#include "harness/formats/number_text.h"
+
+namespace cc::harness {
+namespace {
+
+// An answer as the case file has it, shortened for a message.
+std::string text_of(const Answer& a) {
+  std::string t = answer_json(a).dump();
+  return t.size() > 240 ? t.substr(0, 240) + "..." : t;
+}
+
+// What a party said: its status and, when it answered, its whole answer.
+std::string text_of(const Opinion& o) {
+  switch (o.status) {
+    case Opinion::Status::answered: return text_of(o.answer);
+    case Opinion::Status::not_applicable: return "n/a";
+    case Opinion::Status::failed: return "failed";
+  }
+  return "?";
+}
+bool same(const Opinion& a, const Opinion& b) {
+  return a.status == b.status && (a.status != Opinion::Status::answered || answer_json(a.answer) == answer_json(b.answer));
+}
+
+std::string contract_text(const ExactVerdict& v) {
+  std::string t = v.contract == Contract::in ? "in contract" : (v.contract == Contract::documented ? "documented" : "unspecified");
+  return t + (v.decided ? "" : ", undecided");
+}
+
+}  // namespace
+
+std::vector<std::string> replay_changes(const Case& c, const Evaluation& now) {
+  std::vector<std::string> out;
+  if (now.verdict.parties[0].standing == Standing::wrong) out.push_back("the library is wrong: " + now.verdict.parties[0].why);
+  if (!(answer_json(now.library) == answer_json(c.library))) {
+    out.push_back("the library's answer changed: recorded " + text_of(c.library) + ", now " + text_of(now.library));
+  }
+  if (!(answer_json(now.exact.answer) == answer_json(c.exact.answer))) {
+    out.push_back("the exact reference's answer changed: recorded " + text_of(c.exact.answer) + ", now " +
+                  text_of(now.exact.answer));
+  }
+  if (contract_text(now.exact) != contract_text(c.exact)) {
+    out.push_back("the exact reference changed: recorded " + contract_text(c.exact) + ", now " + contract_text(now.exact));
+  }
+  if (format_double(now.exact.margin) != format_double(c.exact.margin)) {
+    out.push_back("the exact margin changed: recorded " + format_double(c.exact.margin) + ", now " +
+                  format_double(now.exact.margin));
+  }
+  for (const Opinion& before : c.opinions) {
+    const auto after = std::find_if(now.opinions.begin(), now.opinions.end(),
+                                    [&](const Opinion& o) { return o.party == before.party; });
+    if (after == now.opinions.end()) {
+      out.push_back(before.party + " no longer answers: recorded " + text_of(before));
+    } else if (!same(*after, before)) {
+      out.push_back(before.party + " changed its behaviour: recorded " + text_of(before) + ", now " + text_of(*after));
+    }
+  }
+  for (const Opinion& after : now.opinions) {
+    if (std::none_of(c.opinions.begin(), c.opinions.end(), [&](const Opinion& o) { return o.party == after.party; })) {
+      out.push_back(after.party + " is not in the record: now " + text_of(after));
+    }
+  }
+  if (now.verdict.cls != c.cls) {
+    out.push_back("class changed: recorded " + std::string(to_string(c.cls)) + ", now " + std::string(to_string(now.verdict.cls)));
+  }
+  return out;
+}
+
+}  // namespace cc::harness

@@ -1,0 +1,44 @@
+// The query kinds. Every list of kinds in the project derives from this one: the QueryKind
+// enumeration and its names, the Input variant, the dispatch to each kind's pieces, the fuzz
+// targets (fuzz/CMakeLists.txt reads the list below). A kind is one line here and one unit in
+// each layer that answers it:
+//   src/harness/kinds/<kind>.h, .cpp   its input and fields, the library's call and band, its
+//                                      generator and touching construction, features,
+//                                      configurations, error-bound terms, metamorphic relations
+//   oracle/exact/kinds/<kind>.cpp      its exact judge and explanation
+//   oracle/fcl/kinds/<kind>.cpp        its second opinions: each party's name, band and call
+// A piece missing from a unit fails the build (the harness's pieces at compile time, see
+// kinds/query.h; the oracles' when linking).
+#pragma once
+
+#include "harness/kinds/aabb_aabb.h"
+#include "harness/kinds/broadphase.h"
+#include "harness/kinds/kdop_kdop.h"
+#include "harness/kinds/mesh_mesh.h"
+#include "harness/kinds/mesh_mesh_first.h"
+#include "harness/kinds/moving_obb.h"
+#include "harness/kinds/obb_obb.h"
+#include "harness/kinds/ray_aabb.h"
+#include "harness/kinds/ray_mesh.h"
+#include "harness/kinds/sphere_sphere.h"
+#include "harness/kinds/tri_aabb.h"
+#include "harness/kinds/tri_obb.h"
+#include "harness/kinds/tri_tri.h"
+
+/// X(name, Name) for every kind, one per line, in the order of QueryKind (which numbers the
+/// kinds in fuzz records: a new kind goes at the end). `name` is the kind's name in case files,
+/// on the command line and under corpora/; Name##Input is its input type.
+#define CC_FOR_EACH_QUERY_KIND(X)     \
+  X(ray_aabb, RayAabb)                \
+  X(sphere_sphere, SphereSphere)      \
+  X(aabb_aabb, AabbAabb)              \
+  X(kdop_kdop, KdopKdop)              \
+  X(obb_obb, ObbObb)                  \
+  X(tri_aabb, TriAabb)                \
+  X(tri_obb, TriObb)                  \
+  X(tri_tri, TriTri)                  \
+  X(mesh_mesh, MeshMesh)              \
+  X(mesh_mesh_first, MeshMeshFirst)   \
+  X(broadphase, Broadphase)           \
+  X(ray_mesh, RayMesh)                \
+  X(moving_obb, MovingObb)

@@ -1,0 +1,48 @@
+// What a party says about one query.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "harness/judging/band.h"
+
+namespace cc::harness {
+
+/// A pair of triangles of two meshes: (face of a, face of b).
+using FacePair = std::pair<std::uint32_t, std::uint32_t>;
+
+/// The answer to a query: whether the shapes meet, and for some kinds parameters of the contact
+/// (a ray's t interval, contact times), pairs (the colliding triangles of two meshes, sorted; a
+/// face a ray hits as (face, 0)) or the pairs of each frame (sorted, in `frames`; hit when some
+/// frame has one). Each kind's unit says what its answer holds (Query<In>::ask).
+struct Answer {
+  /// A hit or a miss, with nothing more.
+  static Answer of(bool hit) {
+    Answer a;
+    a.hit = hit;
+    return a;
+  }
+  bool hit = false;
+  std::vector<double> params;
+  std::vector<FacePair> pairs;
+  std::vector<std::vector<FacePair>> frames;
+  friend bool operator==(const Answer&, const Answer&) = default;
+};
+
+/// The answer of one party other than the library's own call (the library's other ways, a
+/// second opinion) to one query.
+struct Opinion {
+  enum class Status { answered, not_applicable, failed };
+  std::string party;  // e.g. "fcl.OBBd::overlap"
+  Status status = Status::not_applicable;
+  Answer answer;
+  std::string detail;  // why not applicable, or what failed
+  /// The party's band, declared with it (judging/party.h); case files do not store it, a party
+  /// of today gives it.
+  std::optional<Band> band = std::nullopt;
+};
+
+}  // namespace cc::harness

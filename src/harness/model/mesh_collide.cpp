@@ -1,0 +1,60 @@
+#include "harness/model/mesh_collide.h"
+
+#include <map>
+#include <tuple>
+
+namespace cc::harness {
+namespace {
+
+struct Entry {
+  std::weak_ptr<const Mesh> mesh;
+  std::shared_ptr<const void> bvh;
+};
+using Key = std::tuple<const Mesh*, std::string, BuildStrategy, SplitAxis, SplitPoint, int, bool>;
+
+std::map<Key, Entry>& cache() {
+  static std::map<Key, Entry> entries;
+  return entries;
+}
+
+}  // namespace
+
+template <class BV>
+std::shared_ptr<const Bvh<BV>> cached_bvh(const std::shared_ptr<const Mesh>& mesh, const BuildOptions& options) {
+  auto& entries = cache();
+  const Key key{mesh.get(),   BoundingVolume<BV>::name(), options.strategy,   options.axis,
+                options.point, options.leaf_size,         options.hull_points};
+  if (auto it = entries.find(key); it != entries.end()) {
+    if (it->second.mesh.lock() == mesh) return std::static_pointer_cast<const Bvh<BV>>(it->second.bvh);
+    entries.erase(it);  // a mesh that died, and another one now at its address
+  }
+  if (entries.size() > 256) std::erase_if(entries, [](const auto& e) { return e.second.mesh.expired(); });
+  auto bvh = std::make_shared<const Bvh<BV>>(build_bvh<BV>(*mesh, options));
+  entries[key] = {mesh, bvh};
+  return bvh;
+}
+
+BuildOptions build_options(const LibraryBvh& library) {
+  BuildOptions o = library.build;
+  o.hull_points = library.update == BvUpdate::exact;
+  return o;
+}
+
+CollisionResult library_collide(const MeshPair& m, CollisionMode mode) {
+  const CollideOptions options{mode, m.library.update, m.library.descent};
+  return with_bv_type(m.library.bv, [&]<class BV>() {
+    const auto a = cached_bvh<BV>(m.a.mesh, build_options(m.library));
+    const auto b = cached_bvh<BV>(m.b.mesh, build_options(m.library));
+    return collide(*a, m.pose_a, *b, m.pose_b, options);
+  });
+}
+
+RayMeshHit library_ray_mesh(const std::shared_ptr<const Mesh>& mesh, const LibraryBvh& library, const Ray& ray,
+                            bool any_hit) {
+  return with_bv_type(library.bv, [&]<class BV>() {
+    const auto bvh = cached_bvh<BV>(mesh, library.build);
+    return any_hit ? ray_mesh_any(*bvh, ray) : ray_mesh_closest(*bvh, ray);
+  });
+}
+
+}  // namespace cc::harness

@@ -1,0 +1,334 @@
+#include "harness/processes/campaign.h"
+
+#include <poll.h>
+#include <signal.h>
+#include <sys/mman.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <optional>
+#include <sstream>
+
+#include "harness/formats/case_file.h"
+#include "harness/generation/generate.h"
+#include "harness/judging/party.h"
+#include "harness/model/library.h"
+#include "harness/processes/child.h"
+
+namespace cc::harness {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+std::int64_t now_ns() {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(Clock::now().time_since_epoch()).count();
+}
+
+// What a worker is doing, in memory shared with the supervisor: enough to rebuild the case it
+// is on if it dies, and to tell which party it was in.
+enum Phase : int { idle = 0, in_library = 1, in_exact = 2, in_second_opinion = 3 };
+
+constexpr std::size_t kKinds = std::size(kAllQueryKinds);
+constexpr std::size_t kClasses = std::size(kAllClasses);
+
+struct Slot {
+  std::atomic<int> phase{idle};
+  std::atomic<int> kind{0};
+  std::atomic<std::uint64_t> case_index{0};
+  std::atomic<std::int64_t> started_ns{0};
+  std::atomic<bool> hung{false};                // set by the supervisor before it kills a worker that hangs
+  std::atomic<std::uint64_t> next[kKinds];      // next case number per kind
+  // The worker's tallies live here too, so that none is lost when it dies.
+  std::atomic<std::uint64_t> counts[kKinds][kClasses];
+  std::atomic<std::int64_t> busy_ns[kKinds];
+};
+
+std::string_view phase_name(int phase) {
+  switch (phase) {
+    case in_library: return "the library";
+    case in_exact: return "the exact reference";
+    case in_second_opinion: return "the second opinion (FCL/libccd)";
+  }
+  return "between cases";
+}
+
+volatile sig_atomic_t g_stop = 0;
+void on_interrupt(int) { g_stop = 1; }
+
+void write_line(int fd, const std::string& line) { write_all(fd, line + "\n"); }
+
+std::string format_seconds(double s) {
+  std::ostringstream out;
+  out << s << " s";
+  return out.str();
+}
+
+bool is_finding(CaseClass c) {
+  return c == CaseClass::impl_bug || c == CaseClass::oracle_defect || c == CaseClass::oracle_crash ||
+         c == CaseClass::undecided;
+}
+
+// A worker's exit status when it stops early because its second opinion abandoned a call (see
+// SecondOpinion::abandoned_calls): it is replaced, and nothing is recorded against its last case.
+constexpr int kRetired = 3;
+
+// The worker: runs cases until the deadline, reporting tallies and findings on `out`.
+[[noreturn]] void run_worker(int worker, const CampaignOptions& options, const Oracles& oracles, Slot& slot, int out,
+                             std::int64_t deadline_ns) {
+  signal(SIGINT, on_interrupt);
+  const auto exact = oracles.exact();
+  const auto second = oracles.second();
+  const int abandoned_before = second->abandoned_calls();  // inherited: a fresh worker cannot undo it
+  while (!g_stop && now_ns() < deadline_ns) {
+    // Equal time for every kind: the one this worker has spent least time on goes next.
+    QueryKind kind = options.kinds.front();
+    for (QueryKind k : options.kinds) {
+      if (slot.busy_ns[static_cast<std::size_t>(k)] < slot.busy_ns[static_cast<std::size_t>(kind)]) kind = k;
+    }
+    const auto kind_number = static_cast<std::size_t>(kind);
+    const std::uint64_t n = slot.next[kind_number].fetch_add(1);
+    const std::uint64_t index = static_cast<std::uint64_t>(worker) + static_cast<std::uint64_t>(options.workers) * n;
+    const std::int64_t start = now_ns();
+    slot.kind = static_cast<int>(kind);
+    slot.case_index = index;
+    slot.started_ns = start;
+    const Input input = campaign_case(options.seed, kind, index, options.out_of_contract_percent, options.mesh_folder);
+
+    Evaluation e;
+    slot.phase = in_library;
+    e.library = ask_library(input);
+    e.opinions = library_alternatives(input);
+    slot.phase = in_exact;
+    e.exact = exact->judge(input);
+    slot.phase = in_second_opinion;
+    for (Opinion& o : second->opinions(input)) e.opinions.push_back(std::move(o));
+    slot.phase = idle;
+    e.verdict = classify(kind, e.library, e.exact, e.opinions);
+
+    const std::int64_t elapsed = now_ns() - start;
+    slot.busy_ns[kind_number] += elapsed;
+    slot.counts[kind_number][static_cast<std::size_t>(e.verdict.cls)] += 1;
+    if (is_finding(e.verdict.cls)) {  // with the opinions, as case files store them (exactly)
+      write_line(out, "F " + std::to_string(static_cast<int>(kind)) + " " + std::to_string(index) + " " +
+                          opinions_to_json(e.opinions).dump());
+    }
+    if (second->abandoned_calls() > abandoned_before) {  // later cases must not pay for it
+      ::close(out);
+      std::_Exit(kRetired);
+    }
+  }
+  ::close(out);
+  std::_Exit(0);
+}
+
+struct Worker {
+  pid_t pid = -1;
+  int fd = -1;
+  std::string buffer;
+};
+
+}  // namespace
+
+Input campaign_case(std::uint64_t seed, QueryKind kind, std::uint64_t case_index, int out_of_contract_percent,
+                    const std::filesystem::path& mesh_folder) {
+  RandomChoices choices(mix_seed(mix_seed(seed, static_cast<std::uint64_t>(kind)), case_index));
+  GenerateOptions options;
+  options.mesh_folder = mesh_folder;
+  options.out_of_contract = choices.chance(out_of_contract_percent);
+  return generate(kind, choices, options);
+}
+
+double cases_per_second(const KindTally& tally, int workers) {
+  if (tally.busy_seconds <= 0) return 0;
+  return static_cast<double>(tally.cases) / (tally.busy_seconds / workers);
+}
+
+CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracles) {
+  CampaignResult result;
+  result.seed = options.seed;
+  result.workers = options.workers;
+
+  auto* slots = static_cast<Slot*>(
+      mmap(nullptr, sizeof(Slot) * static_cast<std::size_t>(options.workers), PROT_READ | PROT_WRITE,
+           MAP_SHARED | MAP_ANONYMOUS, -1, 0));
+  if (slots == MAP_FAILED) throw std::runtime_error("campaign: cannot map shared memory");
+  for (int w = 0; w < options.workers; ++w) new (&slots[w]) Slot();
+
+  g_stop = 0;
+  struct sigaction previous {};
+  struct sigaction action {};
+  action.sa_handler = on_interrupt;
+  sigaction(SIGINT, &action, &previous);
+
+  const std::int64_t start_ns = now_ns();
+  const std::int64_t deadline_ns = start_ns + static_cast<std::int64_t>(options.seconds * 1e9);
+  std::vector<Worker> workers(static_cast<std::size_t>(options.workers));
+  const auto spawn = [&](int w) {
+    const Child child = start_child([&](int out) -> int { run_worker(w, options, oracles, slots[w], out, deadline_ns); });
+    workers[static_cast<std::size_t>(w)] = {child.pid, child.out, ""};
+  };
+  for (int w = 0; w < options.workers; ++w) spawn(w);
+
+  const auto exact = oracles.exact();
+  const auto second = oracles.second();
+  std::map<QueryKind, KindTally> crashed;  // cases on which a worker died
+  const auto record_finding = [&](QueryKind kind, std::uint64_t index, const std::string& crash, int phase,
+                                  const std::optional<std::vector<Opinion>>& opinions) {
+    Finding f;
+    f.kind = kind;
+    f.case_index = index;
+    f.input = campaign_case(options.seed, kind, index, options.out_of_contract_percent, options.mesh_folder);
+    f.crash = crash;
+    if (crash.empty() && opinions) {  // it returned in the worker, which sent the opinions it got
+      f.evaluation.library = ask_library(f.input);
+      f.evaluation.exact = exact->judge(f.input);
+      f.evaluation.opinions = *opinions;
+      f.evaluation.verdict = classify(kind, f.evaluation.library, f.evaluation.exact, f.evaluation.opinions);
+    } else if (crash.empty()) {  // (opinions that did not parse) the same again, first in a child
+      if (auto e = evaluate_in_child(f.input, *exact, *second)) {
+        f.evaluation = std::move(*e);
+      } else {
+        f.crash = "the second opinion (FCL/libccd) failed when asked again in a child process";
+        phase = in_second_opinion;
+      }
+    }
+    if (!f.crash.empty()) {
+      // Rebuild what can be rebuilt without the party that died.
+      if (phase != in_library) f.evaluation.library = ask_library(f.input);
+      if (phase != in_exact && phase != in_library) f.evaluation.exact = exact->judge(f.input);
+      if (phase == in_second_opinion) {
+        for (const PartyBand& party : second->parties(kind)) {
+          Opinion o = failed(f.crash);
+          o.party = party.party;
+          o.band = party.band;
+          f.evaluation.opinions.push_back(std::move(o));
+        }
+        f.evaluation.verdict = classify(kind, f.evaluation.library, f.evaluation.exact, f.evaluation.opinions);
+        if (f.evaluation.verdict.cls != CaseClass::impl_bug) f.evaluation.verdict.cls = CaseClass::oracle_crash;
+      } else {
+        f.evaluation.verdict.cls = phase == in_library ? CaseClass::impl_bug : CaseClass::undecided;
+        f.evaluation.verdict.parties = {{"library", phase == in_library ? Standing::wrong : Standing::not_applicable, f.crash}};
+      }
+    }
+    if (!crash.empty()) {
+      KindTally& t = crashed[kind];
+      t.cases += 1;
+      t.by_class[static_cast<std::size_t>(f.evaluation.verdict.cls)] += 1;
+    }
+    result.findings.push_back(std::move(f));
+  };
+  const auto handle_line = [&](const std::string& line) {  // "F <kind> <case index> <opinions>"
+    std::istringstream in(line);
+    char tag = 0;
+    int kind_number = 0;
+    std::uint64_t index = 0;
+    in >> tag >> kind_number >> index;
+    if (tag != 'F' || !in) return;
+    std::optional<std::vector<Opinion>> opinions;
+    try {
+      std::string rest;
+      std::getline(in, rest);
+      opinions = opinions_from_json(Json::parse(rest), "");
+      restore_bands(*opinions, *second, static_cast<QueryKind>(kind_number));
+    } catch (const std::exception&) {
+    }
+    record_finding(static_cast<QueryKind>(kind_number), index, "", idle, opinions);
+  };
+  // The tallies: the workers' shared counters plus the cases they died on.
+  const auto tallies = [&] {
+    std::map<QueryKind, KindTally> all = crashed;
+    for (QueryKind kind : options.kinds) {
+      const auto k = static_cast<std::size_t>(kind);
+      KindTally& t = all[kind];
+      for (int w = 0; w < options.workers; ++w) {
+        for (std::size_t c = 0; c < kClasses; ++c) {
+          const std::uint64_t n = slots[w].counts[k][c];
+          t.by_class[c] += n;
+          t.cases += n;
+        }
+        t.busy_seconds += static_cast<double>(slots[w].busy_ns[k].load()) * 1e-9;
+      }
+    }
+    return all;
+  };
+
+  std::int64_t last_progress = 0;
+  std::size_t alive = workers.size();
+  while (alive > 0) {
+    std::vector<pollfd> fds;
+    for (const Worker& w : workers) fds.push_back({w.fd, POLLIN, 0});
+    poll(fds.data(), fds.size(), 100);
+    for (std::size_t i = 0; i < workers.size(); ++i) {
+      Worker& w = workers[i];
+      if (w.fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP))) continue;
+      char chunk[4096];
+      const ssize_t n = ::read(w.fd, chunk, sizeof chunk);
+      if (n > 0) {
+        w.buffer.append(chunk, static_cast<std::size_t>(n));
+        std::size_t eol;
+        while ((eol = w.buffer.find('\n')) != std::string::npos) {
+          handle_line(w.buffer.substr(0, eol));
+          w.buffer.erase(0, eol + 1);
+        }
+        continue;
+      }
+      // End of the pipe: the worker finished or died.
+      ::close(w.fd);
+      w.fd = -1;
+      const ChildEnd end = wait_child(w.pid);
+      Slot& slot = slots[i];
+      const bool retired = end.status == kRetired;
+      const bool died = !end.succeeded() && !retired;
+      if (retired && !g_stop && now_ns() < deadline_ns) {
+        spawn(static_cast<int>(i));
+        continue;
+      }
+      if (died) {
+        std::string what = end.what();
+        if (slot.hung) what = "hung for more than " + format_seconds(options.case_timeout_seconds);
+        const int phase = slot.phase;
+        record_finding(static_cast<QueryKind>(slot.kind.load()), slot.case_index,
+                       what + " in " + std::string(phase_name(phase)), phase, std::nullopt);
+        slot.phase = idle;
+        slot.hung = false;
+        if (!g_stop && now_ns() < deadline_ns) {
+          spawn(static_cast<int>(i));  // the slot's counters skip the case it died on
+          continue;
+        }
+      }
+      --alive;
+    }
+    // Hangs: a case that has run too long is killed; the worker is then reaped above.
+    for (std::size_t i = 0; i < workers.size(); ++i) {
+      Slot& slot = slots[i];
+      const int phase = slot.phase;
+      if (workers[i].fd >= 0 && phase > idle && !slot.hung &&
+          now_ns() - slot.started_ns > static_cast<std::int64_t>(options.case_timeout_seconds * 1e9)) {
+        slot.hung = true;
+        kill(workers[i].pid, SIGKILL);
+      }
+    }
+    const std::int64_t now = now_ns();
+    if (options.progress && now - last_progress >= 1'000'000'000) {
+      last_progress = now;
+      std::uint64_t cases = 0, bugs = 0;
+      for (const auto& [kind, t] : tallies()) cases += t.cases, bugs += t.count(CaseClass::impl_bug);
+      std::ostringstream line;
+      line << "[" << static_cast<int>(static_cast<double>(now - start_ns) * 1e-9) << "/"
+           << static_cast<int>(options.seconds) << " s] " << cases << " cases, " << bugs << " impl_bug, "
+           << result.findings.size() << " findings";
+      options.progress(line.str());
+    }
+  }
+  result.seconds = static_cast<double>(now_ns() - start_ns) * 1e-9;
+  result.tallies = tallies();
+  result.interrupted = g_stop != 0;
+  sigaction(SIGINT, &previous, nullptr);
+  munmap(slots, sizeof(Slot) * static_cast<std::size_t>(options.workers));
+  return result;
+}
+
+}  // namespace cc::harness

@@ -1,0 +1,61 @@
+#include "harness/judging/bands.h"
+
+#include <gtest/gtest.h>
+
+#include "harness/processes/campaign.h"
+#include "oracle/fcl/fcl_oracle.h"
+
+namespace cc::harness {
+namespace {
+
+// Each party's band comes with its opinions: the one its oracle declares for it, said why.
+TEST(Bands, EverySecondOpinionCarriesItsPartysBand) {
+  const fcl_oracle::FclSecondOpinion fcl;
+  for (QueryKind kind : kAllQueryKinds) {
+    const std::vector<PartyBand> parties = fcl.parties(kind);
+    for (const PartyBand& p : parties) EXPECT_FALSE(p.band.why.empty()) << p.party;
+    const Input in = campaign_case(1, kind, 0, 0);
+    const std::vector<Opinion> opinions = fcl.opinions(in);
+    ASSERT_EQ(opinions.size(), parties.size()) << name(kind);
+    for (std::size_t i = 0; i < parties.size(); ++i) {
+      EXPECT_EQ(opinions[i].party, parties[i].party);
+      ASSERT_TRUE(opinions[i].band.has_value()) << parties[i].party;
+      EXPECT_EQ(opinions[i].band->width, parties[i].band.width) << parties[i].party;
+      EXPECT_EQ(opinions[i].band->sides, parties[i].band.sides) << parties[i].party;
+    }
+  }
+}
+
+// Primitive tests round outward; a mesh query moves one mesh into the other's frame in
+// floating point first, which can part touching triangles, so its band is two-sided.
+TEST(Bands, TheLibraryIsExactOrConservativeOnPrimitives) {
+  for (QueryKind kind : kAllQueryKinds) {
+    const Band b = library_band(kind);
+    const bool two_meshes = kind == QueryKind::mesh_mesh || kind == QueryKind::mesh_mesh_first;
+    EXPECT_EQ(b.sides == BandSides::two_sided, two_meshes) << name(kind);
+    EXPECT_LE(b.width, 0x1p-40) << name(kind);
+    EXPECT_FALSE(b.why.empty());
+  }
+  EXPECT_EQ(library_band(QueryKind::aabb_aabb).sides, BandSides::exact);
+}
+
+TEST(WithinBand, ConservativeToleratesOnlyANearHit) {
+  const Band b{0x1p-40, BandSides::conservative, 0, ""};
+  EXPECT_TRUE(within_band(b, true, -0x1p-41));   // says hit, apart by less than the width
+  EXPECT_TRUE(within_band(b, true, -0.0));
+  EXPECT_FALSE(within_band(b, true, -0x1p-39));  // apart by more
+  EXPECT_FALSE(within_band(b, false, 0x1p-50));  // a miss for touching shapes: never
+  EXPECT_FALSE(within_band(b, false, 0));
+}
+
+TEST(WithinBand, TwoSidedAndExact) {
+  const Band two{0x1p-20, BandSides::two_sided, 0, ""};
+  EXPECT_TRUE(within_band(two, false, 0x1p-21));
+  EXPECT_TRUE(within_band(two, true, -0x1p-21));
+  EXPECT_FALSE(within_band(two, false, 0x1p-19));
+  EXPECT_FALSE(within_band(two, true, NAN));
+  EXPECT_FALSE(within_band({0, BandSides::exact, 0, ""}, true, -0.0));
+}
+
+}  // namespace
+}  // namespace cc::harness

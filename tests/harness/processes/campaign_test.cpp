@@ -1,0 +1,153 @@
+// The campaign's supervision: a second opinion that crashes or hangs on some cases costs the
+// campaign a worker, not the run; each such case is recorded as a finding and can be rebuilt. A
+// worker whose second opinion abandoned a call is replaced before its next case, and a finding's
+// second opinions are those its worker got, never asked in the campaign's own process.
+#include "harness/processes/campaign.h"
+
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <csignal>
+#include <functional>
+
+#include "harness/formats/input_json.h"
+#include "harness/model/library.h"
+#include "oracle/exact/exact_reference.h"
+
+namespace cc::harness {
+namespace {
+
+std::size_t fingerprint(const Input& in) { return std::hash<std::string>{}(input_to_json(in).dump()); }
+bool crashes_on(const Input& in) { return fingerprint(in) % 3001 == 0; }
+bool hangs_on(const Input& in) { return fingerprint(in) % 4999 == 7; }
+
+// An aabb_aabb campaign on two workers, against the exact reference and `second`.
+template <class Second, class... Args>
+CampaignResult aabb_campaign(CampaignOptions options, Args... args) {
+  options.kinds = {QueryKind::aabb_aabb};
+  options.workers = 2;
+  const Oracles oracles{[] { return std::make_unique<exact::ExactRationalReference>(); },
+                        [=] { return std::make_unique<Second>(args...); }};
+  return run_campaign(options, oracles);
+}
+
+// The fake second opinions' party's band (exact, as the real fcl.AABBd::overlap's).
+constexpr Band kBand{0, BandSides::exact, 0, "comparisons of inputs only: exact"};
+
+// Answers like FCL's AABB test, but crashes or hangs on a few inputs.
+class Unreliable final : public SecondOpinion {
+ public:
+  std::vector<Opinion> opinions(const Input& in) const override {
+    if (crashes_on(in)) std::raise(SIGSEGV);
+    while (hangs_on(in)) pause();
+    return {{"fcl.AABBd::overlap", Opinion::Status::answered, ask_library(in), "", kBand}};
+  }
+  std::vector<PartyBand> parties(QueryKind) const override { return {{"fcl.AABBd::overlap", kBand}}; }
+};
+
+TEST(Campaign, SurvivesCrashesAndHangsInAnOracle) {
+  CampaignOptions options;
+  options.seconds = 3;
+  options.seed = 5;
+  options.case_timeout_seconds = 0.3;
+  const CampaignResult r = aabb_campaign<Unreliable>(options);
+
+  int crashes = 0, hangs = 0;
+  for (const Finding& f : r.findings) {
+    ASSERT_FALSE(f.crash.empty()) << "the library and the exact reference agree here";
+    EXPECT_EQ(f.evaluation.verdict.cls, CaseClass::oracle_crash);
+    // The finding's input is the case the worker was on.
+    EXPECT_EQ(input_to_json(f.input).dump(),
+              input_to_json(campaign_case(options.seed, f.kind, f.case_index, options.out_of_contract_percent)).dump());
+    if (f.crash.find("hung") != std::string::npos) {
+      ++hangs;
+      EXPECT_TRUE(hangs_on(f.input)) << f.crash;
+    } else {
+      ++crashes;
+      EXPECT_TRUE(crashes_on(f.input)) << f.crash;
+    }
+  }
+  EXPECT_GT(crashes, 0);
+  EXPECT_GT(hangs, 0);
+  const KindTally& t = r.tallies.at(QueryKind::aabb_aabb);
+  EXPECT_GT(t.cases, 10000u);
+  EXPECT_EQ(t.count(CaseClass::oracle_crash), static_cast<std::uint64_t>(crashes + hangs));
+  EXPECT_EQ(t.count(CaseClass::impl_bug), 0u);
+}
+
+bool abandoned_on(const Input& in) { return fingerprint(in) % 997 == 3; }
+
+// Answers like FCL's AABB test, but on a few inputs a call is abandoned (a failed opinion), after
+// which every answer of the same process is wrong, as a damaged heap could make it.
+class DamagedAfterAbandoning final : public SecondOpinion {
+ public:
+  std::vector<Opinion> opinions(const Input& in) const override {
+    if (abandoned_on(in)) {
+      ++abandoned_;
+      return {{"fcl.AABBd::overlap", Opinion::Status::failed, {}, "did not return within the time limit", kBand}};
+    }
+    Answer a = ask_library(in);
+    if (abandoned_ > 0) a.hit = !a.hit;
+    return {{"fcl.AABBd::overlap", Opinion::Status::answered, a, "", kBand}};
+  }
+  std::vector<PartyBand> parties(QueryKind) const override { return {{"fcl.AABBd::overlap", kBand}}; }
+  int abandoned_calls() const override { return abandoned_; }
+
+ private:
+  mutable int abandoned_ = 0;
+};
+
+TEST(Campaign, ReplacesAWorkerAfterAnAbandonedCall) {
+  CampaignOptions options;
+  options.seconds = 2;
+  options.seed = 9;
+  options.out_of_contract_percent = 0;
+  const CampaignResult r = aabb_campaign<DamagedAfterAbandoning>(options);
+  // Only the abandoned cases are findings: no case ran in a worker after its abandoned call.
+  int abandoned = 0;
+  for (const Finding& f : r.findings) {
+    EXPECT_TRUE(f.crash.empty()) << f.crash;
+    EXPECT_TRUE(abandoned_on(f.input)) << "case " << f.case_index << " ran in a damaged worker";
+    abandoned += abandoned_on(f.input);
+  }
+  EXPECT_GT(abandoned, 1);  // so workers were replaced and the campaign went on
+  EXPECT_GT(r.tallies.at(QueryKind::aabb_aabb).cases, 5000u);
+}
+
+bool disagrees_on(const Input& in) { return fingerprint(in) % 499 == 5; }
+
+// Disagrees with the library on a few inputs, and crashes whenever it is asked in the process
+// that runs the campaign (the test's own).
+class CrashesInTheCampaignProcess final : public SecondOpinion {
+ public:
+  explicit CrashesInTheCampaignProcess(pid_t campaign) : campaign_(campaign) {}
+  std::vector<Opinion> opinions(const Input& in) const override {
+    if (::getpid() == campaign_) std::raise(SIGSEGV);
+    Answer a = ask_library(in);
+    if (disagrees_on(in)) a.hit = !a.hit;
+    return {{"fcl.AABBd::overlap", Opinion::Status::answered, a, "", kBand}};
+  }
+  std::vector<PartyBand> parties(QueryKind) const override { return {{"fcl.AABBd::overlap", kBand}}; }
+
+ private:
+  pid_t campaign_;
+};
+
+TEST(Campaign, TakesAFindingsSecondOpinionsFromItsWorkerNeverAsksThemItself) {
+  CampaignOptions options;
+  options.seconds = 1;
+  options.seed = 11;
+  options.out_of_contract_percent = 0;
+  const CampaignResult r = aabb_campaign<CrashesInTheCampaignProcess>(options, ::getpid());
+  ASSERT_GT(r.findings.size(), 0u);
+  for (const Finding& f : r.findings) {
+    EXPECT_TRUE(f.crash.empty()) << f.crash;
+    EXPECT_TRUE(disagrees_on(f.input));
+    EXPECT_EQ(f.evaluation.verdict.cls, CaseClass::oracle_defect);
+    ASSERT_EQ(f.evaluation.opinions.size(), 1u);
+    EXPECT_NE(f.evaluation.opinions[0].answer.hit, f.evaluation.library.hit);  // as the worker's answered
+  }
+}
+
+}  // namespace
+}  // namespace cc::harness

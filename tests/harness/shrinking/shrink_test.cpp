@@ -1,0 +1,202 @@
+#include "harness/shrinking/shrink.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+
+#include "harness/generation/generate.h"
+#include "harness/formats/input_json.h"
+#include "harness/model/library.h"
+#include "harness/model/mesh_query.h"
+#include "harness/shrinking/shrink_faces.h"
+#include "oracle/exact/exact_reference.h"
+#include "oracle/fcl/fcl_oracle.h"
+
+namespace cc::harness {
+namespace {
+
+// What a second-opinion party said, with its band as oracle/fcl declares it.
+Opinion fcl_said(QueryKind kind, const std::string& party, Answer answer) {
+  for (const PartyBand& p : fcl_oracle::FclSecondOpinion().parties(kind)) {
+    if (p.party == party) return {party, Opinion::Status::answered, std::move(answer), "", p.band};
+  }
+  throw std::out_of_range("oracle/fcl declares no party " + party);
+}
+
+TEST(Complexity, OrdersZeroIntegersHalvesThenMantissaBits) {
+  EXPECT_LT(complexity(0.0), complexity(-0.0));
+  EXPECT_LT(complexity(-0.0), complexity(1.0));
+  EXPECT_LT(complexity(1.0), complexity(-1.0));
+  EXPECT_LT(complexity(2.0), complexity(3.0));
+  EXPECT_LT(complexity(1000.0), complexity(0.5));
+  EXPECT_LT(complexity(0.5), complexity(0.1));
+  EXPECT_LT(complexity(0.75), complexity(0.1));
+  EXPECT_LT(complexity(0x1p30), complexity(0.1));
+  EXPECT_LT(complexity(0.1), complexity(NAN));
+}
+
+TEST(ComplexValues, CountsWhatIsNotASmallIntegerOrAHalf) {
+  EXPECT_EQ(complex_values(SphereSphereInput{{{0, 1, -2}, 0.5}, {{1024, 0.25, 0.1}, 1e9}}), 3);
+}
+
+// An evaluation that only the exact reference and the library make, with a planted
+// disagreement: a "second opinion" that says hit whenever the spheres' radii sum above 1.
+Evaluation planted(const Input& in) {
+  static const exact::ExactRationalReference exact;
+  Evaluation e;
+  e.library = ask_library(in);
+  e.exact = exact.judge(in);
+  const auto& s = std::get<SphereSphereInput>(in);
+  e.opinions = {fcl_said(QueryKind::sphere_sphere, "fcl.collide(Sphere,Sphere)", {s.a.radius + s.b.radius > 1, {}, {}, {}})};
+  e.verdict = classify(QueryKind::sphere_sphere, e.library, e.exact, e.opinions);
+  return e;
+}
+
+TEST(Shrink, KeepsTheDisagreementAndSimplifiesTheValues) {
+  const Input start = SphereSphereInput{{{0.1234567, -7.5e3, 3.3}, 0.9876}, {{11.11, 0.2, 9.87e5}, 0.33}};
+  const Evaluation e = planted(start);
+  ASSERT_EQ(e.verdict.cls, CaseClass::oracle_defect);  // apart, but the planted party says hit
+  const ShrinkResult r = shrink(start, e, planted);
+  EXPECT_EQ(r.evaluation.verdict.cls, CaseClass::oracle_defect);
+  EXPECT_EQ(complex_values(r.input), 0);
+  const auto& s = std::get<SphereSphereInput>(r.input);
+  EXPECT_GT(s.a.radius + s.b.radius, 1);  // still the planted disagreement
+  EXPECT_LE(r.attempts, 4000);
+}
+
+// Keeping the signature, part by part: the planted evaluations below differ from the start's in
+// one part of the signature only (the class, the exact answer, a party's standing, what it said,
+// a party that was right), and only on about half of the candidates (by a hash of their inputs),
+// so the shrinker can make progress on the others. It must reject every candidate that changes
+// the part: the result keeps every part, compared part by part (not through signature_of).
+enum class Part { cls, exact_hit, library_standing, library_said, party_standing, party_said, right_party };
+
+Evaluation base_evaluation() {
+  Evaluation e;
+  e.library = {true, {}, {}, {}};
+  e.exact.answer = {true, {}, {}, {}};
+  e.exact.margin = 0x1p-45;
+  e.opinions = {fcl_said(QueryKind::obb_obb, "fcl.OBBd::overlap", {false, {}, {}, {}}),
+                fcl_said(QueryKind::obb_obb, "fcl.collide(Box,Box)", {true, {}, {}, {}})};
+  e.verdict.cls = CaseClass::oracle_defect;
+  e.verdict.parties = {{"library", Standing::within_band, ""},
+                       {"fcl.OBBd::overlap", Standing::wrong, ""},
+                       {"fcl.collide(Box,Box)", Standing::right, ""}};
+  return e;
+}
+
+void change(Evaluation& e, Part part) {
+  switch (part) {
+    case Part::cls: e.verdict.cls = CaseClass::boundary; break;
+    case Part::exact_hit: e.exact.answer.hit = false; break;
+    case Part::library_standing: e.verdict.parties[0].standing = Standing::wrong; break;
+    case Part::library_said: e.library.hit = false; break;
+    case Part::party_standing: e.verdict.parties[1].standing = Standing::within_band; break;
+    case Part::party_said: e.opinions[0].answer.hit = true; break;
+    case Part::right_party: e.verdict.parties[2].standing = Standing::wrong; break;
+  }
+}
+
+// Every part of the signature, written out here.
+std::vector<std::string> parts_of(const Evaluation& e) {
+  std::vector<std::string> out = {std::string(to_string(e.verdict.cls)), e.exact.answer.hit ? "exact hit" : "exact miss",
+                                  e.library.hit ? "library hit" : "library miss"};
+  for (std::size_t i = 0; i < e.verdict.parties.size(); ++i) {
+    out.push_back(e.verdict.parties[i].party + " " + std::string(to_string(e.verdict.parties[i].standing)));
+    if (i > 0) out.push_back(e.verdict.parties[i].party + (e.opinions[i - 1].answer.hit ? " hit" : " miss"));
+  }
+  return out;
+}
+
+TEST(Shrink, KeepsEveryPartOfTheSignature) {
+  const Part parts[] = {Part::cls,           Part::exact_hit,      Part::library_standing, Part::library_said,
+                        Part::party_standing, Part::party_said,    Part::right_party};
+  for (QueryKind kind : {QueryKind::sphere_sphere, QueryKind::obb_obb, QueryKind::ray_aabb}) {
+    for (Part part : parts) {
+      for (std::uint64_t seed = 0; seed < 3; ++seed) {
+        RandomChoices choices(seed * 7 + 1);
+        const Input start = generate(kind, choices);
+        int changed = 0;
+        const Evaluator planted = [&](const Input& in) {
+          Evaluation e = base_evaluation();
+          if (std::hash<std::string>{}(input_to_json(in).dump()) % 2 == 0 && !(in == start)) {
+            change(e, part);
+            ++changed;
+          }
+          return e;
+        };
+        const ShrinkResult r = shrink(start, base_evaluation(), planted, 300, 20);
+        const std::string what = std::string(name(kind)) + " part " + std::to_string(static_cast<int>(part)) +
+                                 " seed " + std::to_string(seed);
+        EXPECT_EQ(parts_of(r.evaluation), parts_of(base_evaluation())) << what;
+        EXPECT_GT(changed, 0) << what << ": no candidate changed the part";
+        EXPECT_GT(r.accepted, 0) << what << ": no candidate was kept";
+      }
+    }
+  }
+}
+
+TEST(Shrink, RespectsTheAttemptBudget) {
+  const Input start = SphereSphereInput{{{0.1234567, -7.5e3, 3.3}, 0.9876}, {{11.11, 0.2, 9.87e5}, 0.33}};
+  EXPECT_LE(shrink(start, planted(start), planted, 5).attempts, 5);
+}
+
+// A planted mesh disagreement: a "second opinion" that lists the exact pairs except those whose
+// triangle of mesh a has a vertex above z = 0.25.
+Evaluation planted_meshes(const Input& in) {
+  static const exact::ExactRationalReference exact;
+  Evaluation e;
+  e.library = ask_library(in);
+  e.exact = exact.judge(in);
+  const MeshPair& m = *meshes_of(in);
+  Answer said;
+  for (const FacePair& p : e.exact.answer.pairs) {
+    bool high = false;
+    for (const Vec3& v : m.a.mesh->triangle(p.first).v) high = high || apply(m.pose_a, v).z > 0.25;
+    if (!high) said.pairs.push_back(p);
+  }
+  said.hit = !said.pairs.empty();
+  e.opinions = {fcl_said(QueryKind::mesh_mesh, "fcl.BVHModel<OBBd>", said)};
+  e.verdict = classify(kind_of(in), e.library, e.exact, e.opinions);
+  return e;
+}
+
+Input sphere_through_torus() {
+  MeshPair m;
+  m.a = procedural_mesh({ProceduralMesh::Shape::sphere, 3, 8, 1.0});
+  m.b = procedural_mesh({ProceduralMesh::Shape::torus, 5, 8, 1.0});
+  m.pose_b.translation = {0.7, 0.1, 0.3};
+  return MeshMeshInput{m};
+}
+
+TEST(ShrinkFaces, DisputedFacesAreThoseOfPairsAPartyListsDifferently) {
+  const Input in = sphere_through_torus();
+  const Evaluation e = planted_meshes(in);
+  ASSERT_EQ(e.verdict.cls, CaseClass::oracle_defect);
+  const MeshPair& m = *meshes_of(in);
+  const std::vector<std::uint32_t> a = disputed_faces(e, false, false);
+  ASSERT_FALSE(a.empty());
+  EXPECT_LT(a.size(), m.a.mesh->size());
+  for (std::uint32_t f : a) {
+    double top = -INFINITY;
+    for (const Vec3& v : m.a.mesh->triangle(f).v) top = std::max(top, v.z);
+    EXPECT_GT(top, 0.25) << "face " << f << " is not one the planted party drops";
+  }
+}
+
+TEST(Shrink, AMeshCaseLosesFacesAndKeepsItsDisagreement) {
+  const Input start = sphere_through_torus();
+  const Evaluation e = planted_meshes(start);
+  ASSERT_EQ(e.verdict.cls, CaseClass::oracle_defect);
+  const ShrinkResult r = shrink(start, e, planted_meshes, 1500, 60);
+  EXPECT_EQ(r.evaluation.verdict.cls, CaseClass::oracle_defect);
+  const MeshPair& m = *meshes_of(r.input);
+  EXPECT_EQ(m.a.source, MeshRef::Source::triangles);
+  // Two pairs are the least: one the party drops, one it lists (the signature has it say hit).
+  EXPECT_LE(m.a.mesh->size(), 2u);
+  EXPECT_LE(m.b.mesh->size(), 2u);
+  EXPECT_LT(complex_values(r.input), complex_values(start));
+}
+
+}  // namespace
+}  // namespace cc::harness
