@@ -1,4 +1,4 @@
-// Case files: one JSON text file per case (DESIGN.md, "Case files"). A case file holds the query
+// Case files: one JSON text file per case. A case file holds the query
 // kind, its inputs with exact round-trip numbers, the three parties' answers, the class and the
 // margin, where the case came from, and a one-line note by whoever triaged it. Files are named
 // by a hash of the query and its inputs, so a case is stored once and never overwritten.

@@ -1,4 +1,4 @@
-// How a case is classified from the three answers (DESIGN.md, "The three parties").
+// How a case is classified from the three answers.
 #pragma once
 
 #include <optional>

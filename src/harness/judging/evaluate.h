@@ -24,10 +24,11 @@ Evaluation evaluate(const Input& input, const ExactReference& exact, const Secon
 /// again here. A party that crashes, or is cut short by a jump out of its code (see
 /// SecondOpinion::abandoned_calls), thus neither ends nor damages the caller. Nothing when the
 /// child did not answer.
-/// Opinions read back as text (from a child process, a worker) carry no band: gives each
-/// second-opinion party its band as `second` declares it for the kind.
-void restore_bands(std::vector<Opinion>& opinions, const SecondOpinion& second, QueryKind kind);
-
 std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactReference& exact, const SecondOpinion& second);
+
+/// Opinions read back as text (from a child process, a worker) carry no band: gives each
+/// second-opinion party its band as `second` declares it for the kind (a party it does not
+/// declare keeps none, which classify refuses).
+void restore_bands(std::vector<Opinion>& opinions, const SecondOpinion& second, QueryKind kind);
 
 }  // namespace cc::harness

@@ -1,4 +1,4 @@
-// Minimising a case at the level of values (DESIGN.md, "Minimising"): every number moves toward
+// Minimising a case at the level of values: every number moves toward
 // 0, then small integers, then halves, then fewer mantissa bits, and k-DOP point sets lose
 // points, as long as the case keeps its signature (kind, class, and who disagrees how).
 #pragma once

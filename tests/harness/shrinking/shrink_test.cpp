@@ -2,9 +2,8 @@
 
 #include <gtest/gtest.h>
 
-#include <stdexcept>
-
 #include "harness/generation/generate.h"
+#include "harness/judging/evaluate.h"
 #include "harness/formats/input_json.h"
 #include "harness/model/library.h"
 #include "harness/model/mesh_query.h"
@@ -14,14 +13,6 @@
 
 namespace cc::harness {
 namespace {
-
-// What a second-opinion party said, with its band as oracle/fcl declares it.
-Opinion fcl_said(QueryKind kind, const std::string& party, Answer answer) {
-  for (const PartyBand& p : fcl_oracle::FclSecondOpinion().parties(kind)) {
-    if (p.party == party) return {party, Opinion::Status::answered, std::move(answer), "", p.band};
-  }
-  throw std::out_of_range("oracle/fcl declares no party " + party);
-}
 
 TEST(Complexity, OrdersZeroIntegersHalvesThenMantissaBits) {
   EXPECT_LT(complexity(0.0), complexity(-0.0));
@@ -47,7 +38,8 @@ Evaluation planted(const Input& in) {
   e.library = ask_library(in);
   e.exact = exact.judge(in);
   const auto& s = std::get<SphereSphereInput>(in);
-  e.opinions = {fcl_said(QueryKind::sphere_sphere, "fcl.collide(Sphere,Sphere)", {s.a.radius + s.b.radius > 1, {}, {}, {}})};
+  e.opinions = {{"fcl.collide(Sphere,Sphere)", Opinion::Status::answered, {s.a.radius + s.b.radius > 1, {}, {}, {}}, ""}};
+  restore_bands(e.opinions, fcl_oracle::FclSecondOpinion(), QueryKind::sphere_sphere);
   e.verdict = classify(QueryKind::sphere_sphere, e.library, e.exact, e.opinions);
   return e;
 }
@@ -76,8 +68,9 @@ Evaluation base_evaluation() {
   e.library = {true, {}, {}, {}};
   e.exact.answer = {true, {}, {}, {}};
   e.exact.margin = 0x1p-45;
-  e.opinions = {fcl_said(QueryKind::obb_obb, "fcl.OBBd::overlap", {false, {}, {}, {}}),
-                fcl_said(QueryKind::obb_obb, "fcl.collide(Box,Box)", {true, {}, {}, {}})};
+  e.opinions = {{"fcl.OBBd::overlap", Opinion::Status::answered, {false, {}, {}, {}}, ""},
+                {"fcl.collide(Box,Box)", Opinion::Status::answered, {true, {}, {}, {}}, ""}};
+  restore_bands(e.opinions, fcl_oracle::FclSecondOpinion(), QueryKind::obb_obb);
   e.verdict.cls = CaseClass::oracle_defect;
   e.verdict.parties = {{"library", Standing::within_band, ""},
                        {"fcl.OBBd::overlap", Standing::wrong, ""},
@@ -156,7 +149,8 @@ Evaluation planted_meshes(const Input& in) {
     if (!high) said.pairs.push_back(p);
   }
   said.hit = !said.pairs.empty();
-  e.opinions = {fcl_said(QueryKind::mesh_mesh, "fcl.BVHModel<OBBd>", said)};
+  e.opinions = {{"fcl.BVHModel<OBBd>", Opinion::Status::answered, said, ""}};
+  restore_bands(e.opinions, fcl_oracle::FclSecondOpinion(), QueryKind::mesh_mesh);
   e.verdict = classify(kind_of(in), e.library, e.exact, e.opinions);
   return e;
 }

@@ -2,27 +2,19 @@
 
 #include <gtest/gtest.h>
 
-#include <stdexcept>
-
+#include "harness/judging/evaluate.h"
 #include "oracle/fcl/fcl_oracle.h"
 
 namespace cc::harness {
 namespace {
-
-// What a second-opinion party said, with its band as oracle/fcl declares it.
-Opinion fcl_said(QueryKind kind, const std::string& party, Answer answer) {
-  for (const PartyBand& p : fcl_oracle::FclSecondOpinion().parties(kind)) {
-    if (p.party == party) return {party, Opinion::Status::answered, std::move(answer), "", p.band};
-  }
-  throw std::out_of_range("oracle/fcl declares no party " + party);
-}
 
 Evaluation with(bool exact_hit, bool library_hit, bool fcl_hit) {
   Evaluation e;
   e.exact.answer.hit = exact_hit;
   e.exact.margin = exact_hit ? 0.25 : -0.25;
   e.library.hit = library_hit;
-  e.opinions = {fcl_said(QueryKind::tri_tri, "fcl.Intersect::intersect_Triangle", {fcl_hit, {}, {}, {}})};
+  e.opinions = {{"fcl.Intersect::intersect_Triangle", Opinion::Status::answered, {fcl_hit, {}, {}, {}}, ""}};
+  restore_bands(e.opinions, fcl_oracle::FclSecondOpinion(), QueryKind::tri_tri);
   e.verdict = classify(QueryKind::tri_tri, e.library, e.exact, e.opinions);
   return e;
 }
