@@ -11,6 +11,7 @@
 #include "collide/bvh_collide.h"
 #include "harness/formats/mesh_files.h"
 #include "harness/model/mesh_query.h"
+#include "rotations.h"
 
 namespace cc::exact {
 namespace {
@@ -21,14 +22,7 @@ QVec3 placed_exactly(const RigidTransform& pose, const Vec3& v) {
   return out;
 }
 
-Mat3 rotation(double a, double b, double c) {
-  const Mat3 x = Mat3::from_columns({1, 0, 0}, {0, std::cos(a), std::sin(a)}, {0, -std::sin(a), std::cos(a)});
-  const Mat3 z = Mat3::from_columns({std::cos(b), std::sin(b), 0}, {-std::sin(b), std::cos(b), 0}, {0, 0, 1});
-  const Mat3 y = Mat3::from_columns({std::cos(c), 0, -std::sin(c)}, {0, 1, 0}, {std::sin(c), 0, std::cos(c)});
-  Mat3 r;
-  for (int k = 0; k < 3; ++k) r.col[k] = x * (z * (y * Mat3::identity().col[k]));
-  return r;
-}
+using test::rotation;
 
 // The filter claims a separation above the threshold only when exact_sat finds one: on triangle
 // pairs apart by about the threshold (both sides of it, along face normals and across edges),

@@ -12,6 +12,7 @@
 
 #include "oracle/exact/convex_sat.h"
 #include "oracle/exact/rational.h"
+#include "rotations.h"
 
 namespace cc::exact {
 namespace {
@@ -35,14 +36,7 @@ QVec3 rational_point(const DyadicPoint& p) {
   return q;
 }
 
-Mat3 rotation(double a, double b, double c) {
-  const Mat3 x = Mat3::from_columns({1, 0, 0}, {0, std::cos(a), std::sin(a)}, {0, -std::sin(a), std::cos(a)});
-  const Mat3 z = Mat3::from_columns({std::cos(b), std::sin(b), 0}, {-std::sin(b), std::cos(b), 0}, {0, 0, 1});
-  const Mat3 y = Mat3::from_columns({std::cos(c), 0, -std::sin(c)}, {0, 1, 0}, {std::sin(c), 0, std::cos(c)});
-  Mat3 r;
-  for (int k = 0; k < 3; ++k) r.col[k] = x * (z * (y * Mat3::identity().col[k]));
-  return r;
-}
+using test::rotation;
 
 TEST(PlacedDyadic, IsThePlacedPointExactly) {
   std::mt19937_64 random(1);
