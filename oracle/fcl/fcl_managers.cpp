@@ -35,7 +35,7 @@ std::unique_ptr<fcl::BroadPhaseCollisionManagerd> make_fcl_manager(const std::st
     return std::make_unique<Hash>(cell, fcl::Vector3d(world.lo.x, world.lo.y, world.lo.z),
                                   fcl::Vector3d(world.hi.x, world.hi.y, world.hi.z));
   }
-  throw std::invalid_argument("unknown FCL broadphase manager \"" + name + "\"");
+  throw std::invalid_argument("unknown FCL broad-phase manager \"" + name + "\"");
 }
 
 }  // namespace cc::fcl_oracle

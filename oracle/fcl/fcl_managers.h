@@ -1,4 +1,5 @@
-// FCL's seven broadphase managers by name (internal to oracle/fcl).
+// FCL's seven broad-phase managers by name (internal to oracle/fcl): what the scene's pipeline
+// and the second opinions on boxes over frames build.
 #pragma once
 
 #include <fcl/broadphase/broadphase_collision_manager.h>

@@ -1,4 +1,4 @@
-// FCL's two-level pipeline, for checking the library's: a broadphase manager over
+// FCL's two-level pipeline, for checking the library's: a broad-phase manager over
 // CollisionObjects of BVHModel<OBBRSSd> meshes, then FCL's collide on each candidate pair with
 // every contact asked for.
 #pragma once

@@ -11,6 +11,7 @@
 #include "harness/judging/classify.h"
 #include "harness/formats/input_json.h"
 #include "harness/judging/median.h"
+#include "harness/model/input.h"
 #include "harness/model/mesh_collide.h"
 #include "harness/formats/mesh_files.h"
 #include "harness/generation/mesh_poses.h"
@@ -27,6 +28,9 @@ using harness::median;
 using harness::Json;
 using harness::MeshPair;
 using Clock = std::chrono::steady_clock;
+
+// The kind whose answers the report judges: every colliding pair of triangles.
+const harness::QueryKind kAllPairsKind = harness::mesh_kind(CollisionMode::all_pairs);
 
 struct ReportArgs {
   int random = 100, near = 100;
@@ -94,7 +98,7 @@ Tally run_library(const harness::LibraryBvh& library, const std::vector<Pose>& p
       harness::Answer answer;
       answer.hit = !r.pairs.empty();
       for (const auto& [fa, fb] : r.pairs) answer.pairs.emplace_back(fa, fb);
-      t.stand(harness::classify(harness::QueryKind::mesh_mesh, answer, p.exact, {}).parties[0].standing);
+      t.stand(harness::classify(kAllPairsKind, answer, p.exact, {}).parties[0].standing);
       if (library.update == BvUpdate::approximate && library.bv != harness::BvType::obb) {
         t.tightness.push_back(approximate_over_exact(b, relative(p.m.pose_a, p.m.pose_b)));
       }
@@ -112,7 +116,7 @@ Tally run_fcl(const std::string& party, const std::vector<Pose>& poses) {
     const harness::Opinion o = fcl_oracle::fcl_collide_meshes(party, p.m);
     t.query_us.push_back(1e3 * ms_since(q));
     t.pairs += o.answer.pairs.size();
-    const harness::Verdict v = harness::classify(harness::QueryKind::mesh_mesh, o.answer, p.exact, {o});
+    const harness::Verdict v = harness::classify(kAllPairsKind, o.answer, p.exact, {o});
     t.stand(v.parties[1].standing);
   }
   return t;

@@ -4,7 +4,8 @@
 // folder, the units of kinds that build on it (they include its unit's header), the places not
 // counted (tests, which mirror the units; bench, whose rows are named after the library's
 // primitives; the library, src/collide, which has no query kinds: a file or an include path
-// named after a library function, collide/<name>.h, is not the kind), and anything else. With --check, exit 1 when a kind is named anywhere else.
+// named after a library function, collide/<name>.h, is not the kind, nor is a folder of FCL's,
+// fcl/<name>/), and anything else. With --check, exit 1 when a kind is named anywhere else.
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include <map>
 #include <set>
 #include <sstream>
+#include <string_view>
 
 #include "harness/model/query_kind.h"
 #include "tool/commands.h"
@@ -45,14 +47,22 @@ std::string input_type_of(std::string_view kind) {
 
 bool word_char(char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; }
 
+// Whether `text` at `at` is a path into the library's headers or FCL's (collide/<word>...,
+// fcl/<word>/...): a file or folder of theirs, named after what they do, not a query kind.
+bool in_other_code_path(const std::string& text, std::size_t at) {
+  for (const std::string_view folder : {"collide/", "fcl/"}) {
+    if (at >= folder.size() && text.compare(at - folder.size(), folder.size(), folder) == 0) return true;
+  }
+  return false;
+}
+
 // Whether `text` has `word` delimited by characters that are not letters, digits or '_', other
-// than in a path into the library (collide/<word>...).
+// than in a path into the library or FCL.
 bool names(const std::string& text, const std::string& word) {
   for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) {
     const bool starts = at == 0 || !word_char(text[at - 1]);
     const bool ends = at + word.size() == text.size() || !word_char(text[at + word.size()]);
-    const bool library_path = at >= 8 && text.compare(at - 8, 8, "collide/") == 0;
-    if (starts && ends && !library_path) return true;
+    if (starts && ends && !in_other_code_path(text, at)) return true;
   }
   return false;
 }

@@ -2,8 +2,10 @@
 // reference's reasoning for each case file; --svg draws a single case.
 #include <cstdio>
 #include <fstream>
+#include <optional>
 
 #include "harness/judging/query_cost.h"
+#include "harness/model/input.h"
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
@@ -15,10 +17,9 @@ namespace {
 // costs measured now on the case's own volumes and triangles.
 void print_cost(const harness::Input& input) {
   const harness::MeshPair* m = harness::meshes_of(input);
-  if (m == nullptr) return;
-  const CollisionMode mode = harness::kind_of(input) == harness::QueryKind::mesh_mesh_first ? CollisionMode::first_hit
-                                                                                         : CollisionMode::all_pairs;
-  const harness::QueryCost c = harness::measure_query_cost(*m, mode);
+  const std::optional<CollisionMode> mode = harness::mesh_mode_of(input);
+  if (m == nullptr || !mode) return;
+  const harness::QueryCost c = harness::measure_query_cost(*m, *mode);
   const auto n = [](std::uint64_t x) { return static_cast<double>(x); };
   std::printf("  counters   n_v = %llu volume tests, n_p = %llu triangle tests, n_u = %llu volume updates\n",
               static_cast<unsigned long long>(c.counters.bv_tests), static_cast<unsigned long long>(c.counters.primitive_tests),

@@ -2,6 +2,8 @@
 // the registry (kinds/registry.h), so that an input's index is its QueryKind.
 #pragma once
 
+#include <optional>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 #include <variant>
@@ -62,6 +64,60 @@ inline const MeshPair* meshes_of(const Input& input) {
         }
       },
       input);
+}
+
+/// What a query on two placed meshes asks of them (every colliding pair of triangles, or the
+/// first one found); nothing for other kinds.
+inline std::optional<CollisionMode> mesh_mode_of(const Input& input) {
+  return std::visit(
+      []<class In>(const In&) -> std::optional<CollisionMode> {
+        if constexpr (requires { In::mode; &In::meshes; }) {
+          return In::mode;
+        } else {
+          return std::nullopt;
+        }
+      },
+      input);
+}
+
+/// The kind that asks `mode` of two placed meshes (found in the registry: the kind whose input is
+/// the two meshes and says what it asks). Throws std::invalid_argument when no kind asks it.
+inline QueryKind mesh_kind(CollisionMode mode) {
+  for (QueryKind kind : kAllQueryKinds) {
+    const bool asks = with_kind(kind, [mode]<class In>() {
+      if constexpr (requires { In::mode; &In::meshes; }) {
+        return In::mode == mode;
+      } else {
+        return false;
+      }
+    });
+    if (asks) return kind;
+  }
+  throw std::invalid_argument("no query kind asks this of two meshes");
+}
+
+namespace detail {
+template <class In>
+concept FramesOfBoxesAlone = requires(In in) {
+  requires std::same_as<decltype(In::frames), BoxFrames>;
+  requires std::tuple_size_v<std::remove_cvref_t<decltype(Fields<In>::list)>> == 1;
+};
+}  // namespace detail
+
+/// The input of the kind asked of a set of boxes over frames (the kind whose input is the frames
+/// alone; exactly one is, or this does not compile).
+inline Input box_frames_input(BoxFrames frames) {
+  return [&frames]<std::size_t... I>(std::index_sequence<I...>) {
+    static_assert((std::size_t{detail::FramesOfBoxesAlone<std::variant_alternative_t<I, Input>>} + ...) == 1,
+                  "exactly one kind is asked of boxes over frames alone");
+    Input out;
+    (
+        [&]<class In>(std::type_identity<In>) {
+          if constexpr (detail::FramesOfBoxesAlone<In>) out = In{std::move(frames)};
+        }(std::type_identity<std::variant_alternative_t<I, Input>>{}),
+        ...);
+    return out;
+  }(std::make_index_sequence<std::variant_size_v<Input>>{});
 }
 
 }  // namespace cc::harness

@@ -1,7 +1,9 @@
 #include "harness/processes/child.h"
 
+#include <fcntl.h>
 #include <poll.h>
 #include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -10,12 +12,18 @@
 #include <chrono>
 #include <cstdio>
 #include <cstring>
+#include <optional>
+#include <stdexcept>
 #include <system_error>
+#include <thread>
+
+extern char** environ;
 
 namespace cc::harness {
 
 std::string ChildEnd::what() const {
   if (timed_out) return "ran past its time limit";
+  if (stopped) return "was stopped";
   if (signal != 0) return "killed by signal " + std::to_string(signal) + " (" + strsignal(signal) + ")";
   return "exited with status " + std::to_string(status);
 }
@@ -38,10 +46,19 @@ Child start_child(const std::function<int(int out)>& f) {
   return {pid, fds[0]};
 }
 
-ChildEnd wait_child(pid_t pid) {
+namespace {
+
+// How often finish_child asks `stop`, and looks for the end of a child without a pipe.
+constexpr int kPollMs = 50;
+
+// Reaps pid: its end once it has ended (waiting for it when `block`), nothing while it runs.
+std::optional<ChildEnd> reap(pid_t pid, bool block) {
   int status = 0;
-  while (waitpid(pid, &status, 0) < 0) {
-    if (errno != EINTR) return {};
+  for (;;) {
+    const pid_t done = waitpid(pid, &status, block ? 0 : WNOHANG);
+    if (done == pid) break;
+    if (done == 0) return std::nullopt;
+    if (errno != EINTR) return ChildEnd{};  // not a child of ours (any more): no status to give
   }
   ChildEnd end;
   if (WIFEXITED(status)) end.status = WEXITSTATUS(status);
@@ -49,42 +66,108 @@ ChildEnd wait_child(pid_t pid) {
   return end;
 }
 
-ChildEnd finish_child(Child child, double timeout_seconds) {
+}  // namespace
+
+Child start_program(const std::vector<std::string>& argv, const ProgramIo& io) {
+  if (argv.empty()) throw std::invalid_argument("start_program: no program");
+  std::vector<char*> args;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  int fds[2] = {-1, -1};
+  if (io.out.empty() && pipe2(fds, O_CLOEXEC) != 0) throw std::system_error(errno, std::generic_category(), "pipe");
+
+  // The child's files, in order: stdin, stdout, stderr, then its folder (so that relative paths
+  // are the caller's). dup2 onto stdout clears close-on-exec on that copy alone.
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  const std::string out = io.out.string(), err = io.err.string(), cwd = io.cwd.string();
+  if (out.empty()) {
+    posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
+  } else {
+    posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+  }
+  if (err.empty()) {
+    posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
+  } else {
+    posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+  }
+  if (!cwd.empty()) posix_spawn_file_actions_addchdir_np(&actions, cwd.c_str());
+  posix_spawnattr_t attr;
+  posix_spawnattr_init(&attr);
+  posix_spawnattr_setflags(&attr, POSIX_SPAWN_SETPGROUP);
+  posix_spawnattr_setpgroup(&attr, 0);  // its own group
+
+  pid_t pid = -1;
+  const int error = posix_spawnp(&pid, args[0], &actions, &attr, args.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  posix_spawnattr_destroy(&attr);
+  if (fds[1] >= 0) ::close(fds[1]);
+  if (error != 0) {
+    if (fds[0] >= 0) ::close(fds[0]);
+    throw std::system_error(error, std::generic_category(), "cannot start " + argv[0]);
+  }
+  return {pid, fds[0], true};
+}
+
+ChildEnd wait_child(pid_t pid) { return *reap(pid, true); }
+
+ChildEnd finish_child(Child child, double timeout_seconds, const std::function<bool()>& stop) {
   using Clock = std::chrono::steady_clock;
   const auto deadline = Clock::now() + std::chrono::duration<double>(timeout_seconds);
+  enum class Killed { no, at_time_limit, stopped } killed = Killed::no;
   std::string output;
-  bool killed = false;
   char chunk[65536];
-  for (;;) {
-    int wait_ms = -1;
-    if (timeout_seconds > 0 && !killed) {
-      // Rounded up, so that the child is never killed before its time.
-      const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now()).count();
-      if (left <= 0) {
-        kill(child.pid, SIGKILL);
-        killed = true;
-      } else {
-        wait_ms = static_cast<int>(std::min<long long>(left, 1000));
+  std::optional<ChildEnd> end;
+  while (!end) {
+    int wait_ms = -1;  // until the child writes or ends
+    if (killed == Killed::no) {
+      if (stop && stop()) {
+        killed = Killed::stopped;
+      } else if (timeout_seconds > 0) {
+        // Rounded up, so that the child is never killed before its time.
+        const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now()).count();
+        if (left <= 0) killed = Killed::at_time_limit;
+        wait_ms = static_cast<int>(std::clamp<long long>(left, 0, 1000));
+      }
+      if (killed != Killed::no) {
+        kill(child.group ? -child.pid : child.pid, SIGKILL);
+        wait_ms = -1;
+      } else if (stop) {
+        wait_ms = wait_ms < 0 ? kPollMs : std::min(wait_ms, kPollMs);
       }
     }
-    pollfd p{child.out, POLLIN, 0};
-    const int ready = poll(&p, 1, wait_ms);
-    if (ready < 0 && errno != EINTR) break;
-    if (ready <= 0) continue;
-    const ssize_t n = ::read(child.out, chunk, sizeof chunk);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) break;  // end of file: the child closed its output or ended
-    output.append(chunk, static_cast<std::size_t>(n));
+    if (child.out >= 0) {
+      pollfd p{child.out, POLLIN, 0};
+      const int ready = poll(&p, 1, wait_ms);
+      if (ready == 0 || (ready < 0 && errno == EINTR)) continue;
+      const ssize_t n = ready < 0 ? -1 : ::read(child.out, chunk, sizeof chunk);
+      if (n < 0 && errno == EINTR) continue;
+      if (n > 0) {
+        output.append(chunk, static_cast<std::size_t>(n));
+      } else {  // end of file (the child closed its output or ended), or an error
+        ::close(child.out);
+        child.out = -1;
+      }
+    } else if (wait_ms < 0) {
+      end = reap(child.pid, true);
+    } else if (!(end = reap(child.pid, false))) {
+      std::this_thread::sleep_for(std::chrono::milliseconds(std::min(wait_ms, kPollMs)));
+    }
   }
-  ::close(child.out);
-  ChildEnd end = wait_child(child.pid);
-  end.timed_out = killed && end.signal == SIGKILL;
-  end.output = std::move(output);
-  return end;
+  end->timed_out = killed == Killed::at_time_limit && end->signal == SIGKILL;
+  end->stopped = killed == Killed::stopped && end->signal == SIGKILL;
+  end->output = std::move(output);
+  return *end;
 }
 
 ChildEnd run_in_child(const std::function<int(int out)>& f, double timeout_seconds) {
   return finish_child(start_child(f), timeout_seconds);
+}
+
+ChildEnd run_program(const std::vector<std::string>& argv, const ProgramIo& io, double timeout_seconds,
+                     const std::function<bool()>& stop) {
+  return finish_child(start_program(argv, io), timeout_seconds, stop);
 }
 
 bool write_all(int fd, std::string_view bytes) {

@@ -1,7 +1,8 @@
 // crosscheck scene: rocks tumbling down a slope through the two-level pipeline (sweep-and-prune,
 // then BVH-vs-BVH), each frame timed per level and checked against brute force (every pair of
-// fitted boxes, then collide) and against FCL's pipeline with each broadphase manager; object
-// pairs on which FCL differs are judged by the exact reference and classified.
+// fitted boxes, then collide) and against FCL's pipeline with each broad-phase manager; object
+// pairs on which FCL differs are judged by the exact reference and classified (as answers of the
+// query for every colliding pair of triangles of two meshes).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -14,6 +15,7 @@
 #include "harness/judging/classify.h"
 #include "harness/formats/input_json.h"
 #include "harness/judging/median.h"
+#include "harness/model/input.h"
 #include "harness/model/mesh_collide.h"
 #include "tool/scenes/rock_slide.h"
 #include "oracle/exact/exact_meshes.h"
@@ -24,10 +26,13 @@
 namespace cc::tool {
 namespace {
 
+// The kind whose answers the scene judges: every colliding pair of triangles of two meshes.
+const harness::QueryKind kAllPairsKind = harness::mesh_kind(CollisionMode::all_pairs);
+
 // The party the scene's FCL pipeline stands for, and its band as oracle/fcl declares it.
 const std::string kFclParty = "fcl.BVHModel<OBBRSSd>";
 harness::Band fcl_party_band() {
-  for (const harness::PartyBand& p : fcl_oracle::FclSecondOpinion().parties(harness::QueryKind::mesh_mesh)) {
+  for (const harness::PartyBand& p : fcl_oracle::FclSecondOpinion().parties(kAllPairsKind)) {
     if (p.party == kFclParty) return p.band;
   }
   throw std::logic_error("oracle/fcl declares no party " + kFclParty);
@@ -45,7 +50,7 @@ struct SceneArgs {
   std::vector<std::string> managers;
   bool quiet = false;
   std::string json;
-  std::string broadphase_case;
+  std::string boxes_case;
 };
 
 double ms_since(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
@@ -118,7 +123,7 @@ int run_scene(const SceneArgs& args, harness::BvType bv_type) {
   }
   std::vector<ManagerTally> tallies(managers.size());
 
-  harness::BroadphaseInput broadphase;  // FCL's boxes per frame, for --broadphase-case
+  harness::BoxFrames fcl_boxes;  // the boxes FCL's first manager saw, per frame, for --boxes-case
   std::vector<double> broad_ms, narrow_ms;
   std::size_t candidates = 0, colliding = 0, tri_pairs = 0, brute_mismatches = 0;
   std::uint64_t swaps_before = 0;
@@ -170,7 +175,7 @@ int run_scene(const SceneArgs& args, harness::BvType bv_type) {
         mp.library.bv = bv_type;
         const harness::Opinion said{kFclParty, harness::Opinion::Status::answered, answer_of(triangles_of(theirs, p)), "",
                                     fcl_band};
-        const harness::Verdict v = harness::classify(harness::QueryKind::mesh_mesh, answer_of(triangles_of(contacts, p)),
+        const harness::Verdict v = harness::classify(kAllPairsKind, answer_of(triangles_of(contacts, p)),
                                                      exact::judge_meshes(mp), {said});
         ++tallies[m].classes[v.cls];
         if ((v.cls == harness::CaseClass::impl_bug || v.cls == harness::CaseClass::oracle_defect) && !args.quiet) {
@@ -182,8 +187,8 @@ int run_scene(const SceneArgs& args, harness::BvType bv_type) {
       }
       if (m == 0) fcl_ms_first = tallies[m].ms.back(), fcl_diff_first = diff.size();
     }
-    if (!args.broadphase_case.empty() && !fcl.empty()) {
-      auto& frame_boxes = broadphase.frames.emplace_back();
+    if (!args.boxes_case.empty() && !fcl.empty()) {
+      auto& frame_boxes = fcl_boxes.emplace_back();
       for (const Aabb& b : fcl.front()->boxes()) frame_boxes.emplace_back(b);
     }
     if (!args.quiet) {
@@ -219,10 +224,10 @@ int run_scene(const SceneArgs& args, harness::BvType bv_type) {
                                   {"differing_pairs", tallies[m].differing}, {"classes", classes_json}};
   }
   std::printf("(FCL: the manager's update and collide, with BVHModel<OBBRSSd> collide on each candidate, all contacts)\n");
-  if (!args.broadphase_case.empty()) {
-    std::ofstream out(args.broadphase_case);
-    out << harness::input_to_json(broadphase).dump() << '\n';
-    if (!out) throw std::runtime_error("cannot write " + args.broadphase_case);
+  if (!args.boxes_case.empty()) {
+    std::ofstream out(args.boxes_case);
+    out << harness::input_to_json(harness::box_frames_input(std::move(fcl_boxes))).dump() << '\n';
+    if (!out) throw std::runtime_error("cannot write " + args.boxes_case);
   }
   if (!args.json.empty()) {
     std::ofstream out(args.json);
@@ -268,11 +273,12 @@ void add_scene_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--seed", args->seed, "Seed of the scene")->capture_default_str();
   cmd->add_option("--bv", args->bv, "Volume type of the library's trees (aabb, obb, kdop6 ... kdop26)")->capture_default_str();
   cmd->add_option("--bounds", args->bounds, "Boxes of rotating rocks: refit (per frame) or cube (any rotation)")->capture_default_str();
-  cmd->add_option("--manager", args->managers, "FCL broadphase managers to check against (repeat; default: all seven)");
+  cmd->add_option("--manager", args->managers, "FCL broad-phase managers to check against (repeat; default: all seven)");
   cmd->add_flag("--quiet", args->quiet, "Only the summary, not a line per frame");
   cmd->add_option("--json", args->json, "Also write the summary as JSON");
-  cmd->add_option("--broadphase-case", args->broadphase_case,
-                  "Write the boxes FCL's managers saw, every frame, as the inputs of a broadphase case (for `crosscheck add`)");
+  cmd->add_option("--boxes-case", args->boxes_case,
+                  "Write the boxes FCL's managers saw, every frame, as the inputs of a case of the query on boxes over "
+                  "frames (for `crosscheck add`)");
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

@@ -1,13 +1,21 @@
-// Running a function in a child process: its exit status, the signal that ended it, its output
-// (also more than a pipe holds), and its time limit.
+// Running a function or a program in a child process: its exit status, the signal that ended it,
+// its output (also more than a pipe holds), its time limit and its stop; a program's files,
+// folder and process group, and programs started from several threads at once.
 #include "harness/processes/child.h"
 
+#include <fcntl.h>
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <csignal>
+#include <fstream>
+#include <sstream>
+#include <system_error>
+#include <thread>
+
+#include "../../temp_folder.h"
 
 namespace cc::harness {
 namespace {
@@ -65,6 +73,117 @@ TEST(Child, StartedChildrenAreReapedOneByOne) {
   EXPECT_EQ(end_a.output, "a");
   EXPECT_EQ(end_b.status, 4);
   EXPECT_EQ(end_b.output, "b");
+}
+
+double seconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+std::string file_text(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+TEST(Program, GivesItsExitStatusAndItsOutputBytes) {
+  const ChildEnd end = run_program({"sh", "-c", "printf 'a\\000b\\377'; echo to-stderr >&2; exit 3"});
+  EXPECT_EQ(end.status, 3);
+  EXPECT_EQ(end.signal, 0);
+  EXPECT_FALSE(end.timed_out);
+  EXPECT_FALSE(end.stopped);
+  EXPECT_EQ(end.output, std::string("a\0b\377", 4) + "to-stderr\n");  // stderr goes where stdout goes
+  EXPECT_EQ(end.what(), "exited with status 3");
+  EXPECT_TRUE(run_program({"true"}).succeeded());
+}
+
+TEST(Program, ReadsMoreOutputThanAPipeHolds) {
+  const ChildEnd end = run_program({"head", "-c", "1048576", "/dev/zero"});
+  EXPECT_TRUE(end.succeeded());
+  EXPECT_EQ(end.output, std::string(1 << 20, '\0'));
+}
+
+TEST(Program, ASignalEndsIt) {
+  const ChildEnd end = run_program({"sh", "-c", "kill -SEGV $$"});
+  EXPECT_EQ(end.status, -1);
+  EXPECT_EQ(end.signal, SIGSEGV);
+  EXPECT_FALSE(end.timed_out);
+}
+
+// The time limit kills the program's whole group: were the background sleep left alive, it would
+// hold the pipe open for 30 s.
+TEST(Program, AProgramPastItsTimeLimitIsKilledWithWhatItStarted) {
+  const auto start = std::chrono::steady_clock::now();
+  const ChildEnd end = run_program({"sh", "-c", "sleep 30 & wait"}, {}, 0.2);
+  const double seconds = seconds_since(start);
+  EXPECT_TRUE(end.timed_out);
+  EXPECT_EQ(end.signal, SIGKILL);
+  EXPECT_GE(seconds, 0.2);
+  EXPECT_LT(seconds, 10.0);
+  EXPECT_EQ(end.what(), "ran past its time limit");
+}
+
+TEST(Program, StopKillsItWithoutAPipeToo) {
+  const cc::test::TempFolder folder("child_stop");
+  int asked = 0;
+  const auto start = std::chrono::steady_clock::now();
+  ProgramIo to_a_file;
+  to_a_file.out = folder.path() / "log";
+  const ChildEnd end = run_program({"sleep", "30"}, to_a_file, 0, [&asked] { return ++asked == 3; });
+  EXPECT_LT(seconds_since(start), 10.0);
+  EXPECT_EQ(asked, 3);
+  EXPECT_TRUE(end.stopped);
+  EXPECT_FALSE(end.timed_out);
+  EXPECT_EQ(end.signal, SIGKILL);
+  EXPECT_EQ(end.what(), "was stopped");
+}
+
+TEST(Program, AppendsToItsFilesInItsFolder) {
+  const cc::test::TempFolder folder("child_files");
+  const auto out = folder.path() / "out.log", err = folder.path() / "err.log";
+  std::ofstream(out) << "before\n";
+  std::filesystem::create_directory(folder.path() / "work");
+  const ChildEnd end = run_program({"sh", "-c", "pwd; echo oops >&2; cat"}, {folder.path() / "work", out, err}, 10);
+  EXPECT_TRUE(end.succeeded()) << end.what();
+  EXPECT_EQ(end.output, "");
+  // stdin is /dev/null: cat reads nothing and ends.
+  EXPECT_EQ(file_text(out), "before\n" + std::filesystem::canonical(folder.path() / "work").string() + "\n");
+  EXPECT_EQ(file_text(err), "oops\n");
+}
+
+TEST(Program, OneThatCannotStartThrows) {
+  EXPECT_THROW(run_program({"no-such-program-anywhere"}), std::system_error);
+  const cc::test::TempFolder folder("child_cannot_open");
+  ProgramIo nowhere;
+  nowhere.out = folder.path() / "missing" / "log";
+  EXPECT_THROW(run_program({"true"}, nowhere), std::system_error);
+}
+
+// Programs spawned from other threads meanwhile must not hold this one's pipe (or its output
+// would end only when they do): the caller's end is close-on-exec, as was the child's end.
+TEST(Program, ItsPipeIsNotHandedToOtherPrograms) {
+  const Child child = start_program({"true"});
+  ASSERT_GE(child.out, 0);
+  EXPECT_TRUE(child.group);
+  EXPECT_NE(fcntl(child.out, F_GETFD) & FD_CLOEXEC, 0);
+  EXPECT_TRUE(finish_child(child).succeeded());
+}
+
+TEST(Program, ProgramsRunFromSeveralThreadsAtOnce) {
+  std::vector<std::thread> threads;
+  std::vector<std::vector<ChildEnd>> ends(4);
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    threads.emplace_back([&ends, i] {
+      for (int run = 0; run < 10; ++run) ends[i].push_back(run_program({"sh", "-c", "echo " + std::to_string(i)}, {}, 60));
+    });
+  }
+  for (std::thread& t : threads) t.join();
+  for (std::size_t i = 0; i < ends.size(); ++i) {
+    for (const ChildEnd& end : ends[i]) {
+      EXPECT_TRUE(end.succeeded()) << end.what();
+      EXPECT_EQ(end.output, std::to_string(i) + "\n");
+    }
+  }
 }
 
 }  // namespace
