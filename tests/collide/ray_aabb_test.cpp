@@ -1,5 +1,7 @@
 #include "collide/ray_aabb.h"
 
+#include "collide/bound_records.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -46,6 +48,17 @@ TEST(IntersectRayAabb, ASubnormalComponentWithAFiniteReciprocalIsNotParallel) {
   EXPECT_TRUE(h.hit);
   EXPECT_EQ(h.t_enter, 0);
   EXPECT_EQ(h.t_exit, 0x1p1022);
+}
+
+TEST(IntersectRayAabb, ASegmentWithASubnormalComponentEndsWhereTmaxSays) {
+  // A component of 2^-1023 is subnormal once the direction is scaled: the ray takes the full
+  // test, not the inline miss decision, and its end must still count there.
+  const Vec3 dir{1, 0x1p-1023, 0};
+  bounds::Records records;
+  EXPECT_FALSE(intersect_ray_aabb(ray({-1, 0.5, 0.5}, dir, 0, 0.9999999), kBox).hit);
+  EXPECT_FALSE(intersect_ray_aabb(ray({-1, 0.5, 0.5}, dir, 0, 0.9999999), kBox, records).hit);
+  expect_hit(intersect_ray_aabb(ray({-1, 0.5, 0.5}, dir, 0, 1), kBox), 1, 1);
+  expect_hit(intersect_ray_aabb(ray({-1, 0.5, 0.5}, dir, 0, 1), kBox, records), 1, 1);
 }
 
 TEST(IntersectRayAabb, ARayStartingInsideEntersAtTmin) {
