@@ -15,6 +15,7 @@
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
+#include "tool/flag_checks.h"
 
 namespace cc::tool {
 namespace {
@@ -136,15 +137,15 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
 void add_fuzz_commands(CLI::App& app, int& exit_code) {
   auto seeds = std::make_shared<SeedArgs>();
   auto* s = app.add_subcommand("fuzz-seeds", "Write the fuzz targets' seed corpora (corpora/<query>/seed/)");
-  s->add_option("--corpora", seeds->corpora, "The corpus root")->capture_default_str();
-  s->add_option("--generated", seeds->generated, "Generated cases per query")->capture_default_str();
+  s->add_option("--corpora", seeds->corpora, "The corpus root")->capture_default_str()->check(CLI::ExistingDirectory);
+  s->add_option("--generated", seeds->generated, "Generated cases per query")->capture_default_str()->check(whole_in(0, 1000000));
   s->callback([seeds, &exit_code] { exit_code = run_seeds(*seeds); });
 
   auto cases = std::make_shared<FuzzCaseArgs>();
   auto* c = app.add_subcommand("fuzz-case", "Turn fuzz inputs (records) into case files, classifying each");
-  c->add_option("query", cases->query, "The query kind of the fuzz target")->required();
-  c->add_option("files", cases->files, "Fuzz inputs")->required();
-  c->add_option("--out", cases->out, "Where the case files go")->capture_default_str();
+  c->add_option("query", cases->query, "The query kind of the fuzz target")->required()->check(query_kind_name());
+  c->add_option("files", cases->files, "Fuzz inputs (files)")->required()->check(CLI::ExistingFile);
+  c->add_option("--out", cases->out, "Where the case files go")->capture_default_str()->check(writable_folder());
   c->callback([cases, &exit_code] { exit_code = run_fuzz_case(*cases); });
 }
 
