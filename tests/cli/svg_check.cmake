@@ -1,12 +1,13 @@
-# `crosscheck triage --svg` on two stored cases (TEXT_CASE: a broadphase case whose deciding text
-# has a "<"; ZERO_SIZE_CASE: two spheres of radius zero at one point): the drawing must be valid XML as far as
-# text goes (every < opens a tag, every & an entity), carry a title naming the file, the query
-# and the class, and draw each zero-size sphere as a marker in each of the three views.
+# `crosscheck triage --svg` on three stored cases (TEXT_CASE: a broadphase case whose deciding
+# text has a "<"; ZERO_SIZE_CASE: two spheres of radius zero at one point; END_ON_CASE: a ray
+# along y, seen end-on in the x-z view): the drawing must be valid XML as far as text goes (every
+# < opens a tag, every & an entity), carry a title naming the file, the query and the class, and
+# draw each zero-size shape as a marker: each sphere in each of the three views, the ray once.
 cmake_minimum_required(VERSION 3.25)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
-set(cases ${TEXT_CASE} ${ZERO_SIZE_CASE})
-set(markers_wanted 0 6)  # per case: two spheres in three views
+set(cases ${TEXT_CASE} ${ZERO_SIZE_CASE} ${END_ON_CASE})
+set(markers_wanted 0 6 1)
 foreach(case markers IN ZIP_LISTS cases markers_wanted)
   get_filename_component(name ${case} NAME_WE)
   get_filename_component(folder ${case} DIRECTORY)
