@@ -104,7 +104,8 @@ std::string unwritable_file(const std::filesystem::path& path) {
   if (!std::filesystem::exists(folder, ec)) return "no folder " + folder.string() + " to write " + path.string() + " in";
   if (!std::filesystem::is_directory(folder, ec)) return folder.string() + " is not a folder";
   const bool existed = std::filesystem::exists(path, ec);
-  const int fd = ::open(path.c_str(), existed ? O_WRONLY : (O_WRONLY | O_CREAT | O_EXCL), 0644);
+  // O_NONBLOCK: a FIFO without a reader is refused instead of waited on.
+  const int fd = ::open(path.c_str(), O_NONBLOCK | (existed ? O_WRONLY : (O_WRONLY | O_CREAT | O_EXCL)), 0644);
   if (fd < 0) return "cannot write " + path.string() + ": " + system_error_text();
   ::close(fd);
   if (!existed) ::unlink(path.c_str());

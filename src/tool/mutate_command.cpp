@@ -539,9 +539,10 @@ void add_mutate_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<MutateArgs>();
   auto* cmd = app.add_subcommand("mutate", "Plant each mutant of a catalogue in a scratch copy and see what catches it");
   cmd->add_option("--catalogue", args->catalogue, "The mutant catalogue (JSON)")->capture_default_str();
-  cmd->add_option("--source", args->source, "The source tree to copy")->capture_default_str();
+  cmd->add_option("--source", args->source, "The source tree to copy")->capture_default_str()->check(CLI::ExistingDirectory);
   cmd->add_option("--work", args->work, "Where the scratch copies (worker-N/tree, worker-N/build) and logs go")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(writable_folder());
   cmd->add_option("--jobs", args->jobs, "Mutants run in parallel, each in its own scratch copy")
       ->capture_default_str()
       ->check(whole_in(1, 64));
