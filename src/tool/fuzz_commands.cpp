@@ -97,12 +97,22 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
     const auto path = std::filesystem::path(args.out) / args.query / case_file_name(input);
     const std::string note = "untriaged: from fuzz input " + std::filesystem::path(file).filename().string();
     // A full answer in a child; if that child dies, find out which party it was.
+    // A case file that cannot be written is bad input (its message on the output), not a crash.
+    constexpr int kNotStored = 254;
     const ChildEnd full = run_in_child([&](int out) {
       const Evaluation e = evaluate_with_oracles(input);
-      write_new_case_file(path, case_of(input, e, provenance, note));
+      try {
+        write_new_case_file(path, case_of(input, e, provenance, note));
+      } catch (const CaseFileError& error) {
+        return write_all(out, error.what()) ? kNotStored : 255;
+      }
       if (!write_all(out, finding_key(input, e))) return 255;
       return static_cast<int>(e.verdict.cls);
     });
+    if (full.status == kNotStored) {
+      std::fprintf(stderr, "crosscheck fuzz-case: %s\n", full.output.c_str());
+      return kExitBadInput;
+    }
     std::string what;
     if (full.signal != 0) {
       const ChildEnd library = run_in_child([&](int) {

@@ -8,6 +8,7 @@
 cmake_minimum_required(VERSION 3.25)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/empty)
+file(WRITE ${WORK}/blocked/obb_obb "")  # a folder for case files whose query folder is a file
 # The table's lines as a list: brackets and semicolons hidden first (both would change how a
 # CMake list splits), and brought back line by line.
 file(READ ${TABLE} text)
