@@ -1,11 +1,15 @@
 #include "oracle/fcl/fcl_oracle.h"
 
+#include <fcl/config.h>
+
 #include <stdexcept>
 
 #include "oracle/fcl/parties.h"
 #include "oracle/fcl/time_limit.h"
 
 namespace cc::fcl_oracle {
+
+std::string_view fcl_version() { return FCL_VERSION; }
 
 FclSecondOpinion::FclSecondOpinion() {
   if (!fcl_supports_used_pairs()) {

@@ -1,9 +1,14 @@
 // Second opinions from FCL 0.7 and libccd, as the harness sees them. All of FCL lives here.
 #pragma once
 
+#include <string_view>
+
 #include "harness/model/oracle.h"
 
 namespace cc::fcl_oracle {
+
+/// The version of FCL this build was compiled against, as its headers give it ("0.7.0").
+std::string_view fcl_version();
 
 /// Every kind's parties, each with its name, band and call, are declared in the kind's unit,
 /// oracle/fcl/kinds/<kind>.cpp; `crosscheck bands` lists them. A C++ exception thrown by FCL or

@@ -1,10 +1,15 @@
 // crosscheck add QUERY INPUTS --note TEXT: stores a hand-written case, with the three answers
-// computed now, as corpora/QUERY/<hash>.json.
+// computed now, as corpora/QUERY/<hash>.json. INPUTS is the JSON itself, a file holding it, or
+// "-" for standard input.
 #include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <iterator>
 
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
+#include "tool/flag_checks.h"
 
 namespace cc::tool {
 namespace {
@@ -22,16 +27,37 @@ int run(const AddArgs& args) {
     std::fprintf(stderr, "crosscheck add: unknown query \"%s\"\n", args.query.c_str());
     return kExitBadInput;
   }
+  // The inputs inline (JSON starts with { or [), from standard input ("-"), or from a file.
+  const std::size_t first = args.inputs.find_first_not_of(" \t\r\n");
+  const bool inline_json = first != std::string::npos && (args.inputs[first] == '{' || args.inputs[first] == '[');
+  const std::string source = inline_json ? "inputs" : args.inputs == "-" ? "standard input" : args.inputs;
+  std::string text = args.inputs;
+  if (!inline_json) {
+    std::ifstream file;
+    if (args.inputs != "-") {
+      if (std::filesystem::is_directory(args.inputs)) {
+        std::fprintf(stderr, "crosscheck add: %s is a folder, not a file of inputs\n", source.c_str());
+        return kExitBadInput;
+      }
+      file.open(args.inputs, std::ios::binary);
+      if (!file) {
+        std::fprintf(stderr, "crosscheck add: %s: cannot read the file (inputs are JSON, \"-\" or a file)\n", source.c_str());
+        return kExitBadInput;
+      }
+    }
+    std::istream& in = args.inputs == "-" ? std::cin : file;
+    text.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
   harness::Input input;
   try {
     // Mesh files are found as they will be from the stored case: from its folder, or above it.
-    input = harness::input_from_json(*kind, harness::Json::parse(args.inputs), "",
+    input = harness::input_from_json(*kind, harness::Json::parse(text), "",
                                      std::filesystem::path(args.corpora) / args.query);
   } catch (const harness::Json::parse_error& e) {
-    std::fprintf(stderr, "crosscheck add: inputs: %s\n", e.what());
+    std::fprintf(stderr, "crosscheck add: %s: %s\n", source.c_str(), e.what());
     return kExitBadInput;
   } catch (const harness::FormatError& e) {
-    std::fprintf(stderr, "crosscheck add: inputs%s: %s\n", e.pointer().c_str(), e.what());
+    std::fprintf(stderr, "crosscheck add: %s%s: %s\n", source.c_str(), e.pointer().c_str(), e.what());
     return kExitBadInput;
   }
   const harness::Evaluation e = evaluate_with_oracles(input);
@@ -56,10 +82,11 @@ int run(const AddArgs& args) {
 void add_add_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<AddArgs>();
   auto* cmd = app.add_subcommand("add", "Store a hand-written case with its answers computed now");
-  cmd->add_option("query", args->query, "The query kind")->required();
-  cmd->add_option("inputs", args->inputs, "The inputs as JSON, in the layout of a case file's \"inputs\"")->required();
+  cmd->add_option("query", args->query, "The query kind")->required()->check(query_kind_name());
+  cmd->add_option("inputs", args->inputs, "The inputs as JSON, in the layout of a case file's \"inputs\": inline, a file holding it, or - for "
+                  "standard input")->required();
   cmd->add_option("--note", args->note, "A one-line note: what the case shows")->required();
-  cmd->add_option("--corpora", args->corpora, "The corpus root")->capture_default_str();
+  cmd->add_option("--corpora", args->corpora, "The corpus root")->capture_default_str()->check(writable_folder());
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

@@ -10,6 +10,7 @@
 #include "harness/formats/mesh_files.h"
 #include "oracle/exact/exact_reference.h"
 #include "tool/commands.h"
+#include "tool/flag_checks.h"
 
 namespace cc::tool {
 namespace {
@@ -85,11 +86,17 @@ int run(const BoundsArgs& args) {
 void add_bounds_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<BoundsArgs>();
   auto* cmd = app.add_subcommand("bounds", "How close the actual rounding comes to each term of the library's error bounds");
-  cmd->add_option("--query", args->queries, "A query kind to measure (repeatable; default: all with a bound)");
-  cmd->add_option("--cases", args->cases, "Generated cases per primitive query kind")->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Seed of the case generator")->capture_default_str();
-  cmd->add_option("--corpora", args->corpora, "Where FCL's test meshes are (corpora/meshes)")->capture_default_str();
-  cmd->add_option("--json", args->json, "Write every row, with the case of its closest approach, to this JSON file");
+  cmd->add_option("--query", args->queries, "A query kind to measure (repeatable; default: all with a bound)")
+      ->check(query_kind_name());
+  cmd->add_option("--cases", args->cases, "Generated cases per primitive query kind")
+      ->capture_default_str()
+      ->check(whole_in(1, 100000000));
+  cmd->add_option("--seed", args->seed, "Seed of the case generator")->capture_default_str()->check(seed_value());
+  cmd->add_option("--corpora", args->corpora, "Where FCL's test meshes are (corpora/meshes)")
+      ->capture_default_str()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--json", args->json, "Write every row, with the case of its closest approach, to this JSON file")
+      ->check(writable_file());
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

@@ -19,6 +19,7 @@
 #include "oracle/exact/exact_meshes.h"
 #include "oracle/fcl/parties.h"
 #include "tool/commands.h"
+#include "tool/flag_checks.h"
 
 namespace cc::tool {
 namespace {
@@ -117,7 +118,7 @@ Tally run_fcl(const std::string& party, const std::vector<Pose>& poses) {
     t.query_us.push_back(1e3 * ms_since(q));
     t.pairs += o.answer.pairs.size();
     const harness::Verdict v = harness::classify(kAllPairsKind, o.answer, p.exact, {o});
-    t.stand(v.parties[1].standing);
+    if (v.parties.size() > 1) t.stand(v.parties[1].standing);  // none when the verdict judges no party
   }
   return t;
 }
@@ -166,6 +167,10 @@ Json row_json(const Tally& t) {
 }
 
 int run(const ReportArgs& args) {
+  if (args.random + args.near == 0) {
+    std::fprintf(stderr, "crosscheck bvh-report: --random and --near are both 0: no pose to report on (give one at least 1)\n");
+    return kExitBadInput;
+  }
   const auto folder = harness::mesh_folder(args.corpora);
   const auto env = harness::find_mesh_file("env.obj", folder), rob = harness::find_mesh_file("rob.obj", folder);
   if (!env || !rob) {
@@ -234,12 +239,18 @@ int run(const ReportArgs& args) {
 void add_bvh_report_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<ReportArgs>();
   auto* cmd = app.add_subcommand("bvh-report", "env.obj against rob.obj for every hierarchy: counters, times, FCL, exact");
-  cmd->add_option("--random", args->random, "Poses drawn as FCL's test draws them")->capture_default_str();
-  cmd->add_option("--near", args->near, "Poses brought to near contact")->capture_default_str();
-  cmd->add_option("--leaf-size", args->leaf_size, "Triangles per leaf of a top-down build")->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Seed of the poses")->capture_default_str();
-  cmd->add_option("--corpora", args->corpora, "The corpus root (its meshes/ folder has the meshes)")->capture_default_str();
-  cmd->add_option("--json", args->json, "Also write the table as JSON");
+  cmd->add_option("--random", args->random, "Poses drawn as FCL's test draws them")
+      ->capture_default_str()
+      ->check(whole_in(0, 1000000));
+  cmd->add_option("--near", args->near, "Poses brought to near contact")->capture_default_str()->check(whole_in(0, 1000000));
+  cmd->add_option("--leaf-size", args->leaf_size, "Triangles per leaf of a top-down build")
+      ->capture_default_str()
+      ->check(whole_in(1, 1024));
+  cmd->add_option("--seed", args->seed, "Seed of the poses")->capture_default_str()->check(seed_value());
+  cmd->add_option("--corpora", args->corpora, "The corpus root (its meshes/ folder has the meshes)")
+      ->capture_default_str()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--json", args->json, "Also write the table as JSON")->check(writable_file());
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

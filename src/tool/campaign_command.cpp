@@ -22,6 +22,7 @@
 #include "harness/shrinking/signature.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
+#include "tool/flag_checks.h"
 #include "tool/oracles.h"
 
 namespace cc::tool {
@@ -30,6 +31,10 @@ namespace {
 using harness::median;
 
 using namespace harness;
+
+// Worker processes at most: more than a machine has cores only slows a campaign down, and an
+// unbounded count is a fork bomb.
+constexpr int kMaxWorkers = 256;
 
 struct CampaignArgs {
   std::vector<std::string> queries;
@@ -248,23 +253,40 @@ int run(const CampaignArgs& args) {
 void add_campaign_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CampaignArgs>();
   auto* cmd = app.add_subcommand("campaign", "Run a differential campaign: library vs FCL/libccd vs exact arithmetic");
-  cmd->add_option("--query", args->queries, "A query kind to run (repeatable; default: all)");
-  cmd->add_option("--seconds", args->seconds, "Time budget in seconds")->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Seed of the case generator")->capture_default_str();
-  cmd->add_option("--workers", args->workers, "Worker processes")->capture_default_str();
-  cmd->add_option("--timeout", args->timeout, "Seconds after which a case counts as a hang")->capture_default_str();
+  cmd->add_option("--query", args->queries, "A query kind to run (repeatable; default: all)")->check(query_kind_name());
+  cmd->add_option("--seconds", args->seconds, "Time budget in seconds")->capture_default_str()->check(finite_above(0, 1e6));
+  cmd->add_option("--seed", args->seed, "Seed of the case generator")->capture_default_str()->check(seed_value());
+  cmd->add_option("--workers", args->workers, "Worker processes")->capture_default_str()->check(whole_in(1, kMaxWorkers));
+  cmd->add_option("--timeout", args->timeout, "Seconds after which a case counts as a hang")
+      ->capture_default_str()
+      ->check(finite_above(0, 86400));
   cmd->add_option("--out-of-contract", args->out_of_contract, "Percent of cases generated out of contract")
-      ->capture_default_str();
-  cmd->add_option("--json", args->json, "Write the summary and every finding to this JSON file");
-  cmd->add_option("--max-print", args->max_print, "Findings printed per query and class")->capture_default_str();
+      ->capture_default_str()
+      ->check(whole_in(0, 100));
+  cmd->add_option("--json", args->json, "Write the summary and every finding to this JSON file")->check(writable_file());
+  cmd->add_option("--max-print", args->max_print, "Findings printed per query and class")
+      ->capture_default_str()
+      ->check(whole_in(0, 1000000));
   cmd->add_option("--out", args->out, "Where new findings are written as shrunk case files")->capture_default_str();
   cmd->add_option("--corpora", args->corpora, "Cases stored anywhere under this root are not written again")
-      ->capture_default_str();
-  cmd->add_option("--max-new", args->max_new, "New case files written at most (0: none)")->capture_default_str();
+      ->capture_default_str()
+      ->check(CLI::ExistingDirectory);
+  cmd->add_option("--max-new", args->max_new, "New case files written at most (0: none)")
+      ->capture_default_str()
+      ->check(whole_in(0, 1000000));
   cmd->add_option("--per-kind-of-finding", args->per_key,
                   "Cases written per kind of finding (same class, parties, features and margin decade)")
-      ->capture_default_str();
-  cmd->callback([args, &exit_code] { exit_code = run(*args); });
+      ->capture_default_str()
+      ->check(whole_in(1, 1000000));
+  // --out is checked up front even when left at its default: findings go there after the budget.
+  cmd->callback([args, &exit_code] {
+    if (const std::string why = args->max_new > 0 ? unwritable_folder(args->out) : ""; !why.empty()) {
+      std::fprintf(stderr, "crosscheck campaign: --out: %s\n", why.c_str());
+      exit_code = kExitBadInput;
+      return;
+    }
+    exit_code = run(*args);
+  });
 }
 
 }  // namespace cc::tool

@@ -105,16 +105,20 @@ std::string triage_text(const std::string& title, const Case& recorded, const Ev
   out << "\n";
   if (!recorded.note.empty()) out << "  note       " << recorded.note << "\n";
   out << "  inputs     " << input_to_json(recorded.input).dump() << "\n";
-  out << "  library    " << answer_text(now.library) << "   [" << to_string(now.verdict.parties[0].standing) << "]\n";
+  out << "  library    " << answer_text(now.library);
+  if (!now.verdict.parties.empty()) out << "   [" << to_string(now.verdict.parties[0].standing) << "]";
+  out << "\n";
   out << "  exact      " << answer_text(now.exact.answer);
   if (now.exact.contract != Contract::in) out << "   (out of contract: " << now.exact.note << ")";
   out << "\n";
-  for (std::size_t i = 0; i < now.opinions.size(); ++i) {
-    const Opinion& o = now.opinions[i];
-    const PartyStanding& p = now.verdict.parties[i + 1];
+  for (const Opinion& o : now.opinions) {
+    // A verdict out of contract, or undecided, judges no party: the answer is shown without one.
+    const auto p = std::find_if(now.verdict.parties.begin(), now.verdict.parties.end(),
+                                [&](const PartyStanding& s) { return s.party == o.party; });
     out << "  " << o.party << "  ";
     if (o.status == Opinion::Status::answered) {
-      out << answer_text(o.answer) << "   [" << to_string(p.standing) << "]";
+      out << answer_text(o.answer);
+      if (p != now.verdict.parties.end()) out << "   [" << to_string(p->standing) << "]";
     } else {
       out << (o.status == Opinion::Status::failed ? "failed: " : "n/a: ") << o.detail;
     }

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "harness/formats/case_file.h"
@@ -33,8 +34,10 @@ std::optional<harness::Case> read_case_or_report(const std::filesystem::path& pa
 std::string triage_text(const std::string& title, const harness::Case& recorded, const harness::Evaluation& now,
                         const harness::Explanation& why);
 
-/// An SVG drawing of a case: three orthographic views and the deciding axis.
-std::string svg_of(const harness::Input& input, const harness::Explanation& why);
+/// An SVG drawing of a case under `title` (its file, query and class): three orthographic views,
+/// in which a point, a sphere of radius zero and a segment seen end-on are drawn as markers, and
+/// the deciding axis. Valid XML whatever the text.
+std::string svg_of(const harness::Input& input, const harness::Explanation& why, std::string_view title);
 
 /// Every case file name (hash.json) stored under `root`, for skipping known cases.
 std::vector<std::string> stored_case_names(const std::filesystem::path& root);

@@ -15,6 +15,7 @@
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
+#include "tool/flag_checks.h"
 
 namespace cc::tool {
 namespace {
@@ -96,12 +97,22 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
     const auto path = std::filesystem::path(args.out) / args.query / case_file_name(input);
     const std::string note = "untriaged: from fuzz input " + std::filesystem::path(file).filename().string();
     // A full answer in a child; if that child dies, find out which party it was.
+    // A case file that cannot be written is bad input (its message on the output), not a crash.
+    constexpr int kNotStored = 254;
     const ChildEnd full = run_in_child([&](int out) {
       const Evaluation e = evaluate_with_oracles(input);
-      write_new_case_file(path, case_of(input, e, provenance, note));
+      try {
+        write_new_case_file(path, case_of(input, e, provenance, note));
+      } catch (const CaseFileError& error) {
+        return write_all(out, error.what()) ? kNotStored : 255;
+      }
       if (!write_all(out, finding_key(input, e))) return 255;
       return static_cast<int>(e.verdict.cls);
     });
+    if (full.status == kNotStored) {
+      std::fprintf(stderr, "crosscheck fuzz-case: %s\n", full.output.c_str());
+      return kExitBadInput;
+    }
     std::string what;
     if (full.signal != 0) {
       const ChildEnd library = run_in_child([&](int) {
@@ -136,15 +147,15 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
 void add_fuzz_commands(CLI::App& app, int& exit_code) {
   auto seeds = std::make_shared<SeedArgs>();
   auto* s = app.add_subcommand("fuzz-seeds", "Write the fuzz targets' seed corpora (corpora/<query>/seed/)");
-  s->add_option("--corpora", seeds->corpora, "The corpus root")->capture_default_str();
-  s->add_option("--generated", seeds->generated, "Generated cases per query")->capture_default_str();
+  s->add_option("--corpora", seeds->corpora, "The corpus root")->capture_default_str()->check(CLI::ExistingDirectory);
+  s->add_option("--generated", seeds->generated, "Generated cases per query")->capture_default_str()->check(whole_in(0, 1000000));
   s->callback([seeds, &exit_code] { exit_code = run_seeds(*seeds); });
 
   auto cases = std::make_shared<FuzzCaseArgs>();
   auto* c = app.add_subcommand("fuzz-case", "Turn fuzz inputs (records) into case files, classifying each");
-  c->add_option("query", cases->query, "The query kind of the fuzz target")->required();
-  c->add_option("files", cases->files, "Fuzz inputs")->required();
-  c->add_option("--out", cases->out, "Where the case files go")->capture_default_str();
+  c->add_option("query", cases->query, "The query kind of the fuzz target")->required()->check(query_kind_name());
+  c->add_option("files", cases->files, "Fuzz inputs (files)")->required()->check(CLI::ExistingFile);
+  c->add_option("--out", cases->out, "Where the case files go")->capture_default_str()->check(writable_folder());
   c->callback([cases, &exit_code] { exit_code = run_fuzz_case(*cases); });
 }
 

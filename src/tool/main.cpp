@@ -1,13 +1,39 @@
 // crosscheck: differential campaigns and case triage for the collision library.
 #include <CLI/CLI.hpp>
 
+#include <cstdio>
+#include <exception>
 #include <iostream>
 
+#include "oracle/fcl/fcl_oracle.h"
 #include "tool/commands.h"
+#include "tool/flag_checks.h"
+#include "tool/version.h"
+
+namespace {
+
+// The name of the subcommand given on the command line, or "" before one is known.
+std::string command_name(const CLI::App& app) {
+  const std::vector<CLI::App*> given = app.get_subcommands();
+  return given.empty() ? "" : " " + given.front()->get_name();
+}
+
+bool is_subcommand(const CLI::App& app, const std::string& word) {
+  for (const CLI::App* c : app.get_subcommands([](const CLI::App*) { return true; })) {
+    if (c->check_name(word)) return true;
+  }
+  return false;
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   CLI::App app{"crosscheck: the collision library checked against FCL/libccd and exact rational arithmetic"};
   app.require_subcommand(1);
+  app.set_version_flag("--version", std::string("crosscheck ") + CROSSCHECK_VERSION + " (commit " + CROSSCHECK_COMMIT +
+                                        "), FCL " + std::string(cc::fcl_oracle::fcl_version()));
+  app.footer("Query kinds: " + cc::tool::query_kind_names() +
+             "\nExit status: 0 done, 1 an impl_bug found (or a replayed case changed), 2 bad input.");
   int exit_code = 0;
   cc::tool::add_campaign_command(app, exit_code);
   cc::tool::add_bands_command(app, exit_code);
@@ -23,11 +49,19 @@ int main(int argc, char** argv) {
   cc::tool::add_maze_command(app, exit_code);
   cc::tool::add_mutate_command(app, exit_code);
   cc::tool::add_kind_files_command(app, exit_code);
+  if (argc > 1 && argv[1][0] != '-' && !is_subcommand(app, argv[1])) {
+    std::fprintf(stderr, "crosscheck: unknown subcommand \"%s\" (crosscheck --help lists them)\n", argv[1]);
+    return cc::tool::kExitBadInput;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
     return code == 0 ? 0 : cc::tool::kExitBadInput;
+  } catch (const std::exception& e) {
+    // A command that meets input it cannot use ends here, never in an abort.
+    std::fprintf(stderr, "crosscheck%s: %s\n", command_name(app).c_str(), e.what());
+    return cc::tool::kExitBadInput;
   }
   return exit_code;
 }

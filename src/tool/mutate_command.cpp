@@ -20,6 +20,7 @@
 #include "tool/child_process.h"
 #include "tool/ctest_log.h"
 #include "tool/commands.h"
+#include "tool/flag_checks.h"
 #include "tool/mutant_catalogue.h"
 #include "tool/mutation_report.h"
 #include "tool/scratch_tree.h"
@@ -538,37 +539,38 @@ void add_mutate_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<MutateArgs>();
   auto* cmd = app.add_subcommand("mutate", "Plant each mutant of a catalogue in a scratch copy and see what catches it");
   cmd->add_option("--catalogue", args->catalogue, "The mutant catalogue (JSON)")->capture_default_str();
-  cmd->add_option("--source", args->source, "The source tree to copy")->capture_default_str();
+  cmd->add_option("--source", args->source, "The source tree to copy")->capture_default_str()->check(CLI::ExistingDirectory);
   cmd->add_option("--work", args->work, "Where the scratch copies (worker-N/tree, worker-N/build) and logs go")
-      ->capture_default_str();
+      ->capture_default_str()
+      ->check(writable_folder());
   cmd->add_option("--jobs", args->jobs, "Mutants run in parallel, each in its own scratch copy")
       ->capture_default_str()
-      ->check(CLI::Range(1, 64));
-  cmd->add_option("--build-jobs", args->build_jobs, "ninja -j for each build")->capture_default_str()->check(CLI::Range(1, 64));
+      ->check(whole_in(1, 64));
+  cmd->add_option("--build-jobs", args->build_jobs, "ninja -j for each build")->capture_default_str()->check(whole_in(1, 64));
   cmd->add_option("--budget", args->budget_minutes,
                   "Minutes: no mutant is started that would end past it (at the mean cost so far)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(finite_above(0, 1e6));
   cmd->add_option("--campaign-seconds", args->campaign_seconds, "Campaign on the mutant's query kind (0: none)")
       ->capture_default_str()
-      ->check(CLI::NonNegativeNumber);
-  cmd->add_option("--campaign-seed", args->campaign_seed, "Seed of the campaign")->capture_default_str();
+      ->check(finite_in(0, 1e6));
+  cmd->add_option("--campaign-seed", args->campaign_seed, "Seed of the campaign")->capture_default_str()->check(seed_value());
   cmd->add_option("--campaign-workers", args->campaign_workers, "Worker processes of each campaign")
       ->capture_default_str()
-      ->check(CLI::Range(1, 64));
+      ->check(whole_in(1, 64));
   cmd->add_option("--test-timeout", args->test_timeout,
                   "Seconds: a test counts as failed (caught) past 5 times its own time on the unmutated tree, and never "
                   "before this (without a baseline: past 600 s)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(finite_above(0, 1e6));
   cmd->add_option("--labels", args->labels, "ctest labels in the order they run")->capture_default_str()->delimiter(',');
   cmd->add_option("--only", args->only, "Run only this mutant (repeatable)");
   cmd->add_flag("--check", args->check_only, "Only read the catalogue and report stale mutants (exit 1 if any)");
   cmd->add_option("--exclude-tests", args->exclude_tests, "Leave out the tests matching this regex (ctest -E)");
   cmd->add_flag("--no-baseline", args->no_baseline,
                 "Skip running ctest on the unmutated tree (whose failing tests are otherwise left out)");
-  cmd->add_option("--report", args->report, "Markdown report (default WORK/report.md)");
-  cmd->add_option("--json", args->json, "JSON report (default WORK/report.json)");
+  cmd->add_option("--report", args->report, "Markdown report (default WORK/report.md)")->check(writable_file());
+  cmd->add_option("--json", args->json, "JSON report (default WORK/report.json)")->check(writable_file());
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

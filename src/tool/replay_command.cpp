@@ -28,8 +28,15 @@ int run(const ReplayArgs& args) {
     }
   }
   const exact::ExactRationalReference exact;
+  const std::vector<std::filesystem::path> files = case_files_under(roots);
+  if (files.empty()) {
+    std::string given;
+    for (const std::string& d : args.dirs) given += (given.empty() ? "" : ", ") + d;
+    std::fprintf(stderr, "crosscheck replay: no case files (*.json) in %s\n", given.c_str());
+    return kExitBadInput;
+  }
   int cases = 0, changed = 0, bad = 0;
-  for (const auto& file : case_files_under(roots)) {
+  for (const auto& file : files) {
     const auto c = read_case_or_report(file);
     if (!c) {
       ++bad;

@@ -5,6 +5,7 @@
 #include "harness/shrinking/signature.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
+#include "tool/flag_checks.h"
 
 namespace cc::tool {
 namespace {
@@ -52,9 +53,15 @@ void add_shrink_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("shrink", "Minimise a case file, keeping its kind, class and disagreement");
   cmd->add_option("file", args->file, "The case file")->required();
   cmd->add_option("-o,--out", args->out,
-                  "A file, or a directory (ending in /) for a file named by the shrunk case's hash (default: beside it)");
-  cmd->add_option("--attempts", args->attempts, "Evaluations to try at most")->capture_default_str();
-  cmd->add_option("--seconds", args->seconds, "Time to spend at most")->capture_default_str();
+                  "A file, or a directory (ending in /) for a file named by the shrunk case's hash (default: beside it)")
+      ->check(CLI::Validator(
+          [](std::string& out) {
+            const bool folder = (!out.empty() && out.back() == '/') || std::filesystem::is_directory(out);
+            return folder ? unwritable_folder(out) : unwritable_file(out);
+          },
+          "FILE or FOLDER/ (writable)"));
+  cmd->add_option("--attempts", args->attempts, "Evaluations to try at most")->capture_default_str()->check(whole_in(1, 10000000));
+  cmd->add_option("--seconds", args->seconds, "Time to spend at most")->capture_default_str()->check(finite_above(0, 1e6));
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

@@ -9,6 +9,7 @@
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
+#include "tool/flag_checks.h"
 
 namespace cc::tool {
 namespace {
@@ -57,7 +58,8 @@ int run(const TriageArgs& args) {
     std::printf("\n");
     if (!args.svg.empty()) {
       std::ofstream out(args.svg);
-      out << svg_of(c->input, why);
+      out << svg_of(c->input, why,
+                    file + ": " + std::string(name(harness::kind_of(c->input))) + ", " + std::string(to_string(now.verdict.cls)));
       if (!out) {
         std::fprintf(stderr, "crosscheck triage: cannot write %s\n", args.svg.c_str());
         return kExitBadInput;
@@ -74,7 +76,8 @@ void add_triage_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<TriageArgs>();
   auto* cmd = app.add_subcommand("triage", "Explain case files: answers, class, margin and the deciding axis or slab");
   cmd->add_option("files", args->files, "Case files")->required();
-  cmd->add_option("--svg", args->svg, "Draw the case (three views and the deciding axis) into this SVG file");
+  cmd->add_option("--svg", args->svg, "Draw the case (three views and the deciding axis) into this SVG file")
+      ->check(writable_file());
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

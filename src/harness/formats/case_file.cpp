@@ -71,6 +71,32 @@ std::vector<FacePair> pairs_from(const Json& j, const std::string& pointer) {
   }
   return out;
 }
+// Refuses a member of `j` not named in `known`: a misspelt or foreign field is an error, not
+// silently ignored.
+void only_fields(const Json& j, const std::string& pointer, std::initializer_list<std::string_view> known) {
+  if (!j.is_object()) throw FormatError(pointer, "expected an object");
+  for (const auto& [key, value] : j.items()) {
+    if (std::find(known.begin(), known.end(), key) == known.end()) {
+      throw FormatError(pointer + "/" + key, "unknown field \"" + key + "\"");
+    }
+  }
+}
+// The first member of `given` (its JSON pointer) that `written`, the same value as the writer
+// writes it, does not have; "" when there is none. Arrays are compared element by element.
+std::string unknown_member(const Json& given, const Json& written, const std::string& pointer) {
+  if (given.is_object() && written.is_object()) {
+    for (const auto& [key, value] : given.items()) {
+      if (!written.contains(key)) return pointer + "/" + key;
+      if (std::string p = unknown_member(value, written[key], pointer + "/" + key); !p.empty()) return p;
+    }
+  } else if (given.is_array() && written.is_array() && given.size() == written.size()) {
+    for (std::size_t i = 0; i < given.size(); ++i) {
+      if (std::string p = unknown_member(given[i], written[i], pointer + "/" + std::to_string(i)); !p.empty()) return p;
+    }
+  }
+  return "";
+}
+
 // hit, and the parameters or pairs when there are any.
 void read_answer(const Json& j, const std::string& pointer, Answer& a) {
   a.hit = boolean(member(j, pointer, "hit"), pointer + "/hit");
@@ -85,6 +111,7 @@ void read_answer(const Json& j, const std::string& pointer, Answer& a) {
   }
 }
 Answer answer_from(const Json& j, const std::string& pointer) {
+  only_fields(j, pointer, {"hit", "params", "pairs", "frames"});
   Answer a;
   read_answer(j, pointer, a);
   return a;
@@ -161,6 +188,7 @@ std::vector<Opinion> opinions_from_json(const Json& opinions, const std::string&
   for (std::size_t i = 0; i < opinions.size(); ++i) {
     const std::string p = place + "/" + std::to_string(i);
     Opinion o;
+    only_fields(opinions[i], p, {"party", "status", "detail", "hit", "params", "pairs", "frames"});
     o.party = text(member(opinions[i], p, "party"), p + "/party");
     const std::string status = text(member(opinions[i], p, "status"), p + "/status");
     if (status == "answered") {
@@ -202,6 +230,9 @@ Json case_to_json(const Case& c) {
 
 Case case_from_json(const Json& json, const std::filesystem::path& case_dir) {
   if (!json.is_object()) throw FormatError("", "expected a JSON object");
+  const Json& format = member(json, "", "format");
+  if (format != "crosscheck-case") throw FormatError("/format", "expected \"crosscheck-case\", not " + format.dump());
+  only_fields(json, "", {"format", "version", "query", "note", "class", "margin", "inputs", "answers", "provenance"});
   const auto version = member(json, "", "version");
   if (!version.is_number_integer()) throw FormatError("/version", "expected an integer");
   if (version.get<int>() > kCaseFormatVersion || version.get<int>() < 1) {
@@ -215,6 +246,9 @@ Case case_from_json(const Json& json, const std::filesystem::path& case_dir) {
 
   Case c;
   c.input = input_from_json(*kind, member(json, "", "inputs"), "/inputs", case_dir);
+  if (const std::string p = unknown_member(json["inputs"], input_to_json(c.input), "/inputs"); !p.empty()) {
+    throw FormatError(p, "unknown field \"" + p.substr(p.rfind('/') + 1) + "\" of a " + query + " input");
+  }
   c.note = json.contains("note") ? text(json["note"], "/note") : "";
   const std::string cls = text(member(json, "", "class"), "/class");
   const auto parsed = case_class_named(cls);
@@ -222,9 +256,11 @@ Case case_from_json(const Json& json, const std::filesystem::path& case_dir) {
   c.cls = *parsed;
 
   const Json& answers = member(json, "", "answers");
+  only_fields(answers, "/answers", {"library", "exact", "oracles"});
   c.library = answer_from(member(answers, "/answers", "library"), "/answers/library");
   const Json& exact = member(answers, "/answers", "exact");
-  c.exact.answer = answer_from(exact, "/answers/exact");
+  only_fields(exact, "/answers/exact", {"hit", "params", "pairs", "frames", "contract", "decided", "note"});
+  read_answer(exact, "/answers/exact", c.exact.answer);
   c.exact.margin = number_from_json(member(json, "", "margin"), "/margin");
   const std::string contract = text(member(exact, "/answers/exact", "contract"), "/answers/exact/contract");
   if (contract == "in") {
@@ -241,6 +277,7 @@ Case case_from_json(const Json& json, const std::filesystem::path& case_dir) {
   c.opinions = opinions_from_json(member(answers, "/answers", "oracles"), "/answers/oracles");
   if (json.contains("provenance")) {
     const Json& p = json["provenance"];
+    only_fields(p, "/provenance", {"source", "seed", "case", "detail"});
     c.provenance.source = text(member(p, "/provenance", "source"), "/provenance/source");
     if (p.contains("seed")) c.provenance.seed = unsigned_from(p["seed"], "/provenance/seed");
     if (p.contains("case")) c.provenance.case_index = unsigned_from(p["case"], "/provenance/case");
@@ -251,12 +288,16 @@ Case case_from_json(const Json& json, const std::filesystem::path& case_dir) {
 
 Case read_case_file(const std::filesystem::path& path) {
   const std::string file = path.string();
+  if (std::filesystem::is_directory(path)) throw CaseFileError(file, "", "a folder, not a case file");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw CaseFileError(file, "", "cannot read the file");
   std::stringstream buffer;
   buffer << in.rdbuf();
   if (in.bad()) throw CaseFileError(file, "", "cannot read the file");
-  const std::string content = buffer.str();
+  return read_case_text(buffer.str(), file, path.parent_path());
+}
+
+Case read_case_text(const std::string& content, const std::string& file, const std::filesystem::path& case_dir) {
   Json json;
   try {
     json = Json::parse(content);
@@ -267,7 +308,7 @@ Case read_case_file(const std::filesystem::path& path) {
     throw CaseFileError(file, line_and_column(content, e.byte == 0 ? 0 : e.byte - 1), message);
   }
   try {
-    return case_from_json(json, path.parent_path());
+    return case_from_json(json, case_dir);
   } catch (const FormatError& e) {
     throw CaseFileError(file, e.pointer().empty() ? "/" : e.pointer(), e.what());
   }

@@ -60,9 +60,13 @@ std::vector<Opinion> opinions_from_json(const Json& opinions, const std::string&
 /// are looked for from case_dir (see find_mesh_file).
 Case case_from_json(const Json& json, const std::filesystem::path& case_dir = {});
 
-/// Reads a case file; throws CaseFileError for an unreadable file, a syntax error, an unknown
-/// query kind, a missing field, a number that does not parse, or a newer format version.
+/// Reads a case file; throws CaseFileError for a folder, an unreadable file, a syntax error, a
+/// "format" other than "crosscheck-case", an unknown field, an unknown query kind, a missing
+/// field, a number that does not parse, or a newer format version.
 Case read_case_file(const std::filesystem::path& path);
+/// The same for a case file's text: `file` names it in errors, mesh files are looked for from
+/// `case_dir`.
+Case read_case_text(const std::string& content, const std::string& file, const std::filesystem::path& case_dir);
 
 /// The file name of a case: 16 hex digits of a 64-bit FNV-1a hash of its query and inputs.
 std::string case_file_name(const Input& input);

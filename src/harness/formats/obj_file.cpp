@@ -88,12 +88,15 @@ std::vector<Vec3> exact_vertices(const std::filesystem::path& path, const std::s
 }  // namespace
 
 Mesh read_obj_file(const std::filesystem::path& path) {
+  if (std::filesystem::is_directory(path)) fail(path, "a folder, not a mesh file");
   std::ifstream file(path, std::ios::binary);
   if (!file) fail(path, "cannot open the file");
   std::ostringstream buffer;
   buffer << file.rdbuf();
-  const std::string text = buffer.str();
+  return read_obj_text(buffer.str(), path);
+}
 
+Mesh read_obj_text(const std::string& text, const std::filesystem::path& path) {
   const std::vector<Vec3> vertices = exact_vertices(path, text);
 
   tinyobj::ObjReaderConfig config;

@@ -22,9 +22,11 @@ class MeshFileError : public std::runtime_error {
 /// correctly rounded (one ULP off for 2676 of env.obj's 19620 coordinates) and reads "nan" as 0,
 /// so every `v` line's three coordinates are read again with std::from_chars, which gives the
 /// double nearest to the decimal text.
-/// Throws MeshFileError for an unreadable file, a syntax error, a face that names a missing
+/// Throws MeshFileError for a folder, an unreadable file, a syntax error, a face that names a missing
 /// vertex, a vertex with fewer than three coordinates or a NaN, infinite or out-of-range
 /// coordinate, and a file without triangles.
 Mesh read_obj_file(const std::filesystem::path& path);
+/// The same for an OBJ file's text; `path` names it in errors.
+Mesh read_obj_text(const std::string& text, const std::filesystem::path& path);
 
 }  // namespace cc::harness

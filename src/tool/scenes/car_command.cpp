@@ -7,6 +7,7 @@
 #include "collide/ray_mesh.h"
 #include "tool/scenes/car_on_road.h"
 #include "tool/commands.h"
+#include "tool/flag_checks.h"
 
 namespace cc::tool {
 namespace {
@@ -41,8 +42,8 @@ int run(const CarArgs& args) {
 void add_car_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CarArgs>();
   auto* cmd = app.add_subcommand("car", "A car on a road probed by four wheel rays: signed distances and the response per step");
-  cmd->add_option("--steps", args->steps, "Steps to drive")->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Seed of the terrain")->capture_default_str();
+  cmd->add_option("--steps", args->steps, "Steps to drive")->capture_default_str()->check(whole_in(1, 1000000));
+  cmd->add_option("--seed", args->seed, "Seed of the terrain")->capture_default_str()->check(seed_value());
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

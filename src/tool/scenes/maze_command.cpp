@@ -13,6 +13,7 @@
 #include "tool/scenes/maze.h"
 #include "oracle/exact/exact_disc_walls.h"
 #include "tool/commands.h"
+#include "tool/flag_checks.h"
 
 namespace cc::tool {
 namespace {
@@ -128,10 +129,12 @@ int run(const MazeArgs& args) {
 void add_maze_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<MazeArgs>();
   auto* cmd = app.add_subcommand("maze", "A disc walks through a generated maze: every wall at every step tested both ways and judged exactly");
-  cmd->add_option("--size", args->size, "Cells per side")->capture_default_str()->check(CLI::Range(1, 200));
-  cmd->add_option("--seed", args->seed, "Seed of the maze")->capture_default_str();
-  cmd->add_option("--radius", args->radius, "The disc's radius in cells, in [0, 0.5)")->capture_default_str();
-  cmd->add_option("--substeps", args->substeps, "Positions between two cells' centres")->capture_default_str()->check(CLI::Range(1, 64));
+  cmd->add_option("--size", args->size, "Cells per side")->capture_default_str()->check(whole_in(1, 200));
+  cmd->add_option("--seed", args->seed, "Seed of the maze")->capture_default_str()->check(seed_value());
+  cmd->add_option("--radius", args->radius, "The disc's radius in cells, in [0, 0.5)")
+      ->capture_default_str()
+      ->check(finite_in(0, 0.5));
+  cmd->add_option("--substeps", args->substeps, "Positions between two cells' centres")->capture_default_str()->check(whole_in(1, 64));
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

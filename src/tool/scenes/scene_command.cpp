@@ -22,6 +22,7 @@
 #include "oracle/fcl/fcl_oracle.h"
 #include "oracle/fcl/fcl_scene.h"
 #include "tool/commands.h"
+#include "tool/flag_checks.h"
 
 namespace cc::tool {
 namespace {
@@ -268,17 +269,18 @@ int run(const SceneArgs& args) {
 void add_scene_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<SceneArgs>();
   auto* cmd = app.add_subcommand("scene", "Rocks down a slope through sweep-and-prune and BVH-vs-BVH, checked against brute force and FCL");
-  cmd->add_option("--objects", args->objects, "Rocks")->capture_default_str();
-  cmd->add_option("--frames", args->frames, "Frames")->capture_default_str();
-  cmd->add_option("--seed", args->seed, "Seed of the scene")->capture_default_str();
+  cmd->add_option("--objects", args->objects, "Rocks")->capture_default_str()->check(whole_in(1, 100000));
+  cmd->add_option("--frames", args->frames, "Frames")->capture_default_str()->check(whole_in(1, 1000000));
+  cmd->add_option("--seed", args->seed, "Seed of the scene")->capture_default_str()->check(seed_value());
   cmd->add_option("--bv", args->bv, "Volume type of the library's trees (aabb, obb, kdop6 ... kdop26)")->capture_default_str();
   cmd->add_option("--bounds", args->bounds, "Boxes of rotating rocks: refit (per frame) or cube (any rotation)")->capture_default_str();
   cmd->add_option("--manager", args->managers, "FCL broad-phase managers to check against (repeat; default: all seven)");
   cmd->add_flag("--quiet", args->quiet, "Only the summary, not a line per frame");
-  cmd->add_option("--json", args->json, "Also write the summary as JSON");
+  cmd->add_option("--json", args->json, "Also write the summary as JSON")->check(writable_file());
   cmd->add_option("--boxes-case", args->boxes_case,
                   "Write the boxes FCL's managers saw, every frame, as the inputs of a case of the query on boxes over "
-                  "frames (for `crosscheck add`)");
+                  "frames (for `crosscheck add`)")
+      ->check(writable_file());
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

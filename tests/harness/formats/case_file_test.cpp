@@ -172,6 +172,19 @@ TEST(CaseFile, BadInputNamesTheFileAndThePlace) {
   expect_error("bad_number.json", "/inputs/b/center/1", "\"1.5.2\" is not a number");
   expect_error("newer_version.json", "/version", "format version 99 is not supported");
   expect_error("no_such_file.json", "", "cannot read the file");
+  expect_error("unknown_field.json", "/verdict", "unknown field \"verdict\"");
+  expect_error("unknown_input_field.json", "/inputs/a/radus", "unknown field \"radus\" of a sphere_sphere input");
+  expect_error("unknown_answer_field.json", "/answers/oracles/0/hits", "unknown field \"hits\"");
+  expect_error("wrong_format.json", "/format", "expected \"crosscheck-case\", not \"fcl-case\"");
+}
+
+TEST(CaseFile, AFolderIsNotACaseFile) {
+  try {
+    read_case_file(kBad);
+    ADD_FAILURE() << "no error for a folder";
+  } catch (const CaseFileError& e) {
+    EXPECT_NE(std::string(e.what()).find("a folder, not a case file"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

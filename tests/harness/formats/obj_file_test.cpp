@@ -222,6 +222,18 @@ TEST(ObjFile, RefusesVerticesWithoutFaces) {
   expect_names_file(error_reading(path), path);
 }
 
+TEST(ObjFile, RefusesAFolderSayingItIsOne) {
+  const std::string message = error_reading(kBadMeshes);
+  expect_names_file(message, kBadMeshes);
+  EXPECT_NE(message.find("a folder, not a mesh file"), std::string::npos) << message;
+}
+
+TEST(ObjFile, ReadsTextAsItReadsTheFile) {
+  const Mesh mesh = read_obj_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", "inline.obj");
+  EXPECT_EQ(mesh.vertices.size(), 3u);
+  EXPECT_EQ(mesh.faces.size(), 1u);
+}
+
 TEST(ObjFile, RefusesAMissingFile) {
   const auto path = kBadMeshes / "no_such_file.obj";
   ASSERT_FALSE(std::filesystem::exists(path));

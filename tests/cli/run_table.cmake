@@ -1,0 +1,57 @@
+# Runs the crosscheck tool (CROSSCHECK) on every line of TABLE and checks its exit status and
+# that its output (stdout and stderr) names the culprit. A line is
+#   STATUS | CULPRIT | ARGUMENTS [| STDIN]
+# ARGUMENTS are split as a shell would; @DATA@ is tests/data, @HERE@ this folder, @CORPORA@ the
+# corpora folder and @WORK@ a fresh scratch folder (WORK). A run that ends by a signal (a crash)
+# or with another status fails the test, as does one past 60 s; every failing line is listed
+# before the test fails.
+cmake_minimum_required(VERSION 3.25)
+file(REMOVE_RECURSE ${WORK})
+file(MAKE_DIRECTORY ${WORK}/empty)
+file(WRITE ${WORK}/blocked/obb_obb "")  # a folder for case files whose query folder is a file
+# The table's lines as a list: brackets and semicolons hidden first (both would change how a
+# CMake list splits), and brought back line by line.
+file(READ ${TABLE} text)
+string(REPLACE "[" "@LB@" text "${text}")
+string(REPLACE "]" "@RB@" text "${text}")
+string(REPLACE ";" "@SC@" text "${text}")
+string(REPLACE "\n" ";" lines "${text}")
+set(ran 0)
+set(failed 0)
+foreach(line IN LISTS lines)
+  if(line MATCHES "^[ ]*(#|$)")
+    continue()
+  endif()
+  string(REPLACE "@LB@" "[" line "${line}")
+  string(REPLACE "@RB@" "]" line "${line}")
+  string(REPLACE "@SC@" ";" line "${line}")
+  string(REPLACE "@DATA@" "${DATA}" line "${line}")
+  string(REPLACE "@HERE@" "${CMAKE_CURRENT_LIST_DIR}" line "${line}")
+  string(REPLACE "@CORPORA@" "${CORPORA}" line "${line}")
+  string(REPLACE "@WORK@" "${WORK}" line "${line}")
+  if(NOT line MATCHES "^([0-9]+) \\| ([^|]*) \\|[ ]?([^|]*)( \\| (.*))?$")
+    message(SEND_ERROR "${TABLE}: a line not of the form STATUS | CULPRIT | ARGUMENTS [| STDIN]: ${line}")
+    continue()
+  endif()
+  set(expected_status ${CMAKE_MATCH_1})
+  set(culprit "${CMAKE_MATCH_2}")
+  separate_arguments(arguments UNIX_COMMAND "${CMAKE_MATCH_3}")
+  set(input /dev/null)
+  if(NOT "${CMAKE_MATCH_5}" STREQUAL "")
+    set(input "${CMAKE_MATCH_5}")
+  endif()
+  execute_process(COMMAND ${CROSSCHECK} ${arguments} WORKING_DIRECTORY ${WORK} INPUT_FILE ${input}
+                  RESULT_VARIABLE status OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+  math(EXPR ran "${ran} + 1")
+  string(FIND "${out}${err}" "${culprit}" at)
+  if(NOT status STREQUAL expected_status OR at EQUAL -1)
+    math(EXPR failed "${failed} + 1")
+    string(SUBSTRING "${out}" 0 400 out)
+    message("FAILED: crosscheck ${CMAKE_MATCH_3}\n  expected status ${expected_status} and \"${culprit}\"; "
+            "got status ${status}\n  stderr: ${err}  stdout (start): ${out}")
+  endif()
+endforeach()
+message("${ran} invocations, ${failed} failed")
+if(failed GREATER 0)
+  message(FATAL_ERROR "${failed} of ${ran} invocations did not end as the table says")
+endif()
