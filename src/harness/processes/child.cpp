@@ -16,6 +16,7 @@ namespace cc::harness {
 
 std::string ChildEnd::what() const {
   if (timed_out) return "ran past its time limit";
+  if (stopped) return "stopped";
   if (signal != 0) return "killed by signal " + std::to_string(signal) + " (" + strsignal(signal) + ")";
   return "exited with status " + std::to_string(status);
 }
@@ -49,22 +50,32 @@ ChildEnd wait_child(pid_t pid) {
   return end;
 }
 
-ChildEnd finish_child(Child child, double timeout_seconds) {
+ChildEnd finish_child(Child child, double timeout_seconds, const std::function<bool()>& stop) {
   using Clock = std::chrono::steady_clock;
   const auto deadline = Clock::now() + std::chrono::duration<double>(timeout_seconds);
   std::string output;
-  bool killed = false;
+  bool killed = false, stopped = false;
+  auto stop_deadline = Clock::now();
   char chunk[65536];
   for (;;) {
-    int wait_ms = -1;
-    if (timeout_seconds > 0 && !killed) {
+    if (stop && !killed && !stopped && stop()) {
+      kill(child.pid, SIGTERM);  // it may finish what it must not leave half done first
+      stopped = true;
+      stop_deadline = Clock::now() + std::chrono::seconds(1);
+    }
+    if (stopped && !killed && Clock::now() > stop_deadline) {
+      kill(child.pid, SIGKILL);
+      killed = true;
+    }
+    int wait_ms = stop && !killed ? 100 : -1;
+    if (timeout_seconds > 0 && !killed && !stopped) {
       // Rounded up, so that the child is never killed before its time.
       const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now()).count();
       if (left <= 0) {
         kill(child.pid, SIGKILL);
         killed = true;
       } else {
-        wait_ms = static_cast<int>(std::min<long long>(left, 1000));
+        wait_ms = static_cast<int>(std::min<long long>(left, wait_ms < 0 ? 1000 : wait_ms));
       }
     }
     pollfd p{child.out, POLLIN, 0};
@@ -78,13 +89,14 @@ ChildEnd finish_child(Child child, double timeout_seconds) {
   }
   ::close(child.out);
   ChildEnd end = wait_child(child.pid);
-  end.timed_out = killed && end.signal == SIGKILL;
+  end.timed_out = killed && !stopped && end.signal == SIGKILL;
+  end.stopped = stopped && end.signal != 0;
   end.output = std::move(output);
   return end;
 }
 
-ChildEnd run_in_child(const std::function<int(int out)>& f, double timeout_seconds) {
-  return finish_child(start_child(f), timeout_seconds);
+ChildEnd run_in_child(const std::function<int(int out)>& f, double timeout_seconds, const std::function<bool()>& stop) {
+  return finish_child(start_child(f), timeout_seconds, stop);
 }
 
 bool write_all(int fd, std::string_view bytes) {

@@ -23,11 +23,12 @@ struct ChildEnd {
   int status = -1;         // the status it exited with; -1 when a signal ended it
   int signal = 0;          // the signal that ended it (SIGKILL at the time limit), or 0
   bool timed_out = false;  // killed because it ran past its time limit
+  bool stopped = false;    // ended by a signal after the caller's `stop` asked for it
   std::string output;      // the bytes it wrote on its output (finish_child, run_in_child)
 
   /// True when it exited with status 0.
   bool succeeded() const { return status == 0; }
-  /// "exited with status N", "killed by signal N (name)", or "ran past its time limit".
+  /// "exited with status N", "killed by signal N (name)", "ran past its time limit" or "stopped".
   std::string what() const;
 };
 
@@ -41,11 +42,14 @@ Child start_child(const std::function<int(int out)>& f);
 ChildEnd wait_child(pid_t pid);
 
 /// Reads a child's output to the end and reaps it, closing `out`. A child still running
-/// `timeout_seconds` (> 0; 0: no limit) after the call is killed with SIGKILL.
-ChildEnd finish_child(Child child, double timeout_seconds = 0);
+/// `timeout_seconds` (> 0; 0: no limit) after the call is killed with SIGKILL. When `stop` (if
+/// given; asked at least every 100 ms) returns true, the child gets SIGTERM (a child may defer it
+/// over what it must not leave half done), and SIGKILL if it still runs a second later.
+ChildEnd finish_child(Child child, double timeout_seconds = 0, const std::function<bool()>& stop = {});
 
 /// start_child then finish_child: f's exit status, the signal that ended it, and its output.
-ChildEnd run_in_child(const std::function<int(int out)>& f, double timeout_seconds = 0);
+ChildEnd run_in_child(const std::function<int(int out)>& f, double timeout_seconds = 0,
+                      const std::function<bool()>& stop = {});
 
 /// Writes all of `bytes` to `fd` (retrying short writes and EINTR); false on an error.
 bool write_all(int fd, std::string_view bytes);
