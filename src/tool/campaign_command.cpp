@@ -16,6 +16,7 @@
 #include <csignal>
 #include <cstring>
 #include <sstream>
+#include <system_error>
 
 #include "harness/processes/campaign.h"
 #include "harness/processes/child.h"
@@ -254,9 +255,14 @@ Stored store_findings(const CampaignResult& r, const CampaignArgs& args, double 
                      : interrupts() > 0 ? "interrupted" : "no time left in --seconds",
                      storage);
     } else {
-      const harness::ChildEnd child = harness::run_in_child(
-          [&](int out) { return shrink_and_store(f, args, known, share, out); }, share + kShrinkSlackSeconds,
-          [] { return interrupts() > 1; });
+      harness::ChildEnd child;
+      try {
+        child = harness::run_in_child([&](int out) { return shrink_and_store(f, args, known, share, out); },
+                                      share + kShrinkSlackSeconds, [] { return interrupts() > 1; });
+      } catch (const std::system_error& e) {  // no process to shrink in: stored as found
+        store_as_found(f, args, std::string("cannot shrink: ") + e.what(), storage);
+        continue;
+      }
       std::istringstream report(child.output);
       int before = 0, after = 0;
       std::string tag, rest;

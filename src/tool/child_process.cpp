@@ -7,27 +7,18 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <thread>
+
+#include "harness/processes/interrupts.h"
 
 extern char** environ;
 
 namespace cc::tool {
-namespace {
 
-volatile std::sig_atomic_t g_interrupted = 0;
+void interrupt_children_on_signal() { harness::count_interrupts(); }
 
-void on_signal(int) { g_interrupted = 1; }
-
-}  // namespace
-
-void interrupt_children_on_signal() {
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
-}
-
-bool interrupted() { return g_interrupted != 0; }
+bool interrupted() { return harness::interrupts() > 0; }
 
 double monotonic_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();

@@ -126,6 +126,25 @@ TEST(CampaignSignals, SigtermToItsPidAloneStopsTheWorkersAndKeepsEverything) { i
 
 TEST(CampaignSignals, ASecondSigintStoresTheRestAsFoundAtOnce) { interrupt_and_check({SIGINT, SIGINT}, 0.2, 3); }
 
+// With no time left to shrink, findings are stored as found and marked so, in the case file
+// and in the JSON.
+TEST(CampaignBudget, FindingsWithNoTimeLeftAreStoredAsFoundAndMarked) {
+  TempFolder folder("crosscheck_campaign_budget");
+  const fs::path out = folder.path() / "new", json_path = folder.path() / "run.json", log = folder.path() / "log";
+  const harness::ChildEnd end = harness::finish_child(
+      start_campaign({"--seconds", "0.1", "--out", out.string(), "--json", json_path.string()}, log), 30);
+  const std::string output = text_of(log);
+  ASSERT_EQ(end.status, 0) << output;
+  const harness::Json json = harness::Json::parse(text_of(json_path));
+  expect_every_finding_stored(json, out, output);
+  for (const harness::Json& f : json["findings"]) {
+    if (f["stored"] != "written") continue;
+    EXPECT_EQ(f["not_shrunk"], "no time left in --seconds") << f.dump();
+    EXPECT_EQ(harness::read_case_file(f["case_file"].get<std::string>()).not_shrunk, "no time left in --seconds");
+  }
+  EXPECT_EQ(json["stored"]["shrunk"], 0);
+}
+
 // Two campaigns of the same seed into one folder: they find the same cases, so they race for
 // the same names; each file is created by one of them, and their counts add up to the files.
 TEST(CampaignFiles, TwoCampaignsIntoOneFolderLoseNothingAndCountExactly) {
