@@ -106,6 +106,30 @@ TEST(JudgeTriTri, DecidesSubnormalAndHugeInputs) {
   }
 }
 
+TEST(JudgeObbObb, DecidesSubnormalAndHugeInputs) {
+  const Mat3 identity = Mat3::from_columns({1, 0, 0}, {0, 1, 0}, {0, 0, 1});
+  for (const double s : {0x1p-1070, 0x1p-600, 0x1p600, 0x1p1000}) {
+    const Obb a{{0, 0, 0}, {s, s, s}, identity};
+    const ExactVerdict touching = judge(harness::ObbObbInput{a, {{2 * s, 0, 0}, {s, s, s}, identity}});
+    EXPECT_EQ(touching.contract, Contract::unspecified) << s;
+    EXPECT_TRUE(touching.decided) << s;
+    EXPECT_TRUE(touching.answer.hit) << s;
+    EXPECT_EQ(touching.margin, 0) << s;
+    const ExactVerdict apart = judge(harness::ObbObbInput{a, {{3 * s, 0, 0}, {s, s, s}, identity}});
+    EXPECT_FALSE(apart.answer.hit) << s;
+    EXPECT_LT(apart.margin, 0) << s;
+    const auto t = [](Vec3 p, Vec3 q, Vec3 r) { return Triangle{{p, q, r}}; };
+    const harness::TriObbInput tri{t({0, 0, s}, {s, 0, s}, {0, s, s}), a};
+    EXPECT_TRUE(judge(tri).answer.hit) << s;
+    EXPECT_TRUE(judge(tri).decided) << s;
+    const harness::TriAabbInput tri_box{t({0, 0, s}, {s, 0, s}, {0, s, 2 * s}), {{-s, -s, -s}, {s, s, s}}};
+    EXPECT_TRUE(judge(tri_box).answer.hit) << s;
+    const harness::TriAabbInput tri_apart{t({0, 0, 2 * s}, {s, 0, 2 * s}, {0, s, 2 * s}), {{-s, -s, -s}, {s, s, s}}};
+    EXPECT_FALSE(judge(tri_apart).answer.hit) << s;
+    EXPECT_EQ(judge(tri_apart).contract, Contract::unspecified) << s;
+  }
+}
+
 TEST(JudgeAabbAabb, MarginIsTheSmallestOverlap) {
   EXPECT_DOUBLE_EQ(judge(harness::AabbAabbInput{kUnit, {{0.75, 0, 0}, {1.75, 1, 1}}}).margin, 0.25 / 1.75);
   const ExactVerdict apart = judge(harness::AabbAabbInput{kUnit, {{3, 0, 0}, {4, 1, 1}}});
