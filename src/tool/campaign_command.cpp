@@ -105,6 +105,7 @@ struct Storage {
   std::string not_shrunk;  // written as found, and why
   std::string failure;     // why it could not be stored
   std::size_t group = 0;   // the findings of its kind of finding (same key), itself included
+  std::size_t like = 0;    // grouped: the finding of its kind that was chosen to be stored
 };
 
 std::string_view how_name(Storage::How how) {
@@ -203,8 +204,7 @@ std::vector<std::size_t> chosen_findings(const CampaignResult& r, const Campaign
     ++stored.of[first_of_key[key]].group;
     if (per_key[key]++ >= args.per_key) {
       stored.of[i].how = Storage::How::grouped;
-      stored.of[i].group = 0;
-      stored.of[i].path = std::to_string(first_of_key[key]);  // resolved to a path once stored
+      stored.of[i].like = first_of_key[key];
       continue;
     }
     queues[{f.kind, f.evaluation.verdict.cls}].push_back(i);
@@ -296,7 +296,7 @@ Stored store_findings(const CampaignResult& r, const CampaignArgs& args, double 
       case Storage::How::over_cap: ++s.over_cap; break;
       case Storage::How::grouped: {
         ++s.grouped;
-        storage.path = s.of[std::stoul(storage.path)].path;  // empty when that one was not stored
+        storage.path = s.of[storage.like].path;  // empty when that one was not stored
         break;
       }
     }
@@ -416,8 +416,7 @@ int run(const CampaignArgs& args) {
     std::fprintf(stderr, "crosscheck campaign: interrupted: storing the %zu findings%s\n", r.findings.size(),
                  args.max_new > 0 ? " (interrupt again to store them as found, unshrunk, at once)" : "");
   }
-  const Stored s = args.max_new > 0 ? store_findings(r, args, started + args.seconds)
-                                    : Stored{std::vector<Storage>(r.findings.size()), 0, 0, 0, 0, 0, 0, {}, {}};
+  const Stored s = store_findings(r, args, started + args.seconds);
   std::printf("\n");
   print_findings(r, s, args.max_print);
   print_table(r);

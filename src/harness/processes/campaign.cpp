@@ -265,7 +265,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
         if (phase == in_library) f.evaluation.library_failure = f.crash;
         f.evaluation.exact.decided = false;
         f.evaluation.exact.margin = NAN;
-        f.evaluation.exact.note = phase == in_library ? "not computed: the library " + f.crash : "the exact reference " + f.crash;
+        f.evaluation.exact.note = phase == in_library ? "not computed: " + f.crash : f.crash;
         f.evaluation.verdict.cls = phase == in_library ? CaseClass::impl_bug : CaseClass::undecided;
         f.evaluation.verdict.parties = {{"library", phase == in_library ? Standing::wrong : Standing::not_applicable, f.crash}};
       }
