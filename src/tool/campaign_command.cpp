@@ -39,12 +39,12 @@ using harness::median;
 using namespace harness;
 
 // The share of --seconds that shrinking the findings gets (the cases get the rest); after an
-// interrupt it gets at most kGraceAfterInterrupt more; a finding is shrunk only if its share
-// of what is left is at least kMinShrinkSeconds (and its child gets kShrinkSlackSeconds more
-// before it is killed).
+// interrupt it gets at most kGraceAfterInterrupt more; a finding is shrunk for its share of
+// what is left, at least kMinShrinkSeconds (else it is stored as found), and its child gets
+// kShrinkSlackSeconds more before it is killed.
 constexpr double kShrinkShare = 0.25;
 constexpr double kGraceAfterInterrupt = 3;
-constexpr double kMinShrinkSeconds = 0.05;
+constexpr double kMinShrinkSeconds = 0.1;
 constexpr double kShrinkSlackSeconds = 2;
 
 struct CampaignArgs {
@@ -242,8 +242,10 @@ Stored store_findings(const CampaignResult& r, const CampaignArgs& args, double 
       continue;
     }
     if (interrupts() > 0) deadline = std::min(deadline, monotonic_seconds() + kGraceAfterInterrupt);
+    // An equal share of the time left, but at least kMinShrinkSeconds while that is left: when
+    // the time is short the first findings are shrunk, the rest stored as found.
     const double left = deadline - monotonic_seconds();
-    const double share = left / static_cast<double>(chosen.size() - n);
+    const double share = std::max(left / static_cast<double>(chosen.size() - n), std::min(left, kMinShrinkSeconds));
     std::fprintf(stderr, tty ? "\r[storing %zu/%zu] %-14s case %llu, %.1f s left   " : "[storing %zu/%zu] %s case %llu, %.1f s left\n",
                  n + 1, chosen.size(), std::string(name(f.kind)).c_str(), static_cast<unsigned long long>(f.case_index),
                  std::max(0.0, left));
