@@ -8,6 +8,7 @@
 #include <signal.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <csignal>
 #include <fstream>
@@ -32,10 +33,16 @@ double since(Clock::time_point start) { return std::chrono::duration<double>(Clo
 // alone is the test), its output in `log`. Findings come reliably from out-of-contract
 // aabb_aabb cases: FCL's AABBd::overlap says hit for inverted or NaN boxes, where the library
 // documents miss.
-harness::Child start_campaign(const std::vector<std::string>& args, const fs::path& log) {
-  std::vector<std::string> all = {CROSSCHECK_BINARY, "campaign", "--query", "aabb_aabb", "--out-of-contract", "100",
-                                  "--workers", "2", "--max-new", "1000", "--corpora",
-                                  (log.parent_path() / "no_corpus").string()};
+// `wrapper` (a command that runs the rest) comes first when given.
+harness::Child start_campaign(const std::vector<std::string>& args, const fs::path& log,
+                              const std::vector<std::string>& wrapper = {}) {
+  std::vector<std::string> all = wrapper;
+  all.insert(all.end(), {CROSSCHECK_BINARY, "campaign", "--query", "aabb_aabb", "--out-of-contract", "100"});
+  const std::pair<std::string, std::string> defaults[] = {
+      {"--workers", "2"}, {"--max-new", "1000"}, {"--corpora", (log.parent_path() / "no_corpus").string()}};
+  for (const auto& [flag, value] : defaults) {
+    if (std::find(args.begin(), args.end(), flag) == args.end()) all.insert(all.end(), {flag, value});
+  }
   all.insert(all.end(), args.begin(), args.end());
   fs::create_directories(log.parent_path() / "no_corpus");
   std::vector<char*> argv;
@@ -47,7 +54,7 @@ harness::Child start_campaign(const std::vector<std::string>& args, const fs::pa
     const int fd = ::open(log_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
     ::dup2(fd, STDOUT_FILENO);
     ::dup2(fd, STDERR_FILENO);
-    ::execv(argv[0], argv.data());
+    ::execvp(argv[0], argv.data());
     return 127;
   });
 }
@@ -143,6 +150,31 @@ TEST(CampaignBudget, FindingsWithNoTimeLeftAreStoredAsFoundAndMarked) {
     EXPECT_EQ(harness::read_case_file(f["case_file"].get<std::string>()).not_shrunk, "no time left in --seconds");
   }
   EXPECT_EQ(json["stored"]["shrunk"], 0);
+}
+
+// A fork that fails (here: a process limit for an unprivileged user) costs the campaign that
+// worker, reported with the reason and exit status 3, never an abort or a worker left behind.
+TEST(CampaignWorkers, AFailedForkIsReportedNotAnAbort) {
+  if (::geteuid() != 0) GTEST_SKIP() << "needs root to run the campaign as another user under a process limit";
+  TempFolder folder("crosscheck_campaign_fork");
+  fs::permissions(folder.path(), fs::perms::all);
+  const fs::path json_path = folder.path() / "run.json", log = folder.path() / "log";
+  harness::Child child =
+      start_campaign({"--seconds", "1", "--workers", "3", "--max-new", "0", "--json", json_path.string()}, log,
+                     {"setpriv", "--reuid=65534", "--regid=65534", "--clear-groups", "prlimit", "--nproc=2"});
+  const harness::ChildEnd end = harness::finish_child(child, 30);
+  const std::string output = text_of(log);
+  if (end.status == 127 || output.find("crosscheck campaign:") == std::string::npos) {
+    GTEST_SKIP() << "setpriv or prlimit cannot run here: " << output;
+  }
+  EXPECT_EQ(end.status, 3) << output;
+  EXPECT_EQ(::kill(-child.pid, 0), -1) << "a process of the campaign's group is still running";
+  const harness::Json json = harness::Json::parse(text_of(json_path));
+  ASSERT_FALSE(json["problems"].empty()) << output;
+  EXPECT_NE(json["problems"][0].get<std::string>().find("could not be started (fork: "), std::string::npos)
+      << json["problems"].dump();
+  EXPECT_LT(json["workers"].get<int>(), 3);
+  EXPECT_NE(output.find("PROBLEM: worker "), std::string::npos) << output;
 }
 
 // Two campaigns of the same seed into one folder: they find the same cases, so they race for

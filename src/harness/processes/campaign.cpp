@@ -222,6 +222,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
   };
   std::size_t alive = 0;
   for (int w = 0; w < options.workers; ++w) alive += spawn(w) ? 1 : 0;
+  result.workers = static_cast<int>(alive);  // the rates are those of the workers that ran
 
   const auto exact = oracles.exact();
   const auto second = oracles.second();

@@ -51,7 +51,7 @@ struct Finding {
 struct CampaignResult {
   std::uint64_t seed = 0;
   double seconds = 0;
-  int workers = 0;
+  int workers = 0;  // started (fewer than asked for when a fork failed)
   bool interrupted = false;  // by SIGINT or SIGTERM (see interrupts.h): the workers were stopped
   std::vector<std::string> problems;  // what went wrong in the supervision (a fork that failed)
   std::uint64_t noisy_cases = 0;       // cases on which a party wrote to standard error
