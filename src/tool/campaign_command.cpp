@@ -166,7 +166,8 @@ int shrink_and_store(const Finding& f, const CampaignArgs& args, const std::vect
     line += "K " + stored_case_path(args.corpora, case_file_name(r.input)) + "\n";
   } else {
     try {
-      const Case c = stored_case(f, r.input, r.evaluation, args, r.out_of_time ? "shrinking ran out of time" : "");
+      Case c = stored_case(f, r.input, r.evaluation, args, "");
+      if (r.out_of_time) c.note += "; shrinking ran out of time (it may shrink further)";
       const auto target = case_path(f, r.input, args);
       const auto path = write_new_case_file(target, c);
       line += path ? "W " + path->string() + "\n" : "K " + target.string() + "\n";
