@@ -430,10 +430,10 @@ int run(const CampaignArgs& args) {
   }
   if (r.interrupted) std::printf("\n(interrupted after %.1f s)\n", r.seconds);
   if (args.max_new > 0 && !r.findings.empty()) {
-    std::printf("\n%d new case file%s written to %s (%d shrunk, %d as found), %d already stored under %s, "
+    std::printf("\n%d new case file%s written to %s (%d shrunk, %d as found), %d already stored (under %s or %s), "
                 "%d findings grouped with others, %d over --max-new %d%s\n",
                 s.written, s.written == 1 ? "" : "s", args.out.c_str(), s.shrunk, s.written - s.shrunk, s.known,
-                args.corpora.c_str(), s.grouped, s.over_cap, args.max_new,
+                args.corpora.c_str(), args.out.c_str(), s.grouped, s.over_cap, args.max_new,
                 s.failed ? (", " + std::to_string(s.failed) + " COULD NOT BE STORED (see above)").c_str() : "");
     if (!s.complex_before.empty()) {
       std::printf("shrinking: median number of values that are not small integers or halves, %g before and %g "
