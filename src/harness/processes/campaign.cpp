@@ -278,36 +278,30 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
     }
     result.findings.push_back(std::move(f));
   };
-  const auto handle_line = [&](const std::string& line) {  // "F <kind> <case index> <opinions>"
+  // A worker's line: "F <kind> <case index> <opinions>" (a finding) or "E <kind> <case index>
+  // <first line>" (a case that wrote to standard error).
+  const auto handle_line = [&](const std::string& line) {
     std::istringstream in(line);
     char tag = 0;
     int kind_number = 0;
     std::uint64_t index = 0;
     in >> tag >> kind_number >> index;
-    if (tag != 'F' || !in) return;
+    if (!in) return;
+    const auto kind = static_cast<QueryKind>(kind_number);
+    std::string rest;
+    std::getline(in, rest);
+    if (tag == 'E') {
+      if (result.noisy_cases++ == 0) result.first_noise = std::string(name(kind)) + " case " + std::to_string(index) + ":" + rest;
+      return;
+    }
+    if (tag != 'F') return;
     std::optional<std::vector<Opinion>> opinions;
     try {
-      std::string rest;
-      std::getline(in, rest);
       opinions = opinions_from_json(Json::parse(rest), "");
-      restore_bands(*opinions, *second, static_cast<QueryKind>(kind_number));
+      restore_bands(*opinions, *second, kind);
     } catch (const std::exception&) {
     }
-    record_finding(static_cast<QueryKind>(kind_number), index, "", idle, opinions);
-  };
-  const auto handle_noise = [&](const std::string& line) {  // "E <kind> <case index> <first line>"
-    std::istringstream in(line);
-    char tag = 0;
-    int kind_number = 0;
-    std::uint64_t index = 0;
-    in >> tag >> kind_number >> index;
-    if (tag != 'E' || !in) return;
-    std::string text;
-    std::getline(in, text);
-    if (result.noisy_cases++ == 0) {
-      result.first_noise = std::string(name(static_cast<QueryKind>(kind_number))) + " case " + std::to_string(index) +
-                           ":" + text;
-    }
+    record_finding(kind, index, "", idle, opinions);
   };
   // The tallies: the workers' shared counters plus the cases they died on.
   const auto tallies = [&] {
@@ -356,12 +350,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
         w.buffer.append(chunk, static_cast<std::size_t>(n));
         std::size_t eol;
         while ((eol = w.buffer.find('\n')) != std::string::npos) {
-          const std::string line = w.buffer.substr(0, eol);
-          if (line.starts_with("E ")) {
-            handle_noise(line);
-          } else {
-            handle_line(line);
-          }
+          handle_line(w.buffer.substr(0, eol));
           w.buffer.erase(0, eol + 1);
         }
         continue;
