@@ -332,7 +332,7 @@ void print_findings(const CampaignResult& r, const Stored& s, int max_print) {
     std::printf("%s %s case %llu%s: %s\n  -> %s\n", std::string(to_string(f.evaluation.verdict.cls)).c_str(),
                 std::string(name(f.kind)).c_str(), static_cast<unsigned long long>(f.case_index),
                 storage.group > 1 ? (" (and " + std::to_string(storage.group - 1) + " like it)").c_str() : "",
-                elided(summary_of(f), 200).c_str(), where.c_str());
+                elided(summary_of(f), 150).c_str(), where.c_str());
   }
   if (unprinted.empty()) return;
   std::string rest;
@@ -343,7 +343,7 @@ void print_findings(const CampaignResult& r, const Stored& s, int max_print) {
             std::string(name(key.first));
   }
   std::printf("(%d more kinds of finding not printed or not stored: %s; --json lists every finding)\n", kinds,
-              elided(rest, 400).c_str());
+              elided(rest, 240).c_str());
 }
 
 Json result_json(const CampaignResult& r, const Stored& s, int signal) {
