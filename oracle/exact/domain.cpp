@@ -18,9 +18,16 @@ harness::ExactVerdict documented(bool answer, std::string why) {
 harness::ExactVerdict unspecified(std::string why) {
   harness::ExactVerdict v;
   v.contract = harness::Contract::unspecified;
+  v.decided = false;  // no verdict: the reference gives no answer here
   v.margin = NAN;
   v.note = std::move(why);
   return v;
+}
+
+harness::ExactVerdict beyond_range(harness::ExactVerdict decided, std::string why) {
+  decided.contract = harness::Contract::unspecified;
+  decided.note = std::move(why);
+  return decided;
 }
 
 bool has_nan(std::initializer_list<double> values) {

@@ -13,8 +13,12 @@ namespace cc::exact {
 
 /// A verdict for inputs the library documents an answer for out of its domain.
 harness::ExactVerdict documented(bool answer, std::string why);
-/// A verdict for inputs outside the domain with no documented answer.
+/// A verdict for inputs outside the domain with no documented answer: no verdict (not decided).
 harness::ExactVerdict unspecified(std::string why);
+
+/// A verdict the reference decided (rationals have no range limit) for finite inputs outside the
+/// library's range: the same answer and margin, marked out of contract (unspecified) and why.
+harness::ExactVerdict beyond_range(harness::ExactVerdict decided, std::string why);
 
 bool has_nan(std::initializer_list<double> values);
 bool all_finite(std::initializer_list<double> values);

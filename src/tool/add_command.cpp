@@ -5,6 +5,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <optional>
 
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
@@ -63,8 +64,10 @@ int run(const AddArgs& args) {
   const harness::Evaluation e = evaluate_with_oracles(input);
   const harness::Case c = case_of(input, e, harness::Provenance{}, args.note);
   const auto path = std::filesystem::path(args.corpora) / args.query / harness::case_file_name(input);
+  std::optional<std::filesystem::path> written;
   try {
-    if (!harness::write_new_case_file(path, c)) {
+    written = harness::write_new_case_file(path, c);
+    if (!written) {
       std::fprintf(stderr, "crosscheck add: %s exists already: not overwritten\n", path.string().c_str());
       return kExitBadInput;
     }
@@ -73,7 +76,7 @@ int run(const AddArgs& args) {
     return kExitBadInput;
   }
   const exact::ExactRationalReference exact;
-  std::printf("%s\n", triage_text(path.string(), c, e, exact.explain(input)).c_str());
+  std::printf("%s\n", triage_text(written->string(), c, e, exact.explain(input)).c_str());
   return 0;
 }
 

@@ -1,6 +1,8 @@
-// crosscheck campaign: the main job. Runs every query kind (or those named) for a time budget
-// and prints a table of classes per kind; each impl_bug, oracle_defect and oracle_crash is
-// printed with its exact inputs.
+// crosscheck campaign: the main job. Runs every query kind (or those named) within a time budget,
+// stores what it finds as new case files (shrunk while the budget lasts), and prints one line per
+// finding with its case file and a table of classes per kind. SIGINT or SIGTERM stops it and
+// keeps everything; a second one stores the rest as found at once.
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <cstdio>
@@ -10,17 +12,22 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cerrno>
 #include <csignal>
+#include <cstring>
+#include <sstream>
 #include <system_error>
 
 #include "harness/processes/campaign.h"
 #include "harness/processes/child.h"
+#include "harness/processes/interrupts.h"
 #include "harness/judging/median.h"
 #include "harness/formats/mesh_files.h"
 #include "harness/formats/input_json.h"
 #include "harness/shrinking/shrink.h"
 #include "harness/shrinking/signature.h"
 #include "tool/cases.h"
+#include "tool/child_process.h"
 #include "tool/commands.h"
 #include "tool/flag_checks.h"
 #include "tool/oracles.h"
@@ -35,6 +42,15 @@ using namespace harness;
 // Worker processes at most: more than a machine has cores only slows a campaign down, and an
 // unbounded count is a fork bomb.
 constexpr int kMaxWorkers = 256;
+
+// The share of --seconds that shrinking the findings gets (the cases get the rest); after an
+// interrupt it gets at most kGraceAfterInterrupt more; a finding is shrunk for its share of
+// what is left, at least kMinShrinkSeconds (else it is stored as found), and its child gets
+// kShrinkSlackSeconds more before it is killed.
+constexpr double kShrinkShare = 0.25;
+constexpr double kGraceAfterInterrupt = 3;
+constexpr double kMinShrinkSeconds = 0.1;
+constexpr double kShrinkSlackSeconds = 2;
 
 struct CampaignArgs {
   std::vector<std::string> queries;
@@ -68,9 +84,10 @@ void print_table(const CampaignResult& r) {
 }
 
 std::string summary_of(const Finding& f) {
-  std::string s;
+  std::string s = f.crash;
   for (const PartyStanding& p : f.evaluation.verdict.parties) {
     if (p.standing == Standing::right || p.standing == Standing::not_applicable) continue;
+    if (p.party == "library" && !f.crash.empty() && p.why == f.crash) continue;
     if (!s.empty()) s += "; ";
     s += p.party + " " + std::string(to_string(p.standing)) + ": " + p.why;
   }
@@ -80,28 +97,261 @@ std::string summary_of(const Finding& f) {
   return s;
 }
 
-void print_findings(const CampaignResult& r, int max_print) {
-  std::map<std::pair<QueryKind, CaseClass>, int> printed;
-  std::map<std::pair<QueryKind, CaseClass>, int> skipped;
-  for (const Finding& f : r.findings) {
-    const auto key = std::pair{f.kind, f.evaluation.verdict.cls};
-    if (printed[key] >= max_print) {
-      ++skipped[key];
-      continue;
-    }
-    ++printed[key];
-    std::printf("\n%s %s case %llu: %s%s\n  inputs: %s\n", std::string(to_string(f.evaluation.verdict.cls)).c_str(),
-                std::string(name(f.kind)).c_str(), static_cast<unsigned long long>(f.case_index),
-                f.crash.empty() ? "" : (f.crash + "; ").c_str(), summary_of(f).c_str(),
-                input_to_json(f.input).dump().c_str());
+// A line for the terminal: long texts (a mesh's inputs, a long reason) keep their start.
+std::string elided(const std::string& text, std::size_t limit) {
+  if (text.size() <= limit) return text;
+  return text.substr(0, limit) + "... (" + std::to_string(text.size() - limit) + " more characters)";
+}
+
+// What became of one finding when the campaign stored what it found.
+struct Storage {
+  enum class How { written, known, grouped, over_cap, failed } how = How::over_cap;
+  std::string path;        // its case file (written), or that of the finding it is grouped with
+  std::string not_shrunk;  // written as found, and why
+  std::string failure;     // why it could not be stored
+  std::size_t group = 0;   // the findings of its kind of finding (same key), itself included
+  std::size_t like = 0;    // grouped: the finding of its kind that was chosen to be stored
+};
+
+std::string_view how_name(Storage::How how) {
+  switch (how) {
+    case Storage::How::written: return "written";
+    case Storage::How::known: return "already stored";
+    case Storage::How::grouped: return "grouped";
+    case Storage::How::over_cap: return "not stored (--max-new)";
+    case Storage::How::failed: return "could not be stored";
   }
-  for (const auto& [key, n] : skipped) {
-    std::printf("\n(%d more %s findings on %s not printed; --json lists them all)\n", n,
-                std::string(to_string(key.second)).c_str(), std::string(name(key.first)).c_str());
+  return "?";
+}
+
+struct Stored {
+  std::vector<Storage> of;  // per finding, in the order of CampaignResult::findings
+  int written = 0, shrunk = 0, known = 0, failed = 0, grouped = 0, over_cap = 0;
+  std::vector<int> complex_before, complex_after;  // values not small integers or halves
+};
+
+Case stored_case(const Finding& f, const Input& input, const Evaluation& e, const CampaignArgs& args,
+                 std::string not_shrunk) {
+  const Provenance provenance{"campaign", args.seed, f.case_index, "seed " + std::to_string(args.seed)};
+  Case c = case_of(input, e, provenance, "untriaged: " + signature_of(f.kind, e) + (f.crash.empty() ? "" : "; " + f.crash));
+  c.not_shrunk = std::move(not_shrunk);
+  return c;
+}
+
+// Where a case file of this name is stored under the corpus root (the first found), or its name.
+std::string stored_case_path(const std::filesystem::path& root, const std::string& file_name) {
+  std::error_code ec;
+  for (auto it = std::filesystem::recursive_directory_iterator(root, ec); !ec && it != decltype(it)(); it.increment(ec)) {
+    if (it->path().filename() == file_name) return it->path().string();
+  }
+  return file_name;
+}
+
+std::filesystem::path case_path(const Finding& f, const Input& input, const CampaignArgs& args) {
+  return std::filesystem::path(args.out) / std::string(name(f.kind)) / case_file_name(input);
+}
+
+// Shrinks one finding for at most `seconds` and writes it as a new case file, in a child
+// process: a shrinking step may call FCL on inputs that crash it. Reports on `report` the
+// measure of shrinking before and after, then "W <path>" (written), "K" (already stored) or
+// "F <reason>". FCL's and Eigen's messages while shrinking are dropped (stderr: /dev/null).
+// SIGTERM (the supervisor's stop) ends it, but not while it writes the file and reports it.
+int shrink_and_store(const Finding& f, const CampaignArgs& args, const std::vector<std::string>& known, double seconds,
+                     int report) {
+  if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, STDERR_FILENO);
+  std::signal(SIGINT, SIG_IGN);  // the terminal's Ctrl-C is the supervisor's to judge
+  std::signal(SIGTERM, SIG_DFL);
+  const ShrinkResult r = shrink(f.input, f.evaluation, evaluate_with_oracles, 3000, seconds, args.corpora);
+  sigset_t term;
+  sigemptyset(&term);
+  sigaddset(&term, SIGTERM);
+  sigprocmask(SIG_BLOCK, &term, nullptr);
+  std::string line = std::to_string(complex_values(f.input)) + " " + std::to_string(complex_values(r.input)) + "\n";
+  if (std::binary_search(known.begin(), known.end(), case_file_name(r.input))) {
+    line += "K " + stored_case_path(args.corpora, case_file_name(r.input)) + "\n";
+  } else {
+    try {
+      Case c = stored_case(f, r.input, r.evaluation, args, "");
+      if (r.out_of_time) c.note += "; shrinking ran out of time (it may shrink further)";
+      const auto target = case_path(f, r.input, args);
+      const auto path = write_new_case_file(target, c);
+      line += path ? "W " + path->string() + "\n" : "K " + target.string() + "\n";
+    } catch (const CaseFileError& e) {
+      line += std::string("F ") + e.what() + "\n";
+    }
+  }
+  return harness::write_all(report, line) ? 0 : 1;
+}
+
+// Writes a finding as found, here: no party is asked again.
+void store_as_found(const Finding& f, const CampaignArgs& args, const std::string& why, Storage& s) {
+  try {
+    const auto target = case_path(f, f.input, args);
+    const auto path = write_new_case_file(target, stored_case(f, f.input, f.evaluation, args, why));
+    s.how = path ? Storage::How::written : Storage::How::known;
+    s.path = path ? path->string() : target.string();
+    if (path) s.not_shrunk = why;
+  } catch (const CaseFileError& e) {
+    s.how = Storage::How::failed;
+    s.failure = e.what();
   }
 }
 
-Json result_json(const CampaignResult& r) {
+// The findings to write, one per kind of finding (at most --per-kind-of-finding each), taken
+// in turns from every query kind and class so that the cap (--max-new) is shared by all.
+std::vector<std::size_t> chosen_findings(const CampaignResult& r, const CampaignArgs& args, Stored& stored,
+                                         std::map<std::string, std::size_t>& first_of_key) {
+  std::map<std::string, int> per_key;
+  std::map<std::pair<QueryKind, CaseClass>, std::vector<std::size_t>> queues;
+  for (std::size_t i = 0; i < r.findings.size(); ++i) {
+    const Finding& f = r.findings[i];
+    const std::string key = finding_key(f.input, f.evaluation) + (f.crash.empty() ? "" : " crash");
+    first_of_key.try_emplace(key, i);
+    ++stored.of[first_of_key[key]].group;
+    if (per_key[key]++ >= args.per_key) {
+      stored.of[i].how = Storage::How::grouped;
+      stored.of[i].like = first_of_key[key];
+      continue;
+    }
+    queues[{f.kind, f.evaluation.verdict.cls}].push_back(i);
+  }
+  std::vector<std::size_t> chosen;
+  for (std::size_t turn = 0; static_cast<int>(chosen.size()) < args.max_new; ++turn) {
+    bool any = false;
+    for (auto& [key, queue] : queues) {
+      if (turn < queue.size() && static_cast<int>(chosen.size()) < args.max_new) {
+        chosen.push_back(queue[turn]);
+        any = true;
+      }
+    }
+    if (!any) break;
+  }
+  return chosen;
+}
+
+// Stores the findings by `deadline` (seconds on the monotonic clock): each is shrunk for its
+// share of the time left, or written as found (and marked so) when none is left, when the run
+// was interrupted and the grace after it is over, or when a second SIGINT or SIGTERM arrives.
+Stored store_findings(const CampaignResult& r, const CampaignArgs& args, double deadline) {
+  Stored s;
+  s.of.resize(r.findings.size());
+  std::map<std::string, std::size_t> first_of_key;
+  const std::vector<std::size_t> chosen = chosen_findings(r, args, s, first_of_key);
+  std::vector<std::string> known = stored_case_names(args.corpora);
+  const bool tty = isatty(STDERR_FILENO) != 0;
+  for (std::size_t n = 0; n < chosen.size(); ++n) {
+    const Finding& f = r.findings[chosen[n]];
+    Storage& storage = s.of[chosen[n]];
+    if (std::binary_search(known.begin(), known.end(), case_file_name(f.input))) {
+      storage.how = Storage::How::known;
+      storage.path = stored_case_path(args.corpora, case_file_name(f.input));
+      continue;
+    }
+    if (interrupts() > 0) deadline = std::min(deadline, monotonic_seconds() + kGraceAfterInterrupt);
+    // An equal share of the time left, but at least kMinShrinkSeconds while that is left: when
+    // the time is short the first findings are shrunk, the rest stored as found.
+    const double left = deadline - monotonic_seconds();
+    const double share = std::max(left / static_cast<double>(chosen.size() - n), std::min(left, kMinShrinkSeconds));
+    std::fprintf(stderr, tty ? "\r[storing %zu/%zu] %-14s case %llu, %.1f s left   " : "[storing %zu/%zu] %s case %llu, %.1f s left\n",
+                 n + 1, chosen.size(), std::string(name(f.kind)).c_str(), static_cast<unsigned long long>(f.case_index),
+                 std::max(0.0, left));
+    const bool crashed = !f.crash.empty();  // shrinking would crash it again
+    if (interrupts() > 1 || share < kMinShrinkSeconds || crashed) {
+      store_as_found(f, args,
+                     crashed ? "a crash or hang is stored as found"
+                     : interrupts() > 1 ? "interrupted twice"
+                     : interrupts() > 0 ? "interrupted" : "no time left in --seconds",
+                     storage);
+    } else {
+      harness::ChildEnd child;
+      try {
+        child = harness::run_in_child([&](int out) { return shrink_and_store(f, args, known, share, out); },
+                                      share + kShrinkSlackSeconds, [] { return interrupts() > 1; });
+      } catch (const std::system_error& e) {  // no process to shrink in: stored as found
+        store_as_found(f, args, std::string("cannot shrink: ") + e.what(), storage);
+        continue;
+      }
+      std::istringstream report(child.output);
+      int before = 0, after = 0;
+      std::string tag, rest;
+      if (report >> before >> after >> tag) {
+        std::getline(report >> std::ws, rest);
+        s.complex_before.push_back(before);
+        s.complex_after.push_back(after);
+      }
+      // Its report counts once given, even if the child was stopped after it: the file is there.
+      if (tag == "W" || tag == "K") {
+        storage.how = tag == "W" ? Storage::How::written : Storage::How::known;
+        storage.path = rest;
+      } else if (tag == "F") {
+        storage.how = Storage::How::failed;
+        storage.failure = rest;
+      } else {  // the shrinking child crashed, ran out of time or was stopped first: as found
+        store_as_found(f, args, child.stopped ? "interrupted twice" : "shrinking " + child.what(), storage);
+      }
+    }
+    if (storage.how == Storage::How::written) known = stored_case_names(args.corpora);  // it may be under the root
+  }
+  if (tty && !chosen.empty()) std::fprintf(stderr, "\n");
+  for (Storage& storage : s.of) {
+    switch (storage.how) {
+      case Storage::How::written:
+        ++s.written;
+        s.shrunk += storage.not_shrunk.empty();
+        break;
+      case Storage::How::known: ++s.known; break;
+      case Storage::How::failed: ++s.failed; break;
+      case Storage::How::over_cap: ++s.over_cap; break;
+      case Storage::How::grouped: {
+        ++s.grouped;
+        storage.path = s.of[storage.like].path;  // empty when that one was not stored
+        break;
+      }
+    }
+  }
+  return s;
+}
+
+// One line per finding stored (or that could not be), at most --max-print per query and class,
+// each naming its case file (the inputs are there and in --json); one line counts the rest.
+void print_findings(const CampaignResult& r, const Stored& s, int max_print) {
+  std::map<std::pair<QueryKind, CaseClass>, int> printed, unprinted;
+  for (std::size_t i = 0; i < r.findings.size(); ++i) {
+    const Finding& f = r.findings[i];
+    const Storage& storage = s.of[i];
+    if (storage.how == Storage::How::grouped) continue;
+    const auto key = std::pair{f.kind, f.evaluation.verdict.cls};
+    if (storage.how == Storage::How::over_cap || printed[key] >= max_print) {
+      ++unprinted[key];
+      continue;
+    }
+    ++printed[key];
+    std::string where;
+    switch (storage.how) {
+      case Storage::How::written:
+        where = storage.path + (storage.not_shrunk.empty() ? "" : " (not shrunk: " + storage.not_shrunk + ")");
+        break;
+      case Storage::How::failed: where = "NOT STORED: " + storage.failure; break;
+      default: where = "already stored (" + case_file_name(f.input) + ")";
+    }
+    std::printf("%s %s case %llu%s: %s\n  -> %s\n", std::string(to_string(f.evaluation.verdict.cls)).c_str(),
+                std::string(name(f.kind)).c_str(), static_cast<unsigned long long>(f.case_index),
+                storage.group > 1 ? (" (and " + std::to_string(storage.group - 1) + " like it)").c_str() : "",
+                elided(summary_of(f), 150).c_str(), where.c_str());
+  }
+  if (unprinted.empty()) return;
+  std::string rest;
+  int kinds = 0;
+  for (const auto& [key, n] : unprinted) {
+    kinds += n;
+    rest += (rest.empty() ? "" : ", ") + std::to_string(n) + " " + std::string(to_string(key.second)) + " on " +
+            std::string(name(key.first));
+  }
+  std::printf("(%d more kinds of finding not printed or not stored: %s; --json lists every finding)\n", kinds,
+              elided(rest, 240).c_str());
+}
+
+Json result_json(const CampaignResult& r, const Stored& s, int signal) {
   Json queries = Json::object();
   for (const auto& [kind, t] : r.tallies) {
     Json q = {{"cases", t.cases}};
@@ -110,86 +360,34 @@ Json result_json(const CampaignResult& r) {
     queries[std::string(name(kind))] = q;
   }
   Json findings = Json::array();
-  for (const Finding& f : r.findings) {
-    findings.push_back({{"query", name(f.kind)},
-                        {"case", f.case_index},
-                        {"class", to_string(f.evaluation.verdict.cls)},
-                        {"what", f.crash.empty() ? summary_of(f) : f.crash + "; " + summary_of(f)},
-                        {"inputs", input_to_json(f.input)}});
+  for (std::size_t i = 0; i < r.findings.size(); ++i) {
+    const Finding& f = r.findings[i];
+    const Storage& storage = s.of[i];
+    Json j = {{"query", name(f.kind)},
+              {"case", f.case_index},
+              {"class", to_string(f.evaluation.verdict.cls)},
+              {"what", summary_of(f)},
+              {"stored", how_name(storage.how)}};
+    // A finding grouped with a stored one is like it, and its inputs follow from the seed and
+    // its case number (harness::campaign_case): they are not spelled out again.
+    if (storage.how != Storage::How::grouped || storage.path.empty()) j["inputs"] = input_to_json(f.input);
+    if (!storage.path.empty()) j["case_file"] = storage.path;
+    if (!storage.not_shrunk.empty()) j["not_shrunk"] = storage.not_shrunk;
+    if (!storage.failure.empty()) j["failure"] = storage.failure;
+    findings.push_back(j);
   }
-  return {{"seed", r.seed},       {"seconds", r.seconds},  {"workers", r.workers},
-          {"interrupted", r.interrupted}, {"queries", queries}, {"findings", findings}};
-}
-
-struct Stored {
-  int written = 0, known = 0, failed = 0, grouped = 0;
-  std::vector<int> complex_before, complex_after;  // values not small integers or halves
-};
-
-// Shrinks one finding and writes it as a new case file, in a child process: a shrinking step
-// may call FCL on inputs that crash it. Exit 0: written; 3: already stored; else failed.
-int store_one(const Finding& f, const CampaignArgs& args, const std::vector<std::string>& known, int report) {
-  const auto is_known = [&](const Input& in) {
-    return std::binary_search(known.begin(), known.end(), case_file_name(in));
-  };
-  if (is_known(f.input)) return 3;
-  Input input = f.input;
-  Evaluation e = f.evaluation;
-  if (f.crash.empty()) {
-    const ShrinkResult r = shrink(f.input, f.evaluation, evaluate_with_oracles, 3000, 20, args.corpora);
-    input = r.input;
-    e = r.evaluation;
-  }
-  const std::string counts = std::to_string(complex_values(f.input)) + " " + std::to_string(complex_values(input)) + "\n";
-  if (!harness::write_all(report, counts)) return 1;
-  if (is_known(input)) return 3;
-  const Provenance provenance{"campaign", std::nullopt, f.case_index, "seed " + std::to_string(args.seed)};
-  Case c = case_of(input, e, provenance, "untriaged: " + signature_of(f.kind, e) + (f.crash.empty() ? "" : "; " + f.crash));
-  c.provenance.seed = args.seed;
-  const auto path = std::filesystem::path(args.out) / std::string(name(f.kind)) / case_file_name(input);
-  try {
-    return write_new_case_file(path, c) ? 0 : 3;
-  } catch (const CaseFileError&) {
-    return 1;
-  }
-}
-
-Stored store_findings(const CampaignResult& r, const CampaignArgs& args) {
-  Stored s;
-  std::vector<std::string> known = stored_case_names(args.corpora);
-  std::map<std::string, int> per_key;
-  for (const Finding& f : r.findings) {
-    if (s.written >= args.max_new) break;
-    const std::string key = finding_key(f.input, f.evaluation) + (f.crash.empty() ? "" : " crash");
-    if (per_key[key]++ >= args.per_key) {
-      ++s.grouped;
-      continue;
-    }
-    harness::ChildEnd child;
-    try {
-      child = harness::run_in_child([&](int out) { return store_one(f, args, known, out); }, 120);
-    } catch (const std::system_error&) {
-      break;
-    }
-    int before = 0, after = 0;
-    if (std::sscanf(child.output.c_str(), "%d %d", &before, &after) == 2) {
-      s.complex_before.push_back(before);
-      s.complex_after.push_back(after);
-    }
-    const int code = child.status;
-    if (code == 0) {
-      ++s.written;
-      known = stored_case_names(args.corpora);  // the new file may be under the corpus root
-    } else if (code == 3) {
-      ++s.known;
-    } else {
-      ++s.failed;
-    }
-  }
-  return s;
+  const Json stored = {{"written", s.written}, {"shrunk", s.shrunk},     {"already_stored", s.known},
+                       {"grouped", s.grouped}, {"over_cap", s.over_cap}, {"failed", s.failed}};
+  Json j = {{"seed", r.seed},         {"seconds", r.seconds}, {"workers", r.workers},
+            {"interrupted", r.interrupted}, {"queries", queries}, {"findings", findings},
+            {"stored", stored},       {"problems", r.problems}, {"cases_writing_to_stderr", r.noisy_cases}};
+  if (signal != 0) j["signal"] = signal;
+  return j;
 }
 
 int run(const CampaignArgs& args) {
+  count_interrupts();  // from here on SIGINT and SIGTERM stop the run and keep what it found
+  const double started = monotonic_seconds();
   CampaignOptions options;
   for (const std::string& q : args.queries) {
     const auto kind = query_kind_named(q);
@@ -200,7 +398,8 @@ int run(const CampaignArgs& args) {
     options.kinds.push_back(*kind);
   }
   if (options.kinds.empty()) options.kinds.assign(kAllQueryKinds.begin(), kAllQueryKinds.end());
-  options.seconds = args.seconds;
+  // --seconds bounds the whole run: cases get their share, shrinking what they found the rest.
+  options.seconds = args.max_new > 0 ? args.seconds * (1 - kShrinkShare) : args.seconds;
   options.seed = args.seed;
   options.workers = std::max(1, args.workers);
   options.mesh_folder = mesh_folder(args.corpora);
@@ -215,34 +414,52 @@ int run(const CampaignArgs& args) {
       std::fprintf(stderr, "%s\n", line.c_str());
     }
   };
-  std::printf("crosscheck campaign: seed %llu, %g s, %d workers, %zu query kinds\n",
-              static_cast<unsigned long long>(options.seed), options.seconds, options.workers, options.kinds.size());
+  std::printf("crosscheck campaign: seed %llu, %g s (%g s of cases), %d workers, %zu query kinds\n",
+              static_cast<unsigned long long>(options.seed), args.seconds, options.seconds, options.workers,
+              options.kinds.size());
   std::fflush(stdout);
   const CampaignResult r = run_campaign(options, make_oracles());
   if (tty) std::fprintf(stderr, "\n");
-  print_findings(r, args.max_print);
+  if (r.interrupted) {
+    std::fprintf(stderr, "crosscheck campaign: interrupted: storing the %zu findings%s\n", r.findings.size(),
+                 args.max_new > 0 ? " (interrupt again to store them as found, unshrunk, at once)" : "");
+  }
+  const Stored s = store_findings(r, args, started + args.seconds);
+  std::printf("\n");
+  print_findings(r, s, args.max_print);
   print_table(r);
+  for (const std::string& problem : r.problems) std::printf("PROBLEM: %s\n", problem.c_str());
+  if (r.noisy_cases > 0) {
+    std::printf("\n%llu cases wrote to standard error (FCL's or Eigen's messages, captured); the first, %s\n",
+                static_cast<unsigned long long>(r.noisy_cases), elided(r.first_noise, 160).c_str());
+  }
   if (r.interrupted) std::printf("\n(interrupted after %.1f s)\n", r.seconds);
   if (args.max_new > 0 && !r.findings.empty()) {
-    const Stored s = store_findings(r, args);
-    std::printf("\n%d new case file%s written to %s (shrunk; one per kind of finding), %d already stored under %s, "
-                "%d findings grouped with others%s\n",
-                s.written, s.written == 1 ? "" : "s", args.out.c_str(), s.known, args.corpora.c_str(), s.grouped,
-                s.failed ? (", " + std::to_string(s.failed) + " could not be stored").c_str() : "");
+    std::printf("\n%d new case file%s written to %s (%d shrunk, %d as found), %d already stored (under %s or %s), "
+                "%d findings grouped with others, %d over --max-new %d%s\n",
+                s.written, s.written == 1 ? "" : "s", args.out.c_str(), s.shrunk, s.written - s.shrunk, s.known,
+                args.corpora.c_str(), args.out.c_str(), s.grouped, s.over_cap, args.max_new,
+                s.failed ? (", " + std::to_string(s.failed) + " COULD NOT BE STORED (see above)").c_str() : "");
     if (!s.complex_before.empty()) {
       std::printf("shrinking: median number of values that are not small integers or halves, %g before and %g "
                   "after (over %zu findings)\n",
                   median(s.complex_before), median(s.complex_after), s.complex_before.size());
     }
   }
+  int code = 0;
   if (!args.json.empty()) {
     std::ofstream out(args.json);
-    out << result_json(r).dump(2) << "\n";
+    out << result_json(r, s, r.interrupted ? last_interrupt() : 0).dump(2) << "\n";
+    out.close();
     if (!out) {
-      std::fprintf(stderr, "crosscheck campaign: cannot write %s\n", args.json.c_str());
-      return kExitBadInput;
+      std::fprintf(stderr, "crosscheck campaign: cannot write %s: %s\n", args.json.c_str(), std::strerror(errno));
+      code = kExitIncomplete;
     }
   }
+  std::fflush(stdout);
+  if (s.failed > 0 || !r.problems.empty()) return kExitIncomplete;
+  if (code != 0) return code;
+  if (r.interrupted) return 128 + last_interrupt();
   std::uint64_t bugs = 0;
   for (const auto& [kind, t] : r.tallies) bugs += t.count(CaseClass::impl_bug);
   return bugs > 0 ? kExitFound : 0;

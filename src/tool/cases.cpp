@@ -43,6 +43,7 @@ Case case_of(const Input& input, const Evaluation& e, Provenance provenance, std
   Case c;
   c.input = input;
   c.library = e.library;
+  c.library_failure = e.library_failure;
   c.exact = e.exact;
   c.opinions = e.opinions;
   c.cls = e.verdict.cls;

@@ -1,27 +1,17 @@
 #include "tool/child_process.h"
 
 #include <chrono>
-#include <csignal>
 #include <cstdio>
 #include <system_error>
 
 #include "harness/processes/child.h"
+#include "harness/processes/interrupts.h"
 
 namespace cc::tool {
-namespace {
 
-volatile std::sig_atomic_t g_interrupted = 0;
+void interrupt_children_on_signal() { harness::count_interrupts(); }
 
-void on_signal(int) { g_interrupted = 1; }
-
-}  // namespace
-
-void interrupt_children_on_signal() {
-  std::signal(SIGINT, on_signal);
-  std::signal(SIGTERM, on_signal);
-}
-
-bool interrupted() { return g_interrupted != 0; }
+bool interrupted() { return harness::interrupts() > 0; }
 
 double monotonic_seconds() {
   return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();

@@ -5,9 +5,12 @@
 
 namespace cc::tool {
 
-/// Exit codes: 0 success, 1 the run found an impl_bug (or a replay changed), 2 bad input.
+/// Exit codes: 0 success, 1 the run found an impl_bug (or a replay changed), 2 bad input, 3 the
+/// run could not keep all it found (a case file not stored, a worker not started); a campaign
+/// stopped by a signal exits 128 + its number once it has kept everything.
 inline constexpr int kExitFound = 1;
 inline constexpr int kExitBadInput = 2;
+inline constexpr int kExitIncomplete = 3;
 
 void add_campaign_command(CLI::App& app, int& exit_code);
 void add_bands_command(CLI::App& app, int& exit_code);

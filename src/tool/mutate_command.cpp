@@ -42,7 +42,7 @@ struct MutateArgs {
   unsigned campaign_seed = 1;
   int campaign_workers = 1;
   double test_timeout = 10;
-  std::vector<std::string> labels = {"corpus", "fuzz", "unit", "property"};
+  std::vector<std::string> labels = {"corpus", "fuzz", "unit", "cli", "property"};
   std::vector<std::string> only;
   std::string exclude_tests;
   bool check_only = false;

@@ -34,10 +34,12 @@ int run(const ShrinkArgs& args) {
   std::filesystem::path out = args.out.empty() ? std::filesystem::path(args.file).parent_path() : std::filesystem::path(args.out);
   if (args.out.empty() || std::filesystem::is_directory(out) || args.out.back() == '/') out /= harness::case_file_name(r.input);
   try {
-    if (!harness::write_new_case_file(out, shrunk)) {
+    const auto written = harness::write_new_case_file(out, shrunk);
+    if (!written) {
       std::printf("  %s exists already: not overwritten\n", out.string().c_str());
       return args.out.empty() ? 0 : kExitBadInput;
     }
+    out = *written;  // the next free name when another case had this one
   } catch (const harness::CaseFileError& e) {
     std::fprintf(stderr, "crosscheck shrink: %s\n", e.what());
     return kExitBadInput;

@@ -62,6 +62,74 @@ TEST(JudgeSphereSphere, MarginIsTheGapBetweenSurfacesOverTheScale) {
   EXPECT_EQ(judge(harness::SphereSphereInput{{{0x1p501, 0, 0}, 1}, {{0, 0, 0}, 1}}).contract, Contract::unspecified);
 }
 
+// Rationals have no range limit: finite inputs beyond the library's range are decided all the
+// same (out of its contract, so the library is not judged, but a second opinion is), with the
+// margin of the same shapes at scale 1.
+TEST(JudgeSphereSphere, DecidesSubnormalAndHugeInputs) {
+  for (const double s : {0x1p-1072, 0x1p-1060, 0x1p-600, 0x1p600, 0x1p1000}) {
+    const ExactVerdict touching = judge(harness::SphereSphereInput{{{0, 0, 0}, 2 * s}, {{4 * s, 0, 0}, 2 * s}});
+    EXPECT_EQ(touching.contract, Contract::unspecified) << s;
+    EXPECT_TRUE(touching.decided) << s;
+    EXPECT_TRUE(touching.answer.hit) << s;
+    EXPECT_EQ(touching.margin, 0) << s;
+    EXPECT_FALSE(touching.note.empty());
+    const ExactVerdict apart = judge(harness::SphereSphereInput{{{0, 0, 0}, s}, {{4 * s, 0, 0}, s}});
+    EXPECT_TRUE(apart.decided) << s;
+    EXPECT_FALSE(apart.answer.hit) << s;
+    EXPECT_DOUBLE_EQ(apart.margin, -0.5) << s;
+    const ExactVerdict overlapping = judge(harness::SphereSphereInput{{{0, 0, 0}, 2 * s}, {{3 * s, 0, 0}, 2 * s}});
+    EXPECT_TRUE(overlapping.answer.hit) << s;
+    EXPECT_GT(overlapping.margin, 0) << s;
+  }
+  // One ulp apart at the bottom of the subnormals: still exact.
+  const ExactVerdict ulp = judge(harness::SphereSphereInput{{{0, 0, 0}, 0x1p-1074}, {{0x1p-1072, 0, 0}, 0x1p-1074}});
+  EXPECT_TRUE(ulp.decided);
+  EXPECT_FALSE(ulp.answer.hit);
+  EXPECT_LT(ulp.margin, 0);
+}
+
+TEST(JudgeTriTri, DecidesSubnormalAndHugeInputs) {
+  for (const double s : {0x1p-1070, 0x1p-400, 0x1p400, 0x1p1000}) {
+    const auto v = [s](double x, double y, double z) { return Vec3{x * s, y * s, z * s}; };
+    const Triangle a{{v(0, 0, 0), v(4, 0, 0), v(0, 4, 0)}};
+    const ExactVerdict crossing = judge(harness::TriTriInput{a, {{v(1, 1, -1), v(1, 1, 1), v(2, 2, 1)}}});
+    EXPECT_EQ(crossing.contract, Contract::unspecified) << s;
+    EXPECT_TRUE(crossing.decided) << s;
+    EXPECT_TRUE(crossing.answer.hit) << s;
+    const ExactVerdict touching = judge(harness::TriTriInput{a, {{v(1, 1, 0), v(1, 1, 1), v(2, 2, 1)}}});
+    EXPECT_TRUE(touching.answer.hit) << s;
+    EXPECT_EQ(touching.margin, 0) << s;
+    const ExactVerdict apart = judge(harness::TriTriInput{a, {{v(1, 1, 1), v(1, 1, 2), v(2, 2, 2)}}});
+    EXPECT_TRUE(apart.decided) << s;
+    EXPECT_FALSE(apart.answer.hit) << s;
+    EXPECT_LT(apart.margin, 0) << s;
+  }
+}
+
+TEST(JudgeObbObb, DecidesSubnormalAndHugeInputs) {
+  const Mat3 identity = Mat3::from_columns({1, 0, 0}, {0, 1, 0}, {0, 0, 1});
+  for (const double s : {0x1p-1070, 0x1p-600, 0x1p600, 0x1p1000}) {
+    const Obb a{{0, 0, 0}, {s, s, s}, identity};
+    const ExactVerdict touching = judge(harness::ObbObbInput{a, {{2 * s, 0, 0}, {s, s, s}, identity}});
+    EXPECT_EQ(touching.contract, Contract::unspecified) << s;
+    EXPECT_TRUE(touching.decided) << s;
+    EXPECT_TRUE(touching.answer.hit) << s;
+    EXPECT_EQ(touching.margin, 0) << s;
+    const ExactVerdict apart = judge(harness::ObbObbInput{a, {{3 * s, 0, 0}, {s, s, s}, identity}});
+    EXPECT_FALSE(apart.answer.hit) << s;
+    EXPECT_LT(apart.margin, 0) << s;
+    const auto t = [](Vec3 p, Vec3 q, Vec3 r) { return Triangle{{p, q, r}}; };
+    const harness::TriObbInput tri{t({0, 0, s}, {s, 0, s}, {0, s, s}), a};
+    EXPECT_TRUE(judge(tri).answer.hit) << s;
+    EXPECT_TRUE(judge(tri).decided) << s;
+    const harness::TriAabbInput tri_box{t({0, 0, s}, {s, 0, s}, {0, s, 2 * s}), {{-s, -s, -s}, {s, s, s}}};
+    EXPECT_TRUE(judge(tri_box).answer.hit) << s;
+    const harness::TriAabbInput tri_apart{t({0, 0, 2 * s}, {s, 0, 2 * s}, {0, s, 2 * s}), {{-s, -s, -s}, {s, s, s}}};
+    EXPECT_FALSE(judge(tri_apart).answer.hit) << s;
+    EXPECT_EQ(judge(tri_apart).contract, Contract::unspecified) << s;
+  }
+}
+
 TEST(JudgeAabbAabb, MarginIsTheSmallestOverlap) {
   EXPECT_DOUBLE_EQ(judge(harness::AabbAabbInput{kUnit, {{0.75, 0, 0}, {1.75, 1, 1}}}).margin, 0.25 / 1.75);
   const ExactVerdict apart = judge(harness::AabbAabbInput{kUnit, {{3, 0, 0}, {4, 1, 1}}});

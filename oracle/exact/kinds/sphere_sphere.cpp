@@ -1,6 +1,7 @@
 // sphere_sphere in exact arithmetic: the balls meet iff |c_a - c_b|^2 <= (r_a + r_b)^2.
 // Margin: r_a + r_b - |c_a - c_b|, computed as ((r_a+r_b)^2 - |c_a-c_b|^2) / (r_a + r_b + |c_a-c_b|)
 // so that its relative accuracy does not suffer from cancellation.
+#include <algorithm>
 #include <cmath>
 
 #include "oracle/exact/domain.h"
@@ -9,6 +10,19 @@
 #include "oracle/exact/rational.h"
 
 namespace cc::exact {
+namespace {
+
+// a + b for a, b >= 0.
+Magnitude sum(Magnitude a, Magnitude b) {
+  if (a.m == 0) return b;
+  if (b.m == 0) return a;
+  const long e = std::max(a.e, b.e);
+  const double m = std::ldexp(a.m, static_cast<int>(std::max(a.e - e, -2000L))) +
+                   std::ldexp(b.m, static_cast<int>(std::max(b.e - e, -2000L)));
+  return Magnitude{m, e} * Magnitude{1, 0};  // normalised
+}
+
+}  // namespace
 
 template <>
 ExactVerdict judge(const harness::SphereSphereInput& in) {
@@ -18,8 +32,6 @@ ExactVerdict judge(const harness::SphereSphereInput& in) {
   if (!all_finite(all)) return documented(false, "NaN or infinite input");
   if (a.radius < 0 || b.radius < 0) return documented(false, "negative radius");
   const double magnitude = max_magnitude(all);
-  if (auto why = scale_outside(magnitude, -500, 500)) return unspecified(*why);
-
   const QVec3 d = rational(a.center) - rational(b.center);
   const Rational dist2 = dot(d, d);
   const Rational reach = rational(a.radius) + rational(b.radius);
@@ -27,6 +39,14 @@ ExactVerdict judge(const harness::SphereSphereInput& in) {
 
   ExactVerdict v;
   v.answer.hit = sgn(slack) >= 0;
+  if (auto why = scale_outside(magnitude, -500, 500)) {
+    // Decided all the same, the same margin computed with exponents kept apart, so that it
+    // neither underflows nor overflows.
+    const Magnitude scale = Magnitude::of(rational(scale_of(magnitude)));
+    const Magnitude denominator = sum(Magnitude::of(reach), length(d));
+    v.margin = sgn(slack) == 0 ? 0.0 : (Magnitude::of(slack) / denominator / scale).to_double();
+    return beyond_range(v, *why);
+  }
   const double denominator = to_double(reach) + length(d).to_double();
   v.margin = denominator > 0 ? to_double(slack) / denominator / scale_of(magnitude) : 0.0;
   return v;

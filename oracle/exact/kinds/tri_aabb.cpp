@@ -18,8 +18,10 @@ ExactVerdict judge(const harness::TriAabbInput& in) {
     if (in.box.lo[k] > in.box.hi[k]) return documented(false, "inverted box");
   }
   const double magnitude = std::max(magnitude_of(in.tri), magnitude_of(in.box));
-  if (auto why = scale_outside(magnitude, kTriangleMinExponent, kTriangleMaxExponent)) return unspecified(*why);
-  return verdict_of(exact_sat(box_shape(in.box.lo, in.box.hi, "B"), shape_of(in.tri, "T")), magnitude);
+  const ExactVerdict v = verdict_of(exact_sat(box_shape(in.box.lo, in.box.hi, "B"), shape_of(in.tri, "T")), magnitude);
+  // Decided all the same beyond the library's range: rationals have none.
+  if (auto why = scale_outside(magnitude, kTriangleMinExponent, kTriangleMaxExponent)) return beyond_range(v, *why);
+  return v;
 }
 
 template <>

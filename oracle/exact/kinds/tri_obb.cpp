@@ -14,9 +14,11 @@ ExactVerdict judge(const harness::TriObbInput& in) {
   if (!all_finite(in.tri)) return documented(false, "NaN or infinite input");
   if (auto out = obb_outside_domain(in.box)) return *out;
   const double magnitude = std::max(magnitude_of(in.tri), magnitude_of(in.box));
-  if (auto why = scale_outside(magnitude, kTriangleMinExponent, kTriangleMaxExponent)) return unspecified(*why);
   if (auto why = not_orthonormal(in.box.axes)) return unspecified(*why);
-  return verdict_of(exact_sat(shape_of(in.box, "B"), shape_of(in.tri, "T")), magnitude);
+  const ExactVerdict v = verdict_of(exact_sat(shape_of(in.box, "B"), shape_of(in.tri, "T")), magnitude);
+  // Decided all the same beyond the library's range: rationals have none.
+  if (auto why = scale_outside(magnitude, kTriangleMinExponent, kTriangleMaxExponent)) return beyond_range(v, *why);
+  return v;
 }
 
 template <>

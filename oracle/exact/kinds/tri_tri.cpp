@@ -13,8 +13,10 @@ template <>
 ExactVerdict judge(const harness::TriTriInput& in) {
   if (!all_finite(in.a) || !all_finite(in.b)) return documented(false, "NaN or infinite input");
   const double magnitude = std::max(magnitude_of(in.a), magnitude_of(in.b));
-  if (auto why = scale_outside(magnitude, kTriangleMinExponent, kTriangleMaxExponent)) return unspecified(*why);
-  return verdict_of(exact_sat(shape_of(in.a, "A"), shape_of(in.b, "B")), magnitude);
+  const ExactVerdict v = verdict_of(exact_sat(shape_of(in.a, "A"), shape_of(in.b, "B")), magnitude);
+  // Decided all the same beyond the library's range: rationals have none.
+  if (auto why = scale_outside(magnitude, kTriangleMinExponent, kTriangleMaxExponent)) return beyond_range(v, *why);
+  return v;
 }
 
 template <>

@@ -1,11 +1,18 @@
 #include "harness/formats/case_file.h"
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstdlib>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
 #include "harness/formats/number_text.h"
+#include "harness/processes/child.h"
 
 namespace cc::harness {
 namespace {
@@ -209,7 +216,7 @@ std::vector<Opinion> opinions_from_json(const Json& opinions, const std::string&
 
 Json case_to_json(const Case& c) {
   const Json opinions = opinions_to_json(c.opinions);
-  Json exact = answer_json(c.exact.answer);
+  Json exact = c.exact.decided ? answer_json(c.exact.answer) : Json::object();  // an answer only when one was given
   exact["contract"] = contract_name(c.exact.contract);
   exact["decided"] = c.exact.decided;
   if (!c.exact.note.empty()) exact["note"] = c.exact.note;
@@ -217,6 +224,8 @@ Json case_to_json(const Case& c) {
   if (c.provenance.seed) provenance["seed"] = *c.provenance.seed;
   if (c.provenance.case_index) provenance["case"] = *c.provenance.case_index;
   if (!c.provenance.detail.empty()) provenance["detail"] = c.provenance.detail;
+  if (!c.not_shrunk.empty()) provenance["not_shrunk"] = c.not_shrunk;
+  const Json library = c.library_failure.empty() ? answer_json(c.library) : Json{{"failed", c.library_failure}};
   return {{"format", "crosscheck-case"},
           {"version", kCaseFormatVersion},
           {"query", name(kind_of(c.input))},
@@ -224,20 +233,22 @@ Json case_to_json(const Case& c) {
           {"class", to_string(c.cls)},
           {"margin", number_to_json(c.exact.margin)},
           {"inputs", input_to_json(c.input)},
-          {"answers", {{"library", answer_json(c.library)}, {"exact", exact}, {"oracles", opinions}}},
+          {"answers", {{"library", library}, {"exact", exact}, {"oracles", opinions}}},
           {"provenance", provenance}};
 }
 
 Case case_from_json(const Json& json, const std::filesystem::path& case_dir) {
   if (!json.is_object()) throw FormatError("", "expected a JSON object");
-  const Json& format = member(json, "", "format");
-  if (format != "crosscheck-case") throw FormatError("/format", "expected \"crosscheck-case\", not " + format.dump());
+  const Json& format_name = member(json, "", "format");
+  if (format_name != "crosscheck-case") {
+    throw FormatError("/format", "expected \"crosscheck-case\", not " + format_name.dump());
+  }
   only_fields(json, "", {"format", "version", "query", "note", "class", "margin", "inputs", "answers", "provenance"});
   const auto version = member(json, "", "version");
   if (!version.is_number_integer()) throw FormatError("/version", "expected an integer");
   if (version.get<int>() > kCaseFormatVersion || version.get<int>() < 1) {
     throw FormatError("/version", "format version " + std::to_string(version.get<int>()) +
-                                      " is not supported (this build reads version " +
+                                      " is not supported (this build reads versions 1 to " +
                                       std::to_string(kCaseFormatVersion) + ")");
   }
   const std::string query = text(member(json, "", "query"), "/query");
@@ -255,12 +266,18 @@ Case case_from_json(const Json& json, const std::filesystem::path& case_dir) {
   if (!parsed) throw FormatError("/class", "unknown class \"" + cls + "\"");
   c.cls = *parsed;
 
+  const int format = version.get<int>();
   const Json& answers = member(json, "", "answers");
   only_fields(answers, "/answers", {"library", "exact", "oracles"});
-  c.library = answer_from(member(answers, "/answers", "library"), "/answers/library");
+  const Json& library = member(answers, "/answers", "library");
+  if (format >= 2 && library.is_object() && library.contains("failed")) {
+    only_fields(library, "/answers/library", {"failed"});
+    c.library_failure = text(library["failed"], "/answers/library/failed");
+  } else {
+    c.library = answer_from(library, "/answers/library");
+  }
   const Json& exact = member(answers, "/answers", "exact");
   only_fields(exact, "/answers/exact", {"hit", "params", "pairs", "frames", "contract", "decided", "note"});
-  read_answer(exact, "/answers/exact", c.exact.answer);
   c.exact.margin = number_from_json(member(json, "", "margin"), "/margin");
   const std::string contract = text(member(exact, "/answers/exact", "contract"), "/answers/exact/contract");
   if (contract == "in") {
@@ -273,15 +290,19 @@ Case case_from_json(const Json& json, const std::filesystem::path& case_dir) {
     throw FormatError("/answers/exact/contract", "expected \"in\", \"documented\" or \"unspecified\"");
   }
   c.exact.decided = exact.contains("decided") ? boolean(exact["decided"], "/answers/exact/decided") : true;
+  // Version 1 wrote a default answer for a verdict nobody gave (out of contract, unspecified).
+  if (format == 1 && c.exact.contract == Contract::unspecified) c.exact.decided = false;
+  if (c.exact.decided || exact.contains("hit")) read_answer(exact, "/answers/exact", c.exact.answer);
   c.exact.note = exact.contains("note") ? text(exact["note"], "/answers/exact/note") : "";
   c.opinions = opinions_from_json(member(answers, "/answers", "oracles"), "/answers/oracles");
   if (json.contains("provenance")) {
     const Json& p = json["provenance"];
-    only_fields(p, "/provenance", {"source", "seed", "case", "detail"});
+    only_fields(p, "/provenance", {"source", "seed", "case", "detail", "not_shrunk"});
     c.provenance.source = text(member(p, "/provenance", "source"), "/provenance/source");
     if (p.contains("seed")) c.provenance.seed = unsigned_from(p["seed"], "/provenance/seed");
     if (p.contains("case")) c.provenance.case_index = unsigned_from(p["case"], "/provenance/case");
     if (p.contains("detail")) c.provenance.detail = text(p["detail"], "/provenance/detail");
+    if (p.contains("not_shrunk")) c.not_shrunk = text(p["not_shrunk"], "/provenance/not_shrunk");
   }
   return c;
 }
@@ -321,14 +342,49 @@ std::string case_file_name(const Input& input) {
   return std::string(hex) + ".json";
 }
 
-bool write_new_case_file(const std::filesystem::path& path, const Case& c) {
-  if (std::filesystem::exists(path)) return false;
+std::optional<std::filesystem::path> write_new_case_file(const std::filesystem::path& path, const Case& c) {
+  const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
+  const auto failure = [](const std::filesystem::path& where, const std::string& what, int error) {
+    return CaseFileError(where.string(), "", what + ": " + std::strerror(error));
+  };
   std::error_code ec;
-  if (path.has_parent_path()) std::filesystem::create_directories(path.parent_path(), ec);
-  std::ofstream out(path);
-  out << case_to_json(c).dump(2) << "\n";
-  if (!out) throw CaseFileError(path.string(), "", "cannot write the file");
-  return true;
+  std::filesystem::create_directories(dir, ec);
+  if (ec) throw CaseFileError(path.string(), "", "cannot create the folder " + dir.string() + ": " + ec.message());
+  // Not named *.json: a reader of the folder never takes it for a case.
+  std::string temp = (dir / ('.' + path.filename().string() + ".tmp-XXXXXX")).string();
+  const int fd = ::mkstemp(temp.data());
+  if (fd < 0) throw failure(dir, "cannot create a file in the folder", errno);
+  const std::string text = case_to_json(c).dump(2) + "\n";
+  const bool written = write_all(fd, text) && ::fchmod(fd, 0644) == 0 && ::fsync(fd) == 0;
+  const int write_error = errno;
+  if (::close(fd) != 0 || !written) {
+    ::unlink(temp.c_str());
+    throw failure(temp, "cannot write the file", write_error);
+  }
+  const std::string stem = path.stem().string(), extension = path.extension().string();
+  const std::string key = Json{{"query", name(kind_of(c.input))}, {"inputs", input_to_json(c.input)}}.dump();
+  for (int n = 1;; ++n) {
+    std::filesystem::path target = path;
+    if (n > 1) target.replace_filename(stem + '-' + std::to_string(n) + extension);
+    if (::link(temp.c_str(), target.c_str()) == 0) {
+      ::unlink(temp.c_str());
+      return target;
+    }
+    const int error = errno;
+    if (error != EEXIST) {
+      ::unlink(temp.c_str());
+      throw failure(target, "cannot create the file", error);
+    }
+    // Taken: by this very case (nothing to write), or by another whose name is the same hash.
+    try {
+      const Case there = read_case_file(target);
+      if (Json{{"query", name(kind_of(there.input))}, {"inputs", input_to_json(there.input)}}.dump() == key) {
+        ::unlink(temp.c_str());
+        return std::nullopt;
+      }
+    } catch (const CaseFileError&) {  // unreadable or another format: not this case; keep it
+    }
+  }
 }
 
 std::vector<std::filesystem::path> case_files_under(const std::vector<std::filesystem::path>& roots) {

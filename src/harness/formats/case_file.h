@@ -15,7 +15,10 @@
 
 namespace cc::harness {
 
-inline constexpr int kCaseFormatVersion = 1;
+/// Version 2 stores only answers some party gave: a library that crashed or hung has "failed"
+/// instead of an answer, an exact verdict not decided (or not computed) has no "hit", and a
+/// campaign's case stored unshrunk says why. Version 1 files are still read.
+inline constexpr int kCaseFormatVersion = 2;
 
 /// Where a case came from: "campaign" (seed and case index), "property" (its name), "fuzz"
 /// (the input bytes in hex), "shrink" (the file it was shrunk from) or "hand-written".
@@ -29,10 +32,12 @@ struct Provenance {
 struct Case {
   Input input;
   Answer library;
+  std::string library_failure;  // what happened when the library crashed or hung; then `library` is no answer
   ExactVerdict exact;
   std::vector<Opinion> opinions;
   CaseClass cls = CaseClass::agree;
   Provenance provenance;
+  std::string not_shrunk;  // why a campaign stored it as found (no time left, interrupted); empty: shrunk
   std::string note;
 };
 
@@ -71,9 +76,13 @@ Case read_case_text(const std::string& content, const std::string& file, const s
 /// The file name of a case: 16 hex digits of a 64-bit FNV-1a hash of its query and inputs.
 std::string case_file_name(const Input& input);
 
-/// Writes the case to `path`. Never overwrites: returns false (and writes nothing) if the file
-/// exists. Throws CaseFileError if it cannot be written.
-bool write_new_case_file(const std::filesystem::path& path, const Case& c);
+/// Writes the case as a new file at `path` (its folders created), exclusively: a temporary file
+/// in the same folder is link()ed to the name, which never replaces a file, and removed. If
+/// `path` holds another case (another query or inputs), the next free name "<stem>-2.json",
+/// "-3", ... is taken. Returns the path written, or nothing (writing nothing) when the file, or
+/// one of those, holds this very query and inputs already. Throws CaseFileError, naming the file
+/// and the reason, when it cannot be written.
+std::optional<std::filesystem::path> write_new_case_file(const std::filesystem::path& path, const Case& c);
 
 /// Every case file (*.json) under the directories given, recursively, sorted.
 std::vector<std::filesystem::path> case_files_under(const std::vector<std::filesystem::path>& roots);

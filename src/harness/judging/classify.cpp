@@ -44,6 +44,7 @@ std::string_view to_string(Standing s) {
     case Standing::wrong: return "wrong";
     case Standing::not_applicable: return "n/a";
     case Standing::failed: return "failed";
+    case Standing::differs: return "differs";
   }
   return "?";
 }
@@ -230,6 +231,30 @@ Verdict classify(const Band& band_of_library, Judged judged, const Answer& libra
     }
     v.parties.push_back(lib);
     v.cls = lib.standing == Standing::wrong ? CaseClass::impl_bug : CaseClass::out_of_contract;
+    // The second opinions are still heard: judged when the reference decided the exact answer
+    // (finite inputs beyond the library's range), else compared with the documented answer.
+    for (const Opinion& o : opinions) {
+      if (is_library_party(o.party) || o.status == Opinion::Status::not_applicable) {
+        v.parties.push_back({o.party, Standing::not_applicable, o.detail.empty() ? exact.note : o.detail});
+      } else if (o.status == Opinion::Status::failed) {
+        v.parties.push_back({o.party, Standing::failed, o.detail});
+      } else if (exact.contract == Contract::unspecified && exact.decided && o.band) {
+        Band band = *o.band;
+        band.param_width = 0;
+        Answer said = o.answer;
+        said.params.clear();
+        v.parties.push_back(judge_party(o.party, band, said, exact, judged));
+      } else if (exact.contract == Contract::documented && o.answer.hit != exact.answer.hit) {
+        v.parties.push_back({o.party, Standing::differs,
+                             std::string("says ") + (o.answer.hit ? "hit" : "miss") + " where the library documents " +
+                                 (exact.answer.hit ? "hit" : "miss") + " (" + exact.note + "); no exact verdict"});
+      } else if (exact.contract == Contract::documented) {
+        v.parties.push_back({o.party, Standing::right, ""});
+      } else {
+        v.parties.push_back({o.party, Standing::not_applicable,
+                             std::string("says ") + (o.answer.hit ? "hit" : "miss") + "; no exact verdict (" + exact.note + ")"});
+      }
+    }
     return v;
   }
   if (!exact.decided) {

@@ -29,8 +29,9 @@ inline constexpr CaseClass kAllClasses[] = {CaseClass::agree,          CaseClass
 std::string_view to_string(CaseClass c);
 std::optional<CaseClass> case_class_named(std::string_view name);
 
-/// How one party fared against the exact answer.
-enum class Standing { right, within_band, wrong, not_applicable, failed };
+/// How one party fared against the exact answer. differs: out of contract with no exact verdict,
+/// a second opinion that answers otherwise than the library documents (reported, not judged).
+enum class Standing { right, within_band, wrong, not_applicable, failed, differs };
 std::string_view to_string(Standing s);
 
 struct PartyStanding {

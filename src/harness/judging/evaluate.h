@@ -2,6 +2,7 @@
 #pragma once
 
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "harness/judging/classify.h"
@@ -11,6 +12,7 @@ namespace cc::harness {
 
 struct Evaluation {
   Answer library;
+  std::string library_failure;  // the library crashed or hung (what and where): `library` is no answer
   ExactVerdict exact;
   std::vector<Opinion> opinions;
   Verdict verdict;

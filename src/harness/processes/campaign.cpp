@@ -5,18 +5,22 @@
 #include <sys/mman.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <optional>
 #include <sstream>
+#include <system_error>
 
 #include "harness/formats/case_file.h"
 #include "harness/generation/generate.h"
 #include "harness/judging/party.h"
 #include "harness/model/library.h"
 #include "harness/processes/child.h"
+#include "harness/processes/interrupts.h"
 
 namespace cc::harness {
 namespace {
@@ -55,9 +59,6 @@ std::string_view phase_name(int phase) {
   return "between cases";
 }
 
-volatile sig_atomic_t g_stop = 0;
-void on_interrupt(int) { g_stop = 1; }
-
 void write_line(int fd, const std::string& line) { write_all(fd, line + "\n"); }
 
 std::string format_seconds(double s) {
@@ -66,9 +67,44 @@ std::string format_seconds(double s) {
   return out.str();
 }
 
-bool is_finding(CaseClass c) {
+// Out of contract, a case is a finding when a second opinion's answer differs from the exact
+// one (or, with no exact verdict, from the library's documented one): FCL's users want to know.
+bool is_finding(const Verdict& v) {
+  const CaseClass c = v.cls;
+  if (c == CaseClass::out_of_contract) {
+    return std::any_of(v.parties.begin() + 1, v.parties.end(), [](const PartyStanding& p) {
+      return p.standing == Standing::wrong || p.standing == Standing::failed || p.standing == Standing::differs;
+    });
+  }
   return c == CaseClass::impl_bug || c == CaseClass::oracle_defect || c == CaseClass::oracle_crash ||
          c == CaseClass::undecided;
+}
+
+// A worker's standard error goes to a file of its own: what FCL or Eigen print there is counted
+// per case, and its first line reported, instead of reaching the terminal raw.
+int capture_stderr() {
+  FILE* file = std::tmpfile();
+  if (file == nullptr) return -1;
+  const int fd = ::dup(::fileno(file));
+  std::fclose(file);
+  if (fd < 0 || ::dup2(fd, STDERR_FILENO) < 0) return -1;
+  ::close(fd);
+  return STDERR_FILENO;
+}
+
+// The first line written to the captured standard error since the last call, or nothing; the
+// capture starts empty again.
+std::optional<std::string> captured_stderr() {
+  if (::lseek(STDERR_FILENO, 0, SEEK_END) <= 0) return std::nullopt;
+  char line[200] = {};
+  const ssize_t n = ::pread(STDERR_FILENO, line, sizeof line - 1, 0);
+  if (::ftruncate(STDERR_FILENO, 0) != 0 || ::lseek(STDERR_FILENO, 0, SEEK_SET) != 0) return "(unreadable)";
+  std::string text(line, n > 0 ? static_cast<std::size_t>(n) : 0);
+  text = text.substr(0, text.find('\n'));
+  for (char& ch : text) {
+    if (static_cast<unsigned char>(ch) < 0x20) ch = ' ';
+  }
+  return text;
 }
 
 // A worker's exit status when it stops early because its second opinion abandoned a call (see
@@ -78,11 +114,11 @@ constexpr int kRetired = 3;
 // The worker: runs cases until the deadline, reporting tallies and findings on `out`.
 [[noreturn]] void run_worker(int worker, const CampaignOptions& options, const Oracles& oracles, Slot& slot, int out,
                              std::int64_t deadline_ns) {
-  signal(SIGINT, on_interrupt);
+  const bool captured = capture_stderr() >= 0;
   const auto exact = oracles.exact();
   const auto second = oracles.second();
   const int abandoned_before = second->abandoned_calls();  // inherited: a fresh worker cannot undo it
-  while (!g_stop && now_ns() < deadline_ns) {
+  while (interrupts() == 0 && now_ns() < deadline_ns) {
     // Equal time for every kind: the one this worker has spent least time on goes next.
     QueryKind kind = options.kinds.front();
     for (QueryKind k : options.kinds) {
@@ -111,7 +147,10 @@ constexpr int kRetired = 3;
     const std::int64_t elapsed = now_ns() - start;
     slot.busy_ns[kind_number] += elapsed;
     slot.counts[kind_number][static_cast<std::size_t>(e.verdict.cls)] += 1;
-    if (is_finding(e.verdict.cls)) {  // with the opinions, as case files store them (exactly)
+    if (const auto said = captured ? captured_stderr() : std::nullopt) {
+      write_line(out, "E " + std::to_string(static_cast<int>(kind)) + " " + std::to_string(index) + " " + *said);
+    }
+    if (is_finding(e.verdict)) {  // with the opinions, as case files store them (exactly)
       write_line(out, "F " + std::to_string(static_cast<int>(kind)) + " " + std::to_string(index) + " " +
                           opinions_to_json(e.opinions).dump());
     }
@@ -128,7 +167,12 @@ struct Worker {
   pid_t pid = -1;
   int fd = -1;
   std::string buffer;
+  bool stopped = false;  // killed by the supervisor because the run stops: not a finding
 };
+
+// After an interrupt or at the deadline, a worker gets SIGTERM (it ends after its case) and,
+// this long after, SIGKILL: every worker stops within a second.
+constexpr std::int64_t kStopGraceNs = 500'000'000;
 
 }  // namespace
 
@@ -157,20 +201,28 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
   if (slots == MAP_FAILED) throw std::runtime_error("campaign: cannot map shared memory");
   for (int w = 0; w < options.workers; ++w) new (&slots[w]) Slot();
 
-  g_stop = 0;
-  struct sigaction previous {};
-  struct sigaction action {};
-  action.sa_handler = on_interrupt;
-  sigaction(SIGINT, &action, &previous);
+  count_interrupts();
 
   const std::int64_t start_ns = now_ns();
   const std::int64_t deadline_ns = start_ns + static_cast<std::int64_t>(options.seconds * 1e9);
   std::vector<Worker> workers(static_cast<std::size_t>(options.workers));
+  const auto stopping = [&] { return interrupts() > 0 || now_ns() >= deadline_ns; };
+  // Starts worker w; false (and a problem recorded) when the pipe or the fork fails.
   const auto spawn = [&](int w) {
-    const Child child = start_child([&](int out) -> int { run_worker(w, options, oracles, slots[w], out, deadline_ns); });
-    workers[static_cast<std::size_t>(w)] = {child.pid, child.out, ""};
+    try {
+      const Child child = start_child([&](int out) -> int { run_worker(w, options, oracles, slots[w], out, deadline_ns); });
+      workers[static_cast<std::size_t>(w)] = {child.pid, child.out, "", false};
+      return true;
+    } catch (const std::system_error& e) {
+      workers[static_cast<std::size_t>(w)] = {};
+      result.problems.push_back("worker " + std::to_string(w) + " could not be started (" + e.what() +
+                                "); the campaign went on without it");
+      return false;
+    }
   };
-  for (int w = 0; w < options.workers; ++w) spawn(w);
+  std::size_t alive = 0;
+  for (int w = 0; w < options.workers; ++w) alive += spawn(w) ? 1 : 0;
+  result.workers = static_cast<int>(alive);  // the rates are those of the workers that ran
 
   const auto exact = oracles.exact();
   const auto second = oracles.second();
@@ -209,6 +261,12 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
         f.evaluation.verdict = classify(kind, f.evaluation.library, f.evaluation.exact, f.evaluation.opinions);
         if (f.evaluation.verdict.cls != CaseClass::impl_bug) f.evaluation.verdict.cls = CaseClass::oracle_crash;
       } else {
+        // Nothing is invented for the parties that were not asked: the exact reference is
+        // marked not computed, the second opinions are absent.
+        if (phase == in_library) f.evaluation.library_failure = f.crash;
+        f.evaluation.exact.decided = false;
+        f.evaluation.exact.margin = NAN;
+        f.evaluation.exact.note = phase == in_library ? "not computed: " + f.crash : f.crash;
         f.evaluation.verdict.cls = phase == in_library ? CaseClass::impl_bug : CaseClass::undecided;
         f.evaluation.verdict.parties = {{"library", phase == in_library ? Standing::wrong : Standing::not_applicable, f.crash}};
       }
@@ -220,22 +278,30 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
     }
     result.findings.push_back(std::move(f));
   };
-  const auto handle_line = [&](const std::string& line) {  // "F <kind> <case index> <opinions>"
+  // A worker's line: "F <kind> <case index> <opinions>" (a finding) or "E <kind> <case index>
+  // <first line>" (a case that wrote to standard error).
+  const auto handle_line = [&](const std::string& line) {
     std::istringstream in(line);
     char tag = 0;
     int kind_number = 0;
     std::uint64_t index = 0;
     in >> tag >> kind_number >> index;
-    if (tag != 'F' || !in) return;
+    if (!in) return;
+    const auto kind = static_cast<QueryKind>(kind_number);
+    std::string rest;
+    std::getline(in, rest);
+    if (tag == 'E') {
+      if (result.noisy_cases++ == 0) result.first_noise = std::string(name(kind)) + " case " + std::to_string(index) + ":" + rest;
+      return;
+    }
+    if (tag != 'F') return;
     std::optional<std::vector<Opinion>> opinions;
     try {
-      std::string rest;
-      std::getline(in, rest);
       opinions = opinions_from_json(Json::parse(rest), "");
-      restore_bands(*opinions, *second, static_cast<QueryKind>(kind_number));
+      restore_bands(*opinions, *second, kind);
     } catch (const std::exception&) {
     }
-    record_finding(static_cast<QueryKind>(kind_number), index, "", idle, opinions);
+    record_finding(kind, index, "", idle, opinions);
   };
   // The tallies: the workers' shared counters plus the cases they died on.
   const auto tallies = [&] {
@@ -256,8 +322,22 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
   };
 
   std::int64_t last_progress = 0;
-  std::size_t alive = workers.size();
+  std::int64_t stop_ns = 0;  // when the workers were told to stop
   while (alive > 0) {
+    if (stop_ns == 0 && stopping()) {
+      stop_ns = now_ns();
+      for (const Worker& w : workers) {
+        if (w.fd >= 0) kill(w.pid, SIGTERM);
+      }
+    }
+    if (stop_ns != 0 && now_ns() - stop_ns > kStopGraceNs) {
+      for (Worker& w : workers) {
+        if (w.fd >= 0 && !w.stopped) {
+          w.stopped = true;
+          kill(w.pid, SIGKILL);
+        }
+      }
+    }
     std::vector<pollfd> fds;
     for (const Worker& w : workers) fds.push_back({w.fd, POLLIN, 0});
     poll(fds.data(), fds.size(), 100);
@@ -281,10 +361,11 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       const ChildEnd end = wait_child(w.pid);
       Slot& slot = slots[i];
       const bool retired = end.status == kRetired;
-      const bool died = !end.succeeded() && !retired;
-      if (retired && !g_stop && now_ns() < deadline_ns) {
-        spawn(static_cast<int>(i));
-        continue;
+      // Ended by the SIGTERM or SIGKILL that stopped the run: its last case is not a finding.
+      const bool stopped = w.stopped || (stop_ns != 0 && !slot.hung && end.signal == SIGTERM);
+      const bool died = !end.succeeded() && !retired && !stopped;
+      if (retired && !stopping()) {
+        if (spawn(static_cast<int>(i))) continue;
       }
       if (died) {
         std::string what = end.what();
@@ -294,10 +375,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
                        what + " in " + std::string(phase_name(phase)), phase, std::nullopt);
         slot.phase = idle;
         slot.hung = false;
-        if (!g_stop && now_ns() < deadline_ns) {
-          spawn(static_cast<int>(i));  // the slot's counters skip the case it died on
-          continue;
-        }
+        if (!stopping() && spawn(static_cast<int>(i))) continue;  // its counters skip the case it died on
       }
       --alive;
     }
@@ -305,8 +383,8 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
     for (std::size_t i = 0; i < workers.size(); ++i) {
       Slot& slot = slots[i];
       const int phase = slot.phase;
-      if (workers[i].fd >= 0 && phase > idle && !slot.hung &&
-          now_ns() - slot.started_ns > static_cast<std::int64_t>(options.case_timeout_seconds * 1e9)) {
+      if (options.case_timeout_seconds > 0 && workers[i].fd >= 0 && !workers[i].stopped && phase > idle &&
+          !slot.hung && now_ns() - slot.started_ns > static_cast<std::int64_t>(options.case_timeout_seconds * 1e9)) {
         slot.hung = true;
         kill(workers[i].pid, SIGKILL);
       }
@@ -325,8 +403,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
   }
   result.seconds = static_cast<double>(now_ns() - start_ns) * 1e-9;
   result.tallies = tallies();
-  result.interrupted = g_stop != 0;
-  sigaction(SIGINT, &previous, nullptr);
+  result.interrupted = interrupts() > 0;
   munmap(slots, sizeof(Slot) * static_cast<std::size_t>(options.workers));
   return result;
 }

@@ -27,7 +27,7 @@ struct CampaignOptions {
   double seconds = 60;
   std::uint64_t seed = 1;
   int workers = 2;
-  double case_timeout_seconds = 20;  // a case running longer is a hang
+  double case_timeout_seconds = 20;  // a case running longer is a hang (<= 0: no limit)
   int out_of_contract_percent = 10;  // share of cases generated outside the library's domain
   std::filesystem::path mesh_folder = "corpora/meshes";  // FCL's test meshes, for the mesh queries
   std::function<void(const std::string&)> progress;  // called about once a second
@@ -51,16 +51,24 @@ struct Finding {
 struct CampaignResult {
   std::uint64_t seed = 0;
   double seconds = 0;
-  int workers = 0;
-  bool interrupted = false;
+  int workers = 0;  // started (fewer than asked for when a fork failed)
+  bool interrupted = false;  // by SIGINT or SIGTERM (see interrupts.h): the workers were stopped
+  std::vector<std::string> problems;  // what went wrong in the supervision (a fork that failed)
+  std::uint64_t noisy_cases = 0;       // cases on which a party wrote to standard error
+  std::string first_noise;             // the first line one of them wrote, with its case
   std::map<QueryKind, KindTally> tallies;
-  std::vector<Finding> findings;  // impl_bug, oracle_defect, oracle_crash and undecided cases
+  /// impl_bug, oracle_defect, oracle_crash and undecided cases, and out_of_contract ones where a
+  /// second opinion differs from the exact (or documented) answer
+  std::vector<Finding> findings;
 };
 
 /// The case with this index in a campaign of this seed, exactly as the campaign generates it.
 Input campaign_case(std::uint64_t seed, QueryKind kind, std::uint64_t case_index, int out_of_contract_percent,
                     const std::filesystem::path& mesh_folder = "corpora/meshes");
 
+/// Runs the campaign. SIGINT or SIGTERM (counted from here on: count_interrupts()) stops every
+/// worker within a second, keeping every finding reported so far; so does the end of the budget.
+/// A worker that cannot be started (fork fails) is a problem of the result, not an abort.
 CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracles);
 
 /// Cases per second for a kind: the rate the whole campaign (all workers) reaches on it.

@@ -115,7 +115,10 @@ ChildEnd wait_child(pid_t pid) { return *reap(pid, true); }
 ChildEnd finish_child(Child child, double timeout_seconds, const std::function<bool()>& stop) {
   using Clock = std::chrono::steady_clock;
   const auto deadline = Clock::now() + std::chrono::duration<double>(timeout_seconds);
+  const pid_t target = child.group ? -child.pid : child.pid;  // its whole group when it leads one
   enum class Killed { no, at_time_limit, stopped } killed = Killed::no;
+  bool sigkill_sent = false;
+  auto stop_deadline = Clock::now();
   std::string output;
   char chunk[65536];
   std::optional<ChildEnd> end;
@@ -124,19 +127,29 @@ ChildEnd finish_child(Child child, double timeout_seconds, const std::function<b
     if (killed == Killed::no) {
       if (stop && stop()) {
         killed = Killed::stopped;
+        kill(target, SIGTERM);  // it may finish what it must not leave half done first
+        stop_deadline = Clock::now() + std::chrono::seconds(1);
       } else if (timeout_seconds > 0) {
         // Rounded up, so that the child is never killed before its time.
         const auto left = std::chrono::ceil<std::chrono::milliseconds>(deadline - Clock::now()).count();
-        if (left <= 0) killed = Killed::at_time_limit;
+        if (left <= 0) {
+          killed = Killed::at_time_limit;
+          kill(target, SIGKILL);
+          sigkill_sent = true;
+        }
         wait_ms = static_cast<int>(std::clamp<long long>(left, 0, 1000));
       }
-      if (killed != Killed::no) {
-        kill(child.group ? -child.pid : child.pid, SIGKILL);
-        wait_ms = -1;
-      } else if (stop) {
-        wait_ms = wait_ms < 0 ? kPollMs : std::min(wait_ms, kPollMs);
-      }
+      if (killed == Killed::no && stop) wait_ms = wait_ms < 0 ? kPollMs : std::min(wait_ms, kPollMs);
     }
+    if (killed == Killed::stopped && !sigkill_sent) {  // a second after SIGTERM: SIGKILL
+      const auto left = std::chrono::ceil<std::chrono::milliseconds>(stop_deadline - Clock::now()).count();
+      if (left <= 0) {
+        kill(target, SIGKILL);
+        sigkill_sent = true;
+      }
+      wait_ms = static_cast<int>(std::clamp<long long>(left, 0, kPollMs));
+    }
+    if (sigkill_sent) wait_ms = -1;
     if (child.out >= 0) {
       pollfd p{child.out, POLLIN, 0};
       const int ready = poll(&p, 1, wait_ms);
@@ -156,13 +169,13 @@ ChildEnd finish_child(Child child, double timeout_seconds, const std::function<b
     }
   }
   end->timed_out = killed == Killed::at_time_limit && end->signal == SIGKILL;
-  end->stopped = killed == Killed::stopped && end->signal == SIGKILL;
+  end->stopped = killed == Killed::stopped && end->signal != 0;
   end->output = std::move(output);
   return *end;
 }
 
-ChildEnd run_in_child(const std::function<int(int out)>& f, double timeout_seconds) {
-  return finish_child(start_child(f), timeout_seconds);
+ChildEnd run_in_child(const std::function<int(int out)>& f, double timeout_seconds, const std::function<bool()>& stop) {
+  return finish_child(start_child(f), timeout_seconds, stop);
 }
 
 ChildEnd run_program(const std::vector<std::string>& argv, const ProgramIo& io, double timeout_seconds,

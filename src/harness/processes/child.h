@@ -29,7 +29,7 @@ struct ChildEnd {
   int status = -1;         // the status it exited with; -1 when a signal ended it
   int signal = 0;          // the signal that ended it (SIGKILL at the time limit), or 0
   bool timed_out = false;  // killed because it ran past its time limit
-  bool stopped = false;    // killed because finish_child's `stop` asked for it
+  bool stopped = false;    // ended by a signal after finish_child's `stop` asked for it
   std::string output;      // the bytes it wrote on its output (finish_child, run_in_child)
 
   /// True when it exited with status 0.
@@ -67,14 +67,16 @@ struct ProgramIo {
 Child start_program(const std::vector<std::string>& argv, const ProgramIo& io = {});
 
 /// Reads a child's output to the end (if it has a pipe) and reaps it, closing `out`. A child
-/// still running `timeout_seconds` (> 0; 0: no limit) after the call is killed with SIGKILL
-/// (its whole process group if it leads one), and so is it when `stop`, asked at least every
-/// 50 ms while it runs, returns true. A child that exits by itself just before its kill ends as
-/// it exited (neither timed out nor stopped).
+/// still running `timeout_seconds` (> 0; 0: no limit) after the call is killed with SIGKILL. When
+/// `stop`, asked at least every 50 ms while it runs, returns true, the child gets SIGTERM (a child
+/// may defer it over what it must not leave half done), and SIGKILL if it still runs a second
+/// later. Signals reach its whole process group if it leads one. A child that exits by itself
+/// just before its kill ends as it exited (neither timed out nor stopped).
 ChildEnd finish_child(Child child, double timeout_seconds = 0, const std::function<bool()>& stop = {});
 
 /// start_child then finish_child: f's exit status, the signal that ended it, and its output.
-ChildEnd run_in_child(const std::function<int(int out)>& f, double timeout_seconds = 0);
+ChildEnd run_in_child(const std::function<int(int out)>& f, double timeout_seconds = 0,
+                      const std::function<bool()>& stop = {});
 
 /// start_program then finish_child.
 ChildEnd run_program(const std::vector<std::string>& argv, const ProgramIo& io = {}, double timeout_seconds = 0,

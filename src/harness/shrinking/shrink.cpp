@@ -173,12 +173,16 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
   const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(max_seconds);
   const QueryKind kind = kind_of(input);
   const std::string target = signature_of(kind, start);
-  ShrinkResult r{input, start, 0, 0};
+  ShrinkResult r{input, start, 0, 0, false};
   Json current = input_to_json(input);
 
   // Accepts a candidate document if it still shows the same disagreement.
   const auto attempt = [&](const Json& doc) {
-    if (r.attempts >= max_attempts || std::chrono::steady_clock::now() > deadline) return false;
+    if (r.attempts >= max_attempts) return false;
+    if (std::chrono::steady_clock::now() > deadline) {
+      r.out_of_time = true;
+      return false;
+    }
     ++r.attempts;
     Input candidate;
     try {
@@ -213,12 +217,18 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
   for (const auto& [pointer, mesh] : targets.meshes) dropped |= shrink_mesh_faces(current, pointer, *mesh, attempt);
   if (dropped && written_faces(r.input) > kMaxWrittenFaces) {
     const int attempts = r.attempts;
+    const bool out_of_time = r.out_of_time;
     r = before;
     r.attempts = attempts;
+    r.out_of_time = out_of_time;
     current = before_doc;
   }
 
-  for (bool progress = true; progress && r.attempts < max_attempts && std::chrono::steady_clock::now() < deadline;) {
+  for (bool progress = true; progress && r.attempts < max_attempts;) {
+    if (std::chrono::steady_clock::now() >= deadline) {
+      r.out_of_time = true;
+      break;
+    }
     progress = false;
     // Frames toward the identity and the signed permutations, as a whole.
     for (const Targets::Frame& frame : targets.frames) {

@@ -17,6 +17,7 @@ struct ShrinkResult {
   Evaluation evaluation;
   int attempts = 0;  // evaluations tried
   int accepted = 0;  // simplifications kept
+  bool out_of_time = false;  // stopped by max_seconds with simplifications left to try
 };
 
 /// Shrinks `input` (whose evaluation is `start`) with at most `max_attempts` evaluations and

@@ -105,6 +105,37 @@ TEST(Classify, OutOfContractChecksTheDocumentedAnswerOnly) {
   EXPECT_EQ(classify(QueryKind::obb_obb, {true, {}, {}, {}}, undecided, {}).cls, CaseClass::undecided);
 }
 
+// Out of contract the library is not judged, but the second opinions are still heard: with no
+// exact verdict, one that answers otherwise than the library documents "differs"; beyond the
+// library's range, where the reference decided, each is judged by its band.
+TEST(Classify, OutOfContractStillHearsTheSecondOpinions) {
+  ExactVerdict documented = exact(false, NAN);
+  documented.contract = Contract::documented;
+  documented.note = "NaN input";
+  const Verdict nan = classify(QueryKind::obb_obb, {false, {}, {}, {}}, documented, {said(kObb, true)});
+  EXPECT_EQ(nan.cls, CaseClass::out_of_contract);
+  ASSERT_EQ(nan.parties.size(), 2u);
+  EXPECT_EQ(nan.parties[1].standing, Standing::differs);
+  EXPECT_NE(nan.parties[1].why.find("says hit where the library documents miss (NaN input)"), std::string::npos);
+  EXPECT_EQ(classify(QueryKind::obb_obb, {false, {}, {}, {}}, documented, {said(kObb, false)}).parties[1].standing,
+            Standing::right);
+
+  ExactVerdict beyond = exact(true, 0.25);
+  beyond.contract = Contract::unspecified;
+  beyond.note = "every coordinate is below 2^-500 in magnitude";
+  const Verdict judged = classify(QueryKind::obb_obb, {false, {}, {}, {}}, beyond, {said(kObb, false)});
+  EXPECT_EQ(judged.cls, CaseClass::out_of_contract);  // the library's miss is not judged
+  EXPECT_EQ(judged.parties[0].standing, Standing::right);
+  EXPECT_EQ(judged.parties[1].standing, Standing::wrong);
+
+  ExactVerdict none = exact(false, NAN);
+  none.contract = Contract::unspecified;
+  none.decided = false;
+  const Verdict unheard = classify(QueryKind::obb_obb, {false, {}, {}, {}}, none, {said(kObb, true)});
+  EXPECT_EQ(unheard.parties[1].standing, Standing::not_applicable);
+  EXPECT_NE(unheard.parties[1].why.find("says hit; no exact verdict"), std::string::npos);
+}
+
 TEST(CaseClass, NamesRoundTrip) {
   for (CaseClass c : kAllClasses) EXPECT_EQ(case_class_named(to_string(c)), c);
   EXPECT_FALSE(case_class_named("bug").has_value());

@@ -149,5 +149,66 @@ TEST(Campaign, TakesAFindingsSecondOpinionsFromItsWorkerNeverAsksThemItself) {
   }
 }
 
+// Answers like FCL's AABB test, a little slowly (as FCL's managers can be).
+class Slow final : public SecondOpinion {
+ public:
+  std::vector<Opinion> opinions(const Input& in) const override {
+    ::usleep(2000);
+    return {{"fcl.AABBd::overlap", Opinion::Status::answered, ask_library(in), "", kBand}};
+  }
+  std::vector<PartyBand> parties(QueryKind) const override { return {{"fcl.AABBd::overlap", kBand}}; }
+};
+
+// No limit (a timeout <= 0) is no limit: no case is ever called a hang.
+TEST(Campaign, NeverCallsACaseAHangWithoutAPositiveLimit) {
+  for (const double timeout : {0.0, -1.0}) {
+    CampaignOptions options;
+    options.seconds = 0.5;
+    options.seed = 13;
+    options.out_of_contract_percent = 0;
+    options.case_timeout_seconds = timeout;
+    const CampaignResult r = aabb_campaign<Slow>(options);
+    EXPECT_GT(r.tallies.at(QueryKind::aabb_aabb).cases, 20u);
+    for (const Finding& f : r.findings) ADD_FAILURE() << "timeout " << timeout << ": " << f.crash;
+  }
+}
+
+// The exact reference, crashing on a few inputs in the workers.
+class CrashingExact final : public ExactReference {
+ public:
+  ExactVerdict judge(const Input& in) const override {
+    if (crashes_on(in)) std::raise(SIGSEGV);
+    return exact_.judge(in);
+  }
+  Explanation explain(const Input& in) const override { return exact_.explain(in); }
+  std::vector<TermError> bound_errors(const bounds::Records& r) const override { return exact_.bound_errors(r); }
+
+ private:
+  exact::ExactRationalReference exact_;
+};
+
+// A party that crashed answered nothing, and those after it were not asked: the finding says
+// the exact verdict was not computed and holds no opinion, instead of a default answer.
+TEST(Campaign, InventsNoAnswerForAPartyThatCrashed) {
+  CampaignOptions options;
+  options.kinds = {QueryKind::aabb_aabb};
+  options.workers = 2;
+  options.seconds = 2;
+  options.seed = 5;
+  const Oracles oracles{[] { return std::make_unique<CrashingExact>(); }, [] { return std::make_unique<Unreliable>(); }};
+  const CampaignResult r = run_campaign(options, oracles);
+  int crashes = 0;
+  for (const Finding& f : r.findings) {
+    if (f.crash.find("in the exact reference") == std::string::npos) continue;
+    ++crashes;
+    EXPECT_EQ(f.evaluation.verdict.cls, CaseClass::undecided);
+    EXPECT_FALSE(f.evaluation.exact.decided);
+    EXPECT_NE(f.evaluation.exact.note.find("killed by signal"), std::string::npos) << f.evaluation.exact.note;
+    EXPECT_TRUE(f.evaluation.opinions.empty());
+    EXPECT_TRUE(f.evaluation.library_failure.empty());  // the library answered before
+  }
+  EXPECT_GT(crashes, 0);
+}
+
 }  // namespace
 }  // namespace cc::harness

@@ -134,8 +134,20 @@ TEST(Program, StopKillsItWithoutAPipeToo) {
   EXPECT_EQ(asked, 3);
   EXPECT_TRUE(end.stopped);
   EXPECT_FALSE(end.timed_out);
-  EXPECT_EQ(end.signal, SIGKILL);
+  EXPECT_EQ(end.signal, SIGTERM);  // asked first; sleep does not defer it
   EXPECT_EQ(end.what(), "was stopped");
+}
+
+// A program that defers SIGTERM (as a child storing a case file does) gets SIGKILL a second later,
+// it and what it started.
+TEST(Program, StopKillsAProgramThatIgnoresSigtermASecondLater) {
+  const auto start = std::chrono::steady_clock::now();
+  const ChildEnd end = run_program({"sh", "-c", "trap '' TERM; sleep 30 & wait"}, {}, 0, [] { return true; });
+  const double seconds = seconds_since(start);
+  EXPECT_TRUE(end.stopped);
+  EXPECT_EQ(end.signal, SIGKILL);
+  EXPECT_GE(seconds, 1.0);
+  EXPECT_LT(seconds, 10.0);
 }
 
 TEST(Program, AppendsToItsFilesInItsFolder) {
