@@ -142,11 +142,13 @@ TEST(Program, StopKillsItWithoutAPipeToo) {
 // it and what it started.
 TEST(Program, StopKillsAProgramThatIgnoresSigtermASecondLater) {
   const auto start = std::chrono::steady_clock::now();
-  const ChildEnd end = run_program({"sh", "-c", "trap '' TERM; sleep 30 & wait"}, {}, 0, [] { return true; });
+  // Stopped once the shell has had half a second to set its trap.
+  const auto stop = [&start] { return seconds_since(start) > 0.5; };
+  const ChildEnd end = run_program({"sh", "-c", "trap '' TERM; sleep 30 & wait"}, {}, 0, stop);
   const double seconds = seconds_since(start);
   EXPECT_TRUE(end.stopped);
   EXPECT_EQ(end.signal, SIGKILL);
-  EXPECT_GE(seconds, 1.0);
+  EXPECT_GE(seconds, 1.5);
   EXPECT_LT(seconds, 10.0);
 }
 
