@@ -23,6 +23,7 @@ int main(int argc, char** argv) {
   cc::tool::add_maze_command(app, exit_code);
   cc::tool::add_mutate_command(app, exit_code);
   cc::tool::add_kind_files_command(app, exit_code);
+  cc::tool::add_audit_exact_command(app, exit_code);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
