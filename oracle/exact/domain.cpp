@@ -55,8 +55,7 @@ bool all_finite(const Obb& b) {
 double scale_of(double largest_magnitude) { return largest_magnitude > 0 ? largest_magnitude : 1.0; }
 
 double signed_margin(double rounded, int exact_sign) {
-  if (exact_sign == 0) return 0.0;
-  if (rounded != 0) return rounded;
+  if (exact_sign == 0 || rounded != 0) return rounded;
   return exact_sign > 0 ? std::numeric_limits<double>::denorm_min() : -std::numeric_limits<double>::denorm_min();
 }
 

@@ -53,8 +53,8 @@ TEST(SignedMargin, IsZeroOnlyForTouchingShapes) {
   EXPECT_EQ(signed_margin(-0.25, -1), -0.25);
   EXPECT_EQ(signed_margin(0.0, 1), 0x1p-1074);    // underflowed: the smallest subnormal, overlapping
   EXPECT_EQ(signed_margin(-0.0, -1), -0x1p-1074);  // underflowed: apart
-  EXPECT_EQ(signed_margin(0.0, 0), 0.0);
-  EXPECT_FALSE(std::signbit(signed_margin(-0.0, 0)));  // touching: +0
+  EXPECT_EQ(signed_margin(0.0, 0), 0.0);  // touching: 0, as rounded
+  EXPECT_TRUE(std::signbit(signed_margin(-0.0, 0)));
 }
 
 }  // namespace
