@@ -1,6 +1,7 @@
 #include "oracle/exact/domain.h"
 
 #include <cmath>
+#include <limits>
 
 #include "oracle/exact/rational.h"
 
@@ -59,6 +60,11 @@ bool all_finite(const Obb& b) {
 }
 
 double scale_of(double largest_magnitude) { return largest_magnitude > 0 ? largest_magnitude : 1.0; }
+
+double signed_margin(double rounded, int exact_sign) {
+  if (exact_sign == 0 || rounded != 0) return rounded;
+  return exact_sign > 0 ? std::numeric_limits<double>::denorm_min() : -std::numeric_limits<double>::denorm_min();
+}
 
 std::optional<std::string> scale_outside(double largest_magnitude, int min_exponent, int max_exponent) {
   if (largest_magnitude > std::ldexp(1.0, max_exponent)) {

@@ -28,6 +28,12 @@ bool all_finite(const Obb& b);
 /// The inputs' scale: the largest magnitude of their coordinates, or 1 when all are 0.
 double scale_of(double largest_magnitude);
 
+/// A margin computed in doubles (`rounded`, a length over the scale) with the sign of the exact
+/// quantity that decides the case (exact_sign: > 0 overlapping, 0 touching, < 0 apart): a margin
+/// that underflows to 0 while the shapes do not touch becomes the smallest subnormal of its sign,
+/// so that a margin is 0 only for touching shapes.
+double signed_margin(double rounded, int exact_sign);
+
 /// Why a scale lies outside [2^min_exponent, 2^max_exponent], or nothing when it does not.
 std::optional<std::string> scale_outside(double largest_magnitude, int min_exponent, int max_exponent);
 

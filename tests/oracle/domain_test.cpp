@@ -48,5 +48,14 @@ TEST(NotOrthonormal, IsTheGramMatrixWithinTheTolerance) {
   EXPECT_FALSE(not_orthonormal(Mat3::from_columns({1, 0, 0}, {0, 1, 0}, {0, 0, 1 + 0x1p-50})).has_value());
 }
 
+TEST(SignedMargin, IsZeroOnlyForTouchingShapes) {
+  EXPECT_EQ(signed_margin(0.25, 1), 0.25);
+  EXPECT_EQ(signed_margin(-0.25, -1), -0.25);
+  EXPECT_EQ(signed_margin(0.0, 1), 0x1p-1074);    // underflowed: the smallest subnormal, overlapping
+  EXPECT_EQ(signed_margin(-0.0, -1), -0x1p-1074);  // underflowed: apart
+  EXPECT_EQ(signed_margin(0.0, 0), 0.0);  // touching: 0, as rounded
+  EXPECT_TRUE(std::signbit(signed_margin(-0.0, 0)));
+}
+
 }  // namespace
 }  // namespace cc::exact

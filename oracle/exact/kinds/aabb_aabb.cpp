@@ -38,7 +38,7 @@ ExactVerdict judge(const harness::AabbAabbInput& in) {
   }
   ExactVerdict v;
   v.answer.hit = sgn(*overlap) >= 0;
-  v.margin = to_double(*overlap) / scale_of(max_magnitude(all));
+  v.margin = signed_margin(to_double(*overlap) / scale_of(max_magnitude(all)), sgn(*overlap));
   return v;
 }
 

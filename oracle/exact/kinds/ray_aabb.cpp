@@ -103,7 +103,7 @@ ExactVerdict judge(const harness::RayAabbInput& in) {
   if (r.empty_range) {
     v.margin = -INFINITY;
   } else {
-    v.margin = -to_double(r.delta) / scale_of(magnitude);
+    v.margin = signed_margin(-to_double(r.delta) / scale_of(magnitude), -sgn(r.delta));
     if ((sgn(r.delta) <= 0) != r.hit) {
       v.decided = false;
       v.note = "internal inconsistency: margin and answer disagree";

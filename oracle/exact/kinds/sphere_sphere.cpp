@@ -48,7 +48,7 @@ ExactVerdict judge(const harness::SphereSphereInput& in) {
     return beyond_range(v, *why);
   }
   const double denominator = to_double(reach) + length(d).to_double();
-  v.margin = denominator > 0 ? to_double(slack) / denominator / scale_of(magnitude) : 0.0;
+  v.margin = signed_margin(denominator > 0 ? to_double(slack) / denominator / scale_of(magnitude) : 0.0, sgn(slack));
   return v;
 }
 

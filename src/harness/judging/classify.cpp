@@ -26,6 +26,7 @@ std::string_view to_string(CaseClass c) {
     case CaseClass::boundary: return "boundary";
     case CaseClass::out_of_contract: return "out_of_contract";
     case CaseClass::undecided: return "undecided";
+    case CaseClass::exact_defect: return "exact_defect";
   }
   return "?";
 }

@@ -20,11 +20,12 @@ enum class CaseClass {
   boundary,         // some party differs, inside its band
   out_of_contract,  // inputs outside the library's domain; its documented answer holds
   undecided,        // the exact reference cannot decide
+  exact_defect,     // CGAL's exact kernel and the exact reference disagree (crosscheck audit-exact)
 };
 
 inline constexpr CaseClass kAllClasses[] = {CaseClass::agree,          CaseClass::impl_bug,       CaseClass::oracle_defect,
                                             CaseClass::oracle_crash,   CaseClass::boundary,       CaseClass::out_of_contract,
-                                            CaseClass::undecided};
+                                            CaseClass::undecided,      CaseClass::exact_defect};
 
 std::string_view to_string(CaseClass c);
 std::optional<CaseClass> case_class_named(std::string_view name);

@@ -1,0 +1,188 @@
+// CGAL's answers (cgal_audit.h). Every double becomes the rational it is (a CGAL point or
+// number built from doubles is exact), and each shape becomes CGAL objects: an axis-aligned box
+// an Iso_cuboid_3; a sphere its centre and radius; a ray a Ray_3, Segment_3, Point_3 or two
+// Ray_3 (a line) by its parameter range; a triangle a Triangle_3, or a Segment_3 or Point_3 when degenerate; an
+// oriented box (the parallelepiped its axes span) the union of the six tetrahedra of its Kuhn
+// triangulation, or of two triangles, a segment or a point when half extents are 0. Two shapes
+// made of pieces meet iff some pair of their pieces does.
+#include "oracle/cgal/cgal_audit.h"
+
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Intersections_3/Iso_cuboid_3_Iso_cuboid_3.h>
+#include <CGAL/Intersections_3/Iso_cuboid_3_Point_3.h>
+#include <CGAL/Intersections_3/Iso_cuboid_3_Ray_3.h>
+#include <CGAL/Intersections_3/Iso_cuboid_3_Segment_3.h>
+#include <CGAL/Intersections_3/Iso_cuboid_3_Triangle_3.h>
+#include <CGAL/Intersections_3/Point_3_Segment_3.h>
+#include <CGAL/Intersections_3/Point_3_Tetrahedron_3.h>
+#include <CGAL/Intersections_3/Point_3_Triangle_3.h>
+#include <CGAL/Intersections_3/Segment_3_Segment_3.h>
+#include <CGAL/Intersections_3/Segment_3_Tetrahedron_3.h>
+#include <CGAL/Intersections_3/Segment_3_Triangle_3.h>
+#include <CGAL/Intersections_3/Tetrahedron_3_Tetrahedron_3.h>
+#include <CGAL/Intersections_3/Tetrahedron_3_Triangle_3.h>
+#include <CGAL/Intersections_3/Triangle_3_Triangle_3.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+namespace cc::cgal {
+namespace {
+
+using K = CGAL::Exact_predicates_exact_constructions_kernel;
+using FT = K::FT;
+using Point = K::Point_3;
+using Vector = K::Vector_3;
+using Segment = K::Segment_3;
+using Triangle3 = K::Triangle_3;
+using Tetrahedron = K::Tetrahedron_3;
+using Cuboid = K::Iso_cuboid_3;
+
+/// A closed piece of a shape, never degenerate.
+using Piece = std::variant<Point, Segment, Triangle3, Tetrahedron>;
+using Pieces = std::vector<Piece>;
+
+Point point(const Vec3& v) { return {v.x, v.y, v.z}; }
+Vector vector(const Vec3& v) { return {v.x, v.y, v.z}; }
+
+void require(bool in_contract, const char* what) {
+  if (!in_contract) throw std::invalid_argument(std::string("cgal_answer: ") + what);
+}
+
+void require_finite(std::initializer_list<Vec3> points) {
+  for (const Vec3& p : points) require(finite(p), "a coordinate is NaN or infinite");
+}
+
+Cuboid cuboid(const Aabb& box) {
+  require_finite({box.lo, box.hi});
+  for (int k = 0; k < 3; ++k) require(box.lo[k] <= box.hi[k], "inverted box");
+  return {point(box.lo), point(box.hi)};
+}
+
+/// A triangle; collinear vertices span the segment between the two extreme ones (the
+/// lexicographic order of points on a line is their order along it).
+Pieces pieces(const Triangle& t) {
+  require_finite({t.v[0], t.v[1], t.v[2]});
+  const std::array<Point, 3> p = {point(t.v[0]), point(t.v[1]), point(t.v[2])};
+  if (!CGAL::collinear(p[0], p[1], p[2])) return {Triangle3(p[0], p[1], p[2])};
+  const auto [lo, hi] = std::minmax_element(p.begin(), p.end());
+  if (*lo == *hi) return {*lo};
+  return {Segment(*lo, *hi)};
+}
+
+/// The parallelepiped { center + sum u_i half_i axes.col[i] : |u_i| <= 1 }.
+Pieces pieces(const Obb& b) {
+  require_finite({b.center, b.half, b.axes.col[0], b.axes.col[1], b.axes.col[2]});
+  Point corner = point(b.center);
+  std::vector<Vector> edges;  // the full edge of each axis that spans
+  for (int i = 0; i < 3; ++i) {
+    require(b.half[i] >= 0, "negative half extent");
+    const Vector c = vector(b.axes.col[i]);
+    if (b.half[i] == 0 || c == CGAL::NULL_VECTOR) continue;
+    const FT h(b.half[i]);
+    corner = corner - c * h;
+    edges.push_back(c * (2 * h));
+  }
+  Pieces out;
+  if (edges.empty()) {
+    out = {corner};
+  } else if (edges.size() == 1) {
+    out = {Segment(corner, corner + edges[0])};
+  } else if (edges.size() == 2) {
+    const Point far = corner + edges[0] + edges[1];
+    out = {Triangle3(corner, corner + edges[0], far), Triangle3(corner, corner + edges[1], far)};
+  } else {
+    // Kuhn: one tetrahedron per order of the three edges, along the diagonal corner..far.
+    const Point far = corner + edges[0] + edges[1] + edges[2];
+    std::array<int, 3> order = {0, 1, 2};
+    do {
+      const Point p1 = corner + edges[order[0]];
+      out.push_back(Tetrahedron(corner, p1, p1 + edges[order[1]], far));
+    } while (std::next_permutation(order.begin(), order.end()));
+  }
+  for (const Piece& piece : out) {
+    std::visit(
+        [](const auto& s) {
+          if constexpr (!std::is_same_v<std::decay_t<decltype(s)>, Point>) {
+            require(!s.is_degenerate(), "axes not independent");
+          }
+        },
+        piece);
+  }
+  return out;
+}
+
+template <class A, class B>
+bool meet(const A& a, const B& b) {
+  if constexpr (std::is_same_v<A, Point> && std::is_same_v<B, Point>) {
+    return a == b;
+  } else {
+    return CGAL::do_intersect(a, b);
+  }
+}
+
+bool meet(const Pieces& a, const Pieces& b) {
+  for (const Piece& p : a) {
+    for (const Piece& q : b) {
+      if (std::visit([](const auto& x, const auto& y) { return meet(x, y); }, p, q)) return true;
+    }
+  }
+  return false;
+}
+
+bool meet(const Pieces& a, const Cuboid& box) {
+  for (const Piece& p : a) {
+    if (std::visit([&](const auto& x) { return CGAL::do_intersect(x, box); }, p)) return true;
+  }
+  return false;
+}
+
+/// The ray's points { origin + t dir : tmin <= t <= tmax } against the box.
+bool ray_meets(const Ray& ray, const Cuboid& box) {
+  require_finite({ray.origin, ray.dir});
+  require(!std::isnan(ray.tmin) && !std::isnan(ray.tmax) && ray.tmin != INFINITY && ray.tmax != -INFINITY,
+          "tmin = +inf, tmax = -inf or NaN");
+  if (ray.tmin > ray.tmax) return false;
+  Vec3 d = ray.dir;
+  for (int k = 0; k < 3; ++k) {
+    if (d[k] != 0 && std::isinf(1.0 / d[k])) d[k] = 0;  // parallel by the library's contract
+  }
+  const Point o = point(ray.origin);
+  const Vector dir = vector(d);
+  const bool from = std::isfinite(ray.tmin), to = std::isfinite(ray.tmax);
+  if (dir == CGAL::NULL_VECTOR || ray.tmin == ray.tmax) {
+    return CGAL::do_intersect(from ? o + dir * FT(ray.tmin) : (to ? o + dir * FT(ray.tmax) : o), box);
+  }
+  if (from && to) return CGAL::do_intersect(Segment(o + dir * FT(ray.tmin), o + dir * FT(ray.tmax)), box);
+  if (from) return CGAL::do_intersect(K::Ray_3(o + dir * FT(ray.tmin), dir), box);
+  if (to) return CGAL::do_intersect(K::Ray_3(o + dir * FT(ray.tmax), -dir), box);
+  // A line as its two rays from the origin: CGAL 5.5's Line_3 / Iso_cuboid_3 test answers hit
+  // for a line parallel to a slab that lies in the slab's boundary plane, wherever the other
+  // two slabs are (it compares their parameters as ratios over the parallel slab's 0 / 0).
+  return CGAL::do_intersect(K::Ray_3(o, dir), box) || CGAL::do_intersect(K::Ray_3(o, -dir), box);
+}
+
+}  // namespace
+
+CgalAnswer cgal_answer(const Sphere& a, const Sphere& b) {
+  require_finite({a.center, b.center, {a.radius, b.radius, 0}});
+  require(a.radius >= 0 && b.radius >= 0, "negative radius");
+  const FT reach = FT(a.radius) + FT(b.radius);
+  const int sign = CGAL::sign(reach * reach - CGAL::squared_distance(point(a.center), point(b.center)));
+  return {sign >= 0, sign};
+}
+
+CgalAnswer cgal_answer(const Aabb& a, const Aabb& b) { return {CGAL::do_intersect(cuboid(a), cuboid(b)), std::nullopt}; }
+CgalAnswer cgal_answer(const Ray& ray, const Aabb& box) { return {ray_meets(ray, cuboid(box)), std::nullopt}; }
+CgalAnswer cgal_answer(const Triangle& tri, const Aabb& box) { return {meet(pieces(tri), cuboid(box)), std::nullopt}; }
+CgalAnswer cgal_answer(const Triangle& tri, const Obb& box) { return {meet(pieces(tri), pieces(box)), std::nullopt}; }
+CgalAnswer cgal_answer(const Triangle& a, const Triangle& b) { return {meet(pieces(a), pieces(b)), std::nullopt}; }
+CgalAnswer cgal_answer(const Obb& a, const Obb& b) { return {meet(pieces(a), pieces(b)), std::nullopt}; }
+
+}  // namespace cc::cgal

@@ -1,0 +1,51 @@
+// CGAL's exact kernel (exact predicates, exact constructions) as a second exact reference, to
+// audit oracle/exact with: whether two closed shapes meet, for the shapes CGAL can express, the
+// same doubles converted exactly. This unit is the only one that includes CGAL (its headers are
+// slow to compile); exact_audit.h puts it to work on the queries.
+//
+// Every function takes inputs in the library's contract (finite coordinates, boxes not
+// inverted, radii and half extents >= 0, an oriented box's axes independent, a ray's tmin < inf
+// and tmax > -inf) and throws std::invalid_argument otherwise. Touching is a hit. Degenerate
+// shapes are what they span: a collinear triangle the segment between its extreme vertices, a
+// box of zero extent a rectangle, a segment or a point.
+#pragma once
+
+#include <optional>
+
+#include "collide/aabb.h"
+#include "collide/obb.h"
+#include "collide/ray_aabb.h"
+#include "collide/sphere.h"
+#include "collide/triangle.h"
+
+namespace cc::cgal {
+
+/// CGAL's answer to whether two shapes meet.
+struct CgalAnswer {
+  bool hit = false;
+  /// Where CGAL computes the decision's quantity itself, its sign: > 0 overlapping, 0 touching,
+  /// < 0 apart (two spheres: (r_a + r_b)^2 - |c_a - c_b|^2).
+  std::optional<int> margin_sign;
+};
+
+/// Squared distance of the centres against the squared sum of the radii.
+CgalAnswer cgal_answer(const Sphere& a, const Sphere& b);
+/// Iso_cuboid_3 against Iso_cuboid_3.
+CgalAnswer cgal_answer(const Aabb& a, const Aabb& b);
+/// The points origin + t dir, tmin <= t <= tmax (a Segment_3, a Ray_3, a line as two Ray_3 from
+/// the origin, or a Point_3 when dir is 0 or tmin = tmax; nothing when tmin > tmax) against an
+/// Iso_cuboid_3. A direction
+/// component whose reciprocal overflows is 0, as the library's contract defines it.
+CgalAnswer cgal_answer(const Ray& ray, const Aabb& box);
+/// Triangle_3 (Segment_3, Point_3) against Iso_cuboid_3.
+CgalAnswer cgal_answer(const Triangle& tri, const Aabb& box);
+/// Triangle_3 (Segment_3, Point_3) against the parallelepiped the box's axes span, as the union
+/// of the six tetrahedra of its Kuhn triangulation (two triangles, a segment or a point when half
+/// extents are 0).
+CgalAnswer cgal_answer(const Triangle& tri, const Obb& box);
+/// Triangle_3 (Segment_3, Point_3) against Triangle_3 (Segment_3, Point_3).
+CgalAnswer cgal_answer(const Triangle& a, const Triangle& b);
+/// The two parallelepipeds, each as above.
+CgalAnswer cgal_answer(const Obb& a, const Obb& b);
+
+}  // namespace cc::cgal

@@ -1,0 +1,139 @@
+// CGAL's party on cases worked out by hand: touching (a hit), one ulp apart (a miss), parallel
+// and degenerate shapes, and the line in a face's plane that CGAL 5.5's Line_3 test gets wrong.
+#include "oracle/cgal/cgal_audit.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <stdexcept>
+
+namespace cc::cgal {
+namespace {
+
+constexpr double kInf = INFINITY;
+const double kAboveOne = std::nextafter(1.0, 2.0);
+
+Aabb unit_box() { return {{0, 0, 0}, {1, 1, 1}}; }
+Triangle triangle(Vec3 a, Vec3 b, Vec3 c) { return {{a, b, c}}; }
+Obb obb(Vec3 center, Vec3 half, Mat3 axes = Mat3::identity()) { return {center, half, axes}; }
+// A quarter turn about z: exact in doubles.
+const Mat3 kQuarterTurn = Mat3::from_columns({0, 1, 0}, {-1, 0, 0}, {0, 0, 1});
+
+TEST(CgalSpheres, TouchingIsAHitAtSignZero) {
+  const CgalAnswer a = cgal_answer(Sphere{{0, 0, 0}, 1}, Sphere{{3, 0, 0}, 2});
+  EXPECT_TRUE(a.hit);
+  EXPECT_EQ(a.margin_sign, 0);
+}
+
+TEST(CgalSpheres, OneUlpApartIsAMissAndOverlapIsPositive) {
+  const CgalAnswer apart = cgal_answer(Sphere{{0, 0, 0}, 1}, Sphere{{std::nextafter(3.0, 4.0), 0, 0}, 2});
+  EXPECT_FALSE(apart.hit);
+  EXPECT_EQ(apart.margin_sign, -1);
+  EXPECT_EQ(cgal_answer(Sphere{{0, 0, 0}, 1}, Sphere{{0, 2, 0}, 2}).margin_sign, 1);
+}
+
+TEST(CgalSpheres, SubnormalRadiiOverlapExactly) {
+  // Same centre, radii 5e-324: (r_a + r_b)^2 > 0 = |c_a - c_b|^2, however small.
+  const CgalAnswer a = cgal_answer(Sphere{{0, 7.5, 8}, 5e-324}, Sphere{{0, 7.5, 8}, 5e-324});
+  EXPECT_EQ(a.margin_sign, 1);
+  EXPECT_EQ(cgal_answer(Sphere{{1, 1, 1}, 0}, Sphere{{1, 1, 1}, 0}).margin_sign, 0);  // two points, equal
+}
+
+TEST(CgalBoxes, SharedFaceIsAHitOneUlpApartAMiss) {
+  EXPECT_TRUE(cgal_answer(unit_box(), Aabb{{1, 0, 0}, {2, 1, 1}}).hit);
+  EXPECT_FALSE(cgal_answer(unit_box(), Aabb{{kAboveOne, 0, 0}, {2, 1, 1}}).hit);
+  EXPECT_TRUE(cgal_answer(unit_box(), Aabb{{1, 1, 1}, {1, 1, 1}}).hit);  // a point box on the corner
+}
+
+TEST(CgalRays, LineInAFacePlaneMissesWhenItsSlabsDoNotOverlap) {
+  // x = 2 throughout (the box's flat x slab); y in the box needs t in [131071.89.., 131072.14..],
+  // z in it needs t in [-2, 0]: a miss (CGAL 5.5's Line_3 test says hit).
+  const Ray line{{2, 1.75, 0}, {0, 16, 2}, -kInf, kInf};
+  EXPECT_FALSE(cgal_answer(line, Aabb{{2, 2097152, -4}, {2, 2097156, 0}}).hit);
+  const Ray through_corner{{2, 2097152, 0}, {0, 16, 2}, -kInf, kInf};  // at t = 0 on the box's edge
+  EXPECT_TRUE(cgal_answer(through_corner, Aabb{{2, 2097152, -4}, {2, 2097156, 0}}).hit);
+}
+
+TEST(CgalRays, RaysAndSegmentsEndWhereTheirRangeDoes) {
+  EXPECT_FALSE(cgal_answer(Ray{{0.5, 0.5, 2}, {0, 0, 1}, 0, kInf}, unit_box()).hit);  // pointing away
+  EXPECT_TRUE(cgal_answer(Ray{{0.5, 0.5, 2}, {0, 0, -1}, 0, kInf}, unit_box()).hit);
+  EXPECT_TRUE(cgal_answer(Ray{{0.5, 0.5, 2}, {0, 0, 1}, -kInf, 0}, unit_box()).hit);  // t <= 0: backwards
+  // A segment from z = 3 down to z = 1 exactly touches the top face; one ulp of t short, it misses.
+  EXPECT_TRUE(cgal_answer(Ray{{0.5, 0.5, 3}, {0, 0, -1}, 0, 2}, unit_box()).hit);
+  EXPECT_FALSE(cgal_answer(Ray{{0.5, 0.5, 3}, {0, 0, -1}, 0, std::nextafter(2.0, 0.0)}, unit_box()).hit);
+  EXPECT_FALSE(cgal_answer(Ray{{0.5, 0.5, 0.5}, {0, 0, 1}, 1, 0}, unit_box()).hit);  // tmin > tmax: no point
+}
+
+TEST(CgalRays, ZeroDirectionIsAPointAndASubnormalComponentIsParallel) {
+  EXPECT_TRUE(cgal_answer(Ray{{1, 1, 1}, {0, 0, 0}, 0, kInf}, unit_box()).hit);
+  EXPECT_FALSE(cgal_answer(Ray{{kAboveOne, 1, 1}, {0, 0, 0}, -kInf, kInf}, unit_box()).hit);
+  // 1 / 5e-324 overflows: the contract makes the x component 0, so x stays on the face x = 1.
+  EXPECT_TRUE(cgal_answer(Ray{{1, 0.5, -5}, {5e-324, 0, 1}, 0, kInf}, unit_box()).hit);
+}
+
+TEST(CgalTriangleBox, VertexOnTheCornerIsAHitOneUlpOffAMiss) {
+  EXPECT_TRUE(cgal_answer(triangle({1, 1, 1}, {2, 1, 1}, {2, 2, 3}), unit_box()).hit);
+  EXPECT_FALSE(cgal_answer(triangle({kAboveOne, 1, 1}, {2, 1, 1}, {2, 2, 3}), unit_box()).hit);
+  // In the plane of the top face, overlapping it.
+  EXPECT_TRUE(cgal_answer(triangle({0.5, 0.5, 1}, {5, 0.5, 1}, {0.5, 5, 1}), unit_box()).hit);
+}
+
+TEST(CgalTriangleBox, DegenerateTrianglesAreTheirSegmentOrPoint) {
+  // Collinear, the middle vertex listed last: the segment from (-1,..) to (3,..) crosses the box.
+  EXPECT_TRUE(cgal_answer(triangle({-1, 0.5, 0.5}, {3, 0.5, 0.5}, {2, 0.5, 0.5}), unit_box()).hit);
+  EXPECT_FALSE(cgal_answer(triangle({2, 0.5, 0.5}, {3, 0.5, 0.5}, {2.5, 0.5, 0.5}), unit_box()).hit);
+  EXPECT_TRUE(cgal_answer(triangle({1, 1, 1}, {1, 1, 1}, {1, 1, 1}), unit_box()).hit);
+  EXPECT_FALSE(cgal_answer(triangle({1, 1, kAboveOne}, {1, 1, kAboveOne}, {1, 1, kAboveOne}), unit_box()).hit);
+}
+
+TEST(CgalTriangles, CoplanarSharingAnEdgeHitParallelPlanesMiss) {
+  const Triangle a = triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  EXPECT_TRUE(cgal_answer(a, triangle({1, 0, 0}, {0, 1, 0}, {1, 1, 0})).hit);
+  EXPECT_FALSE(cgal_answer(a, triangle({0, 0, 1e-300}, {1, 0, 1e-300}, {0, 1, 1e-300})).hit);
+  EXPECT_FALSE(cgal_answer(a, triangle({kAboveOne, 0, 0}, {2, 0, 0}, {2, 1, 0})).hit);  // beyond a's vertex
+}
+
+TEST(CgalTriangles, SegmentAndPointTriangles) {
+  const Triangle a = triangle({0, 0, 0}, {1, 0, 0}, {0, 1, 0});
+  EXPECT_TRUE(cgal_answer(a, triangle({0.25, 0.25, -1}, {0.25, 0.25, 1}, {0.25, 0.25, 0})).hit);  // pierces
+  EXPECT_TRUE(cgal_answer(a, triangle({0.5, 0.5, 0}, {0.5, 0.5, 0}, {0.5, 0.5, 0})).hit);  // on the hypotenuse
+  EXPECT_FALSE(cgal_answer(a, triangle({0.5, kAboveOne / 2, 0}, {0.5, kAboveOne / 2, 0}, {0.5, kAboveOne / 2, 0})).hit);
+  const Triangle p = triangle({3, 3, 3}, {3, 3, 3}, {3, 3, 3});
+  EXPECT_TRUE(cgal_answer(p, p).hit);
+  EXPECT_TRUE(cgal_answer(triangle({0, 0, 5}, {2, 2, 5}, {1, 1, 5}), triangle({0, 2, 5}, {2, 0, 5}, {1, 1, 5})).hit);
+}
+
+TEST(CgalObbs, AParallelepipedIsSolid) {
+  // A small triangle well inside a box rotated a quarter turn: no boundary meets it.
+  const Obb box = obb({0, 0, 0}, {1, 2, 3}, kQuarterTurn);
+  EXPECT_TRUE(cgal_answer(triangle({0.1, 0.1, 0}, {0.2, 0.1, 0}, {0.1, 0.2, 0}), box).hit);
+  // The quarter turn spans x in [-2, 2], y in [-1, 1]: x = 2 touches, one ulp beyond misses.
+  EXPECT_TRUE(cgal_answer(triangle({2, 0, 0}, {5, 0, 0}, {5, 1, 0}), box).hit);
+  EXPECT_FALSE(cgal_answer(triangle({std::nextafter(2.0, 3.0), 0, 0}, {5, 0, 0}, {5, 1, 0}), box).hit);
+  EXPECT_FALSE(cgal_answer(triangle({0, 1.5, 0}, {1, 1.5, 0}, {0, 1.5, 1}), box).hit);
+}
+
+TEST(CgalObbs, ZeroHalfExtentsSpanRectanglesSegmentsAndPoints) {
+  const Obb cube = obb({0, 0, 0}, {1, 1, 1});
+  EXPECT_TRUE(cgal_answer(cube, obb({1, 0, 0}, {0, 5, 5})).hit);                  // a rectangle on a face
+  EXPECT_FALSE(cgal_answer(cube, obb({kAboveOne, 0, 0}, {0, 5, 5})).hit);
+  EXPECT_TRUE(cgal_answer(cube, obb({0, 0, 1}, {0, 0, 0})).hit);                  // a point on a face
+  EXPECT_TRUE(cgal_answer(obb({0, 0, 0}, {0, 0, 0}), cube).hit);                  // a point inside
+  // The quarter turn's second axis is x: segments along x over [1, 5] (touching) and [1.5, 4.5].
+  EXPECT_TRUE(cgal_answer(cube, obb({3, 0, 0}, {0, 2, 0}, kQuarterTurn)).hit);
+  EXPECT_FALSE(cgal_answer(cube, obb({3, 0, 0}, {0, 1.5, 0}, kQuarterTurn)).hit);
+  EXPECT_FALSE(cgal_answer(cube, obb({3, 0, 0}, {2, 0, 0}, kQuarterTurn)).hit);  // along y, at x = 3
+}
+
+TEST(CgalAnswer, InputsOutOfContractAreRefused) {
+  EXPECT_THROW(cgal_answer(Sphere{{NAN, 0, 0}, 1}, Sphere{{0, 0, 0}, 1}), std::invalid_argument);
+  EXPECT_THROW(cgal_answer(Sphere{{0, 0, 0}, -1}, Sphere{{0, 0, 0}, 1}), std::invalid_argument);
+  EXPECT_THROW(cgal_answer(Aabb{{1, 0, 0}, {0, 1, 1}}, unit_box()), std::invalid_argument);
+  EXPECT_THROW(cgal_answer(Ray{{0, 0, 0}, {1, 0, 0}, kInf, kInf}, unit_box()), std::invalid_argument);
+  EXPECT_THROW(cgal_answer(obb({0, 0, 0}, {1, 1, 1}, Mat3::from_columns({1, 0, 0}, {1, 0, 0}, {0, 0, 1})),
+                           obb({0, 0, 0}, {1, 1, 1})),
+               std::invalid_argument);  // axes not independent
+}
+
+}  // namespace
+}  // namespace cc::cgal
