@@ -109,7 +109,7 @@ std::string triage_text(const std::string& title, const Case& recorded, const Ev
   out << "  library    " << answer_text(now.library);
   if (!now.verdict.parties.empty()) out << "   [" << to_string(now.verdict.parties[0].standing) << "]";
   out << "\n";
-  out << "  exact      " << answer_text(now.exact.answer);
+  out << "  exact      " << (now.exact.decided ? answer_text(now.exact.answer) : std::string("no verdict"));
   if (now.exact.contract != Contract::in) out << "   (out of contract: " << now.exact.note << ")";
   out << "\n";
   for (const Opinion& o : now.opinions) {
