@@ -143,29 +143,43 @@ bool meet(const Pieces& a, const Cuboid& box) {
   return false;
 }
 
-/// The ray's points { origin + t dir : tmin <= t <= tmax } against the box.
-bool ray_meets(const Ray& ray, const Cuboid& box) {
+using Ray3 = K::Ray_3;
+/// A part of a ray's points: never Line_3 (see ray_parts).
+using RayPart = std::variant<Point, Segment, Ray3>;
+
+/// The ray's points { origin + t dir : tmin <= t <= tmax }: a Point_3 when dir is 0 or tmin =
+/// tmax, a Segment_3 (tmin, tmax finite), a Ray_3 (one of them infinite), a line as its two Ray_3
+/// from the origin; nothing when tmin > tmax.
+std::vector<RayPart> ray_parts(const Ray& ray) {
   require_finite({ray.origin, ray.dir});
   require(!std::isnan(ray.tmin) && !std::isnan(ray.tmax) && ray.tmin != INFINITY && ray.tmax != -INFINITY,
           "tmin = +inf, tmax = -inf or NaN");
-  if (ray.tmin > ray.tmax) return false;
-  Vec3 d = ray.dir;
-  for (int k = 0; k < 3; ++k) {
-    if (d[k] != 0 && std::isinf(1.0 / d[k])) d[k] = 0;  // parallel by the library's contract
-  }
+  if (ray.tmin > ray.tmax) return {};
   const Point o = point(ray.origin);
-  const Vector dir = vector(d);
+  const Vector dir = vector(ray.dir);
   const bool from = std::isfinite(ray.tmin), to = std::isfinite(ray.tmax);
   if (dir == CGAL::NULL_VECTOR || ray.tmin == ray.tmax) {
-    return CGAL::do_intersect(from ? o + dir * FT(ray.tmin) : (to ? o + dir * FT(ray.tmax) : o), box);
+    return {from ? o + dir * FT(ray.tmin) : (to ? o + dir * FT(ray.tmax) : o)};
   }
-  if (from && to) return CGAL::do_intersect(Segment(o + dir * FT(ray.tmin), o + dir * FT(ray.tmax)), box);
-  if (from) return CGAL::do_intersect(K::Ray_3(o + dir * FT(ray.tmin), dir), box);
-  if (to) return CGAL::do_intersect(K::Ray_3(o + dir * FT(ray.tmax), -dir), box);
+  if (from && to) return {Segment(o + dir * FT(ray.tmin), o + dir * FT(ray.tmax))};
+  if (from) return {Ray3(o + dir * FT(ray.tmin), dir)};
+  if (to) return {Ray3(o + dir * FT(ray.tmax), -dir)};
   // A line as its two rays from the origin: CGAL 5.5's Line_3 / Iso_cuboid_3 test answers hit
   // for a line parallel to a slab that lies in the slab's boundary plane, wherever the other
   // two slabs are (it compares their parameters as ratios over the parallel slab's 0 / 0).
-  return CGAL::do_intersect(K::Ray_3(o, dir), box) || CGAL::do_intersect(K::Ray_3(o, -dir), box);
+  return {Ray3(o, dir), Ray3(o, -dir)};
+}
+
+/// The ray's points against the box, a direction component whose reciprocal overflows being 0
+/// (parallel to its slab, by the library's contract of ray_aabb).
+bool ray_meets(Ray ray, const Cuboid& box) {
+  for (int k = 0; k < 3; ++k) {
+    if (ray.dir[k] != 0 && std::isinf(1.0 / ray.dir[k])) ray.dir[k] = 0;
+  }
+  for (const RayPart& part : ray_parts(ray)) {
+    if (std::visit([&box](const auto& x) { return CGAL::do_intersect(x, box); }, part)) return true;
+  }
+  return false;
 }
 
 }  // namespace
