@@ -4,7 +4,8 @@
 // Ray_3 (a line) by its parameter range; a triangle a Triangle_3, or a Segment_3 or Point_3 when degenerate; an
 // oriented box (the parallelepiped its axes span) the union of the six tetrahedra of its Kuhn
 // triangulation, or of two triangles, a segment or a point when half extents are 0. Two shapes
-// made of pieces meet iff some pair of their pieces does.
+// made of pieces meet iff some pair of their pieces does. A k-DOP's slab is the least and the
+// greatest scalar product (FT) of its direction with the set's points.
 #include "oracle/cgal/cgal_audit.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -26,11 +27,16 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <variant>
 #include <vector>
+
+#include "collide/kdop.h"
 
 namespace cc::cgal {
 namespace {
@@ -182,6 +188,13 @@ bool ray_meets(Ray ray, const Cuboid& box) {
   return false;
 }
 
+/// A hit or a miss, with nothing more.
+CgalAnswer hit_or_miss(bool hit) {
+  CgalAnswer answer;
+  answer.hit = hit;
+  return answer;
+}
+
 }  // namespace
 
 CgalAnswer cgal_answer(const Sphere& a, const Sphere& b) {
@@ -189,14 +202,44 @@ CgalAnswer cgal_answer(const Sphere& a, const Sphere& b) {
   require(a.radius >= 0 && b.radius >= 0, "negative radius");
   const FT reach = FT(a.radius) + FT(b.radius);
   const int sign = CGAL::sign(reach * reach - CGAL::squared_distance(point(a.center), point(b.center)));
-  return {sign >= 0, sign};
+  CgalAnswer answer = hit_or_miss(sign >= 0);
+  answer.margin_sign = sign;
+  return answer;
 }
 
-CgalAnswer cgal_answer(const Aabb& a, const Aabb& b) { return {CGAL::do_intersect(cuboid(a), cuboid(b)), std::nullopt}; }
-CgalAnswer cgal_answer(const Ray& ray, const Aabb& box) { return {ray_meets(ray, cuboid(box)), std::nullopt}; }
-CgalAnswer cgal_answer(const Triangle& tri, const Aabb& box) { return {meet(pieces(tri), cuboid(box)), std::nullopt}; }
-CgalAnswer cgal_answer(const Triangle& tri, const Obb& box) { return {meet(pieces(tri), pieces(box)), std::nullopt}; }
-CgalAnswer cgal_answer(const Triangle& a, const Triangle& b) { return {meet(pieces(a), pieces(b)), std::nullopt}; }
-CgalAnswer cgal_answer(const Obb& a, const Obb& b) { return {meet(pieces(a), pieces(b)), std::nullopt}; }
+CgalAnswer cgal_answer(const Aabb& a, const Aabb& b) { return hit_or_miss(CGAL::do_intersect(cuboid(a), cuboid(b))); }
+CgalAnswer cgal_answer(const Ray& ray, const Aabb& box) { return hit_or_miss(ray_meets(ray, cuboid(box))); }
+CgalAnswer cgal_answer(const Triangle& tri, const Aabb& box) { return hit_or_miss(meet(pieces(tri), cuboid(box))); }
+CgalAnswer cgal_answer(const Triangle& tri, const Obb& box) { return hit_or_miss(meet(pieces(tri), pieces(box))); }
+CgalAnswer cgal_answer(const Triangle& a, const Triangle& b) { return hit_or_miss(meet(pieces(a), pieces(b))); }
+CgalAnswer cgal_answer(const Obb& a, const Obb& b) { return hit_or_miss(meet(pieces(a), pieces(b))); }
+
+CgalAnswer cgal_answer(const harness::KdopKdopInput& in) {
+  const std::span<const KdopDirection> directions = kdop_directions(in.k);
+  require(!directions.empty(), "no direction set for this k");
+  for (const Vec3& p : in.a) require_finite({p});
+  for (const Vec3& p : in.b) require_finite({p});
+  CgalAnswer answer;
+  for (const KdopDirection& d : directions) {
+    const Vector n(FT(d.x), FT(d.y), FT(d.z));
+    // The slab [lo, hi] of the set's exact k-DOP along n; none for an empty set.
+    const auto slab = [&n](const std::vector<Vec3>& points) -> std::optional<std::pair<FT, FT>> {
+      if (points.empty()) return std::nullopt;
+      FT lo = n * (point(points[0]) - CGAL::ORIGIN), hi = lo;
+      for (const Vec3& p : points) {
+        const FT s = n * (point(p) - CGAL::ORIGIN);
+        if (s < lo) lo = s;
+        if (s > hi) hi = s;
+      }
+      return std::pair{lo, hi};
+    };
+    const auto a = slab(in.a), b = slab(in.b);
+    const int sign = a && b ? CGAL::sign(std::min(a->second, b->second) - std::max(a->first, b->first)) : -1;
+    answer.slab_signs.push_back(sign);
+  }
+  answer.margin_sign = *std::min_element(answer.slab_signs.begin(), answer.slab_signs.end());
+  answer.hit = *answer.margin_sign >= 0;
+  return answer;
+}
 
 }  // namespace cc::cgal

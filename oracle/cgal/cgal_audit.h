@@ -1,7 +1,7 @@
 // CGAL's exact kernel (exact predicates, exact constructions) as a second exact reference, to
 // audit oracle/exact with: whether two closed shapes meet, for the shapes CGAL can express, the
-// same doubles converted exactly. This unit is the only one that includes CGAL (its headers are
-// slow to compile); exact_audit.h puts it to work on the queries.
+// same doubles converted exactly; the slabs of two k-DOPs. This unit is the only one that
+// includes CGAL (its headers are slow to compile); exact_audit.h puts it to work on the queries.
 //
 // Every function takes inputs in the library's contract (finite coordinates, boxes not
 // inverted, radii and half extents >= 0, an oriented box's axes independent, a ray's tmin < inf
@@ -11,12 +11,14 @@
 #pragma once
 
 #include <optional>
+#include <vector>
 
 #include "collide/aabb.h"
 #include "collide/obb.h"
 #include "collide/ray_aabb.h"
 #include "collide/sphere.h"
 #include "collide/triangle.h"
+#include "harness/kinds/kdop_kdop.h"
 
 namespace cc::cgal {
 
@@ -24,8 +26,12 @@ namespace cc::cgal {
 struct CgalAnswer {
   bool hit = false;
   /// Where CGAL computes the decision's quantity itself, its sign: > 0 overlapping, 0 touching,
-  /// < 0 apart (two spheres: (r_a + r_b)^2 - |c_a - c_b|^2).
+  /// < 0 apart (two spheres: (r_a + r_b)^2 - |c_a - c_b|^2; two k-DOPs: the smallest overlap of
+  /// a slab).
   std::optional<int> margin_sign;
+  /// kdop_kdop: the sign of each slab's overlap min(a_hi, b_hi) - max(a_lo, b_lo), in the order
+  /// of kdop_directions(k) (> 0 overlapping, 0 touching, < 0 apart).
+  std::vector<int> slab_signs;
 };
 
 /// Squared distance of the centres against the squared sum of the radii.
@@ -47,5 +53,10 @@ CgalAnswer cgal_answer(const Triangle& tri, const Obb& box);
 CgalAnswer cgal_answer(const Triangle& a, const Triangle& b);
 /// The two parallelepipeds, each as above.
 CgalAnswer cgal_answer(const Obb& a, const Obb& b);
+/// The exact k-DOPs of the two point sets: for each direction n of kdop_directions(k), the
+/// smallest and largest n . p of each set (in FT) and the sign of the slabs' overlap; a hit iff
+/// no slab is apart, margin_sign the smallest slab sign. An empty set's k-DOP is empty: every
+/// slab apart. k must have a direction set.
+CgalAnswer cgal_answer(const harness::KdopKdopInput& in);
 
 }  // namespace cc::cgal

@@ -3,6 +3,8 @@
 #include <stdexcept>
 #include <tuple>
 
+#include "oracle/exact/kinds/kdop_kdop.h"
+
 namespace cc::cgal {
 namespace {
 
@@ -14,18 +16,51 @@ concept TwoShapes = std::tuple_size_v<std::remove_cv_t<decltype(harness::Fields<
                                   std::get<1>(harness::Fields<In>::list).of(in));
                     };
 
+// An input that cgal_answer takes whole: an overload for the input type itself (not through
+// harness::Input, which every input converts to).
+template <class In>
+concept TakenWhole = requires { static_cast<CgalAnswer (*)(const In&)>(&cgal_answer); };
+
+template <class In>
+concept Answered = TwoShapes<In> || TakenWhole<In>;
+
 int sign_of(double margin) { return (margin > 0) - (margin < 0); }
+
+std::string signs_text(const std::vector<int>& signs) {
+  std::string text;
+  for (int s : signs) text += s > 0 ? '+' : (s < 0 ? '-' : '0');
+  return text;
+}
+
+// What differs beyond the hit and the margin's sign, for the kinds with more to compare.
+template <class In>
+std::string differences(const In&, const harness::ExactVerdict&, const CgalAnswer&) {
+  return {};
+}
+
+// kdop_kdop: the sign of every slab's overlap, against those of exact_kdop_slabs (which takes
+// non-empty sets only).
+std::string differences(const harness::KdopKdopInput& in, const harness::ExactVerdict&, const CgalAnswer& cgal) {
+  if (in.a.empty() || in.b.empty()) return {};
+  std::vector<int> exact_signs;
+  for (const exact::ExactSlab& s : exact::exact_kdop_slabs(in)) exact_signs.push_back(sgn(s.overlap));
+  if (exact_signs == cgal.slab_signs) return {};
+  return "exact reference's slab overlap signs " + signs_text(exact_signs) + " differ from CGAL's " +
+         signs_text(cgal.slab_signs) + " (directions of k = " + std::to_string(in.k) + " in order)";
+}
 
 }  // namespace
 
 bool answers(harness::QueryKind kind) {
-  return harness::with_kind(kind, []<class In>() { return TwoShapes<In>; });
+  return harness::with_kind(kind, []<class In>() { return Answered<In>; });
 }
 
 std::optional<CgalAnswer> cgal_answer(const harness::Input& input) {
   return std::visit(
       []<class In>(const In& in) -> std::optional<CgalAnswer> {
-        if constexpr (TwoShapes<In>) {
+        if constexpr (TakenWhole<In>) {
+          return cgal_answer(in);
+        } else if constexpr (TwoShapes<In>) {
           return cgal_answer(std::get<0>(harness::Fields<In>::list).of(in), std::get<1>(harness::Fields<In>::list).of(in));
         } else {
           return std::nullopt;
@@ -59,6 +94,8 @@ Audit audit_case(const harness::Input& input, const harness::ExactReference& exa
   } else if (a.cgal.margin_sign && *a.cgal.margin_sign != sign_of(a.exact.margin)) {
     a.why = "exact reference's margin " + std::to_string(a.exact.margin) + " has not the sign of CGAL's " +
             std::to_string(*a.cgal.margin_sign);
+  } else {
+    a.why = std::visit([&a](const auto& in) { return differences(in, a.exact, a.cgal); }, input);
   }
   a.outcome = a.why.empty() ? AuditOutcome::agree : AuditOutcome::disagree;
   return a;

@@ -1,5 +1,6 @@
 // The audit of the exact reference by CGAL: one case answered by both and compared. CGAL
-// answers every kind whose input is two shapes it expresses (cgal_audit.h).
+// answers every kind whose input is two shapes it expresses, and the kinds whose input it takes
+// whole (kdop_kdop), see cgal_audit.h.
 #pragma once
 
 #include <optional>
@@ -12,7 +13,8 @@ namespace cc::cgal {
 
 /// What the audit of one case found.
 enum class AuditOutcome {
-  agree,            // CGAL gives the exact reference's answer (and the sign of its margin, where it computes one)
+  agree,            // CGAL gives the exact reference's answer (and the sign of its margin, where it computes one;
+                    // of every k-DOP slab's overlap, as exact_kdop_slabs gives them)
   disagree,         // it does not: one of the two is wrong (class exact_defect)
   out_of_contract,  // the inputs are outside the library's contract: not compared
   undecided,        // the exact reference cannot decide the case: not compared
@@ -27,7 +29,8 @@ struct Audit {
   bool touching() const;
 };
 
-/// Whether CGAL answers the kind: its input is two shapes that cgal_answer takes.
+/// Whether CGAL answers the kind: its input is two shapes that cgal_answer takes, or cgal_answer
+/// takes the input itself.
 bool answers(harness::QueryKind kind);
 
 /// CGAL's answer to an input in the library's contract; nothing for a kind it does not answer.

@@ -1,11 +1,13 @@
 // CGAL's party on cases worked out by hand: touching (a hit), one ulp apart (a miss), parallel
-// and degenerate shapes, and the line in a face's plane that CGAL 5.5's Line_3 test gets wrong.
+// and degenerate shapes, and the line in a face's plane that CGAL 5.5's Line_3 test gets wrong;
+// k-DOP slabs one by one.
 #include "oracle/cgal/cgal_audit.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <stdexcept>
+#include <vector>
 
 namespace cc::cgal {
 namespace {
@@ -125,7 +127,61 @@ TEST(CgalObbs, ZeroHalfExtentsSpanRectanglesSegmentsAndPoints) {
   EXPECT_FALSE(cgal_answer(cube, obb({3, 0, 0}, {2, 0, 0}, kQuarterTurn)).hit);  // along y, at x = 3
 }
 
+// The tetrahedron x, y, z >= 0, x + y + z <= 1: on the diagonal slabs of k = 18 it spans x + y,
+// x + z, y + z in [0, 1] and x - y, x - z, y - z in [-1, 1].
+const std::vector<Vec3> kTetrahedron = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+
+TEST(CgalKdops, TouchingOnOneSlabIsAHitAtSignZeroThere) {
+  // B spans x in [0.5, 0.625], y in [0.5, 0.875], z in [0.25, 0.5]; its least x + y is 0.5 + 0.5 = 1,
+  // the tetrahedron's greatest: overlap 0 on the slab (1, 1, 0) alone. The others: x 0.125,
+  // y 0.375, z 0.25, x + z 0.25 (B in [0.75, 1.125]), y + z 0.25 (B in [0.75, 1.375]), x - y 0.25
+  // (B in [-0.25, 0]), x - z 0.125 (B in [0.125, 0.25]), y - z 0.125 (B in [0.25, 0.375]).
+  const CgalAnswer a = cgal_answer(harness::KdopKdopInput{18, kTetrahedron, {{0.5, 0.5, 0.25}, {0.625, 0.875, 0.5}}});
+  EXPECT_TRUE(a.hit);
+  EXPECT_EQ(a.margin_sign, 0);
+  EXPECT_EQ(a.slab_signs, (std::vector<int>{1, 1, 1, 0, 1, 1, 1, 1, 1}));
+}
+
+TEST(CgalKdops, OneUlpApartOnOneSlabIsAMiss) {
+  // As above with B's first x one ulp above 0.5: its least x + y is 1 + 2^-53, exact in FT (no
+  // double holds it), so the slab (1, 1, 0) is apart by 2^-53 and nothing else changes sign.
+  const double above_half = std::nextafter(0.5, 1.0);
+  const CgalAnswer a =
+      cgal_answer(harness::KdopKdopInput{18, kTetrahedron, {{above_half, 0.5, 0.25}, {0.625, 0.875, 0.5}}});
+  EXPECT_FALSE(a.hit);
+  EXPECT_EQ(a.margin_sign, -1);
+  EXPECT_EQ(a.slab_signs, (std::vector<int>{1, 1, 1, -1, 1, 1, 1, 1, 1}));
+}
+
+TEST(CgalKdops, ADiagonalSlabSeparatesWhereTheAxesOverlap) {
+  // B spans x in [0.5, 0.75], y in [0.625, 0.75], z in [0.25, 0.5]: within the tetrahedron's box
+  // (the 6-DOP: a hit), but its least x + y + z is 1.375 > 1, so k = 14's slab (1, 1, 1) separates.
+  // k = 14's others, against [-1, 1]: x - y + z in [0.125, 0.5], x + y - z in [0.875, 1] (overlap
+  // 0.125), x - y - z in [-0.5, -0.375].
+  const std::vector<Vec3> b = {{0.5, 0.625, 0.25}, {0.75, 0.75, 0.5}};
+  const CgalAnswer box = cgal_answer(harness::KdopKdopInput{6, kTetrahedron, b});
+  EXPECT_TRUE(box.hit);
+  EXPECT_EQ(box.slab_signs, (std::vector<int>{1, 1, 1}));
+  const CgalAnswer dop = cgal_answer(harness::KdopKdopInput{14, kTetrahedron, b});
+  EXPECT_FALSE(dop.hit);
+  EXPECT_EQ(dop.margin_sign, -1);
+  EXPECT_EQ(dop.slab_signs, (std::vector<int>{1, 1, 1, -1, 1, 1, 1}));
+}
+
+TEST(CgalKdops, APointInsideOverlapsByZeroAndAnEmptySetByNothing) {
+  // A single point's slab has no width: inside the other k-DOP every overlap is 0.
+  const CgalAnswer point = cgal_answer(harness::KdopKdopInput{26, kTetrahedron, {{0.25, 0.25, 0.25}}});
+  EXPECT_TRUE(point.hit);
+  EXPECT_EQ(point.slab_signs, std::vector<int>(13, 0));
+  const CgalAnswer empty = cgal_answer(harness::KdopKdopInput{6, kTetrahedron, {}});
+  EXPECT_FALSE(empty.hit);
+  EXPECT_EQ(empty.margin_sign, -1);
+  EXPECT_EQ(empty.slab_signs, (std::vector<int>{-1, -1, -1}));
+}
+
 TEST(CgalAnswer, InputsOutOfContractAreRefused) {
+  EXPECT_THROW(cgal_answer(harness::KdopKdopInput{8, kTetrahedron, kTetrahedron}), std::invalid_argument);
+  EXPECT_THROW(cgal_answer(harness::KdopKdopInput{18, kTetrahedron, {{0, NAN, 0}}}), std::invalid_argument);
   EXPECT_THROW(cgal_answer(Sphere{{NAN, 0, 0}, 1}, Sphere{{0, 0, 0}, 1}), std::invalid_argument);
   EXPECT_THROW(cgal_answer(Sphere{{0, 0, 0}, -1}, Sphere{{0, 0, 0}, 1}), std::invalid_argument);
   EXPECT_THROW(cgal_answer(Aabb{{1, 0, 0}, {0, 1, 1}}, unit_box()), std::invalid_argument);

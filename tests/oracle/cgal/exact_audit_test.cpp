@@ -4,7 +4,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
+#include <utility>
+#include <vector>
 
+#include "collide/moving_box.h"
 #include "oracle/exact/exact_reference.h"
 
 namespace cc::cgal {
@@ -12,13 +16,38 @@ namespace {
 
 using namespace harness;
 
+// The exact reference with its verdicts altered, to see that the audit notices.
+class AlteredReference : public ExactReference {
+ public:
+  explicit AlteredReference(std::function<void(ExactVerdict&)> alter) : alter_(std::move(alter)) {}
+  ExactVerdict judge(const Input& input) const override {
+    ExactVerdict v = reference_.judge(input);
+    alter_(v);
+    return v;
+  }
+  Explanation explain(const Input& input) const override { return reference_.explain(input); }
+  std::vector<TermError> bound_errors(const bounds::Records& records) const override {
+    return reference_.bound_errors(records);
+  }
+
+ private:
+  exact::ExactRationalReference reference_;
+  std::function<void(ExactVerdict&)> alter_;
+};
+
+// The tetrahedron x, y, z >= 0, x + y + z <= 1, and a box B whose least x + y is 1 (x_low + 0.5):
+// the 18-DOPs touch on the slab (1, 1, 0) alone (cgal_audit_test.cpp works the slabs out).
+KdopKdopInput tetrahedron_and_box(double x_low) {
+  return {18, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{x_low, 0.5, 0.25}, {0.625, 0.875, 0.5}}};
+}
+
 TEST(ExactAudit, AnswersTheKindsMadeOfTwoShapesItExpresses) {
   for (QueryKind kind : {QueryKind::ray_aabb, QueryKind::sphere_sphere, QueryKind::aabb_aabb, QueryKind::tri_aabb,
-                         QueryKind::tri_obb, QueryKind::tri_tri, QueryKind::obb_obb}) {
+                         QueryKind::tri_obb, QueryKind::tri_tri, QueryKind::obb_obb, QueryKind::kdop_kdop}) {
     EXPECT_TRUE(answers(kind)) << name(kind);
   }
-  for (QueryKind kind : {QueryKind::kdop_kdop, QueryKind::mesh_mesh, QueryKind::mesh_mesh_first,
-                         QueryKind::broadphase, QueryKind::ray_mesh, QueryKind::moving_obb}) {
+  for (QueryKind kind : {QueryKind::mesh_mesh, QueryKind::mesh_mesh_first, QueryKind::broadphase,
+                         QueryKind::ray_mesh, QueryKind::moving_obb}) {
     EXPECT_FALSE(answers(kind)) << name(kind);
     EXPECT_FALSE(cgal_answer(with_kind(kind, []<class In>() { return Input(In{}); })).has_value()) << name(kind);
   }
@@ -50,9 +79,30 @@ TEST(ExactAudit, OutOfContractIsNotCompared) {
             AuditOutcome::out_of_contract);
 }
 
+TEST(ExactAudit, KdopsTouchingOnOneSlabAgreeSlabBySlab) {
+  const exact::ExactRationalReference reference;
+  const Audit a = audit_case(tetrahedron_and_box(0.5), reference);
+  EXPECT_EQ(a.outcome, AuditOutcome::agree) << a.why;
+  EXPECT_TRUE(a.touching());
+  EXPECT_EQ(a.cgal.slab_signs, (std::vector<int>{1, 1, 1, 0, 1, 1, 1, 1, 1}));
+  const Audit apart = audit_case(tetrahedron_and_box(std::nextafter(0.5, 1.0)), reference);
+  EXPECT_EQ(apart.outcome, AuditOutcome::agree) << apart.why;
+  EXPECT_FALSE(apart.exact.answer.hit);
+  EXPECT_LT(apart.exact.margin, 0);
+}
+
+TEST(ExactAudit, AKdopMarginOfTheWrongSignIsADisagreement) {
+  // Apart by 2^-53 on one slab: a margin rounded to 0 would call it touching.
+  const AlteredReference rounded_to_zero([](ExactVerdict& v) { v.margin = 0; });
+  const Audit a = audit_case(tetrahedron_and_box(std::nextafter(0.5, 1.0)), rounded_to_zero);
+  EXPECT_EQ(a.outcome, AuditOutcome::disagree);
+  EXPECT_NE(a.why.find("margin"), std::string::npos) << a.why;
+}
+
 TEST(ExactAudit, AKindCgalDoesNotAnswerIsRefused) {
   const exact::ExactRationalReference reference;
-  EXPECT_THROW(audit_case(KdopKdopInput{18, {{0, 0, 0}}, {{0, 0, 0}}}, reference), std::invalid_argument);
+  const MovingObb box = moving_obb(Aabb{{0, 0, 0}, {1, 1, 1}}, {1, 0, 0});
+  EXPECT_THROW(audit_case(MovingObbInput{box, box}, reference), std::invalid_argument);
 }
 
 }  // namespace
