@@ -5,7 +5,9 @@
 // oriented box (the parallelepiped its axes span) the union of the six tetrahedra of its Kuhn
 // triangulation, or of two triangles, a segment or a point when half extents are 0. Two shapes
 // made of pieces meet iff some pair of their pieces does. A k-DOP's slab is the least and the
-// greatest scalar product (FT) of its direction with the set's points.
+// greatest scalar product (FT) of its direction with the set's points. A ray meets a mesh where
+// its parts meet a face's pieces: CGAL constructs each intersection (a point or a segment) and
+// the first t is the least parameter of their points, bracketed by doubles at the end.
 #include "oracle/cgal/cgal_audit.h"
 
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
@@ -14,9 +16,12 @@
 #include <CGAL/Intersections_3/Iso_cuboid_3_Ray_3.h>
 #include <CGAL/Intersections_3/Iso_cuboid_3_Segment_3.h>
 #include <CGAL/Intersections_3/Iso_cuboid_3_Triangle_3.h>
+#include <CGAL/Intersections_3/Point_3_Ray_3.h>
 #include <CGAL/Intersections_3/Point_3_Segment_3.h>
 #include <CGAL/Intersections_3/Point_3_Tetrahedron_3.h>
 #include <CGAL/Intersections_3/Point_3_Triangle_3.h>
+#include <CGAL/Intersections_3/Ray_3_Segment_3.h>
+#include <CGAL/Intersections_3/Ray_3_Triangle_3.h>
 #include <CGAL/Intersections_3/Segment_3_Segment_3.h>
 #include <CGAL/Intersections_3/Segment_3_Tetrahedron_3.h>
 #include <CGAL/Intersections_3/Segment_3_Triangle_3.h>
@@ -27,6 +32,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <span>
 #include <stdexcept>
@@ -37,6 +43,7 @@
 #include <vector>
 
 #include "collide/kdop.h"
+#include "collide/mesh.h"
 
 namespace cc::cgal {
 namespace {
@@ -188,6 +195,40 @@ bool ray_meets(Ray ray, const Cuboid& box) {
   return false;
 }
 
+/// The parameter t of the point p of the line origin + t dir (dir not 0).
+FT parameter(const Point& p, const Point& origin, const Vector& dir) { return (p - origin) * dir / (dir * dir); }
+
+/// The least parameter over the points where a part of a ray and a piece of a face meet (their
+/// intersection is a point or a segment), if they meet.
+template <class Part, class Face>
+std::optional<FT> first_meeting(const Part& part, const Face& face, const Point& origin, const Vector& dir) {
+  if (!meet(part, face)) return std::nullopt;
+  if constexpr (std::is_same_v<Part, Point>) {
+    return parameter(part, origin, dir);
+  } else if constexpr (std::is_same_v<Face, Point>) {
+    return parameter(face, origin, dir);
+  } else {
+    const auto where = CGAL::intersection(part, face);
+    if (!where) throw std::logic_error("cgal_answer: CGAL's do_intersect and intersection disagree");
+    if (const Point* p = boost::get<Point>(&*where)) return parameter(*p, origin, dir);
+    const Segment& s = boost::get<Segment>(*where);
+    return std::min(parameter(s.source(), origin, dir), parameter(s.target(), origin, dir));
+  }
+}
+
+/// The largest double <= t and the smallest double >= t: from a double next to t's exact value,
+/// down while above t, then up while the next double is still <= t. (Not from t's lazy
+/// approximation: its interval may be wide, even unbounded, and the steps countless.)
+Bracket bracket(const FT& t) {
+  constexpr double kMax = std::numeric_limits<double>::max();
+  double down = std::clamp(CGAL::to_double(CGAL::exact(t)), -kMax, kMax);
+  while (down != -INFINITY && FT(down) > t) down = std::nextafter(down, -INFINITY);
+  while (down != kMax && FT(std::nextafter(down, INFINITY)) <= t) down = std::nextafter(down, INFINITY);
+  down += 0.0;  // -0 as 0
+  const bool is_double = down != -INFINITY && FT(down) == t;
+  return {down, is_double ? down : std::nextafter(down, INFINITY)};
+}
+
 /// A hit or a miss, with nothing more.
 CgalAnswer hit_or_miss(bool hit) {
   CgalAnswer answer;
@@ -239,6 +280,41 @@ CgalAnswer cgal_answer(const harness::KdopKdopInput& in) {
   }
   answer.margin_sign = *std::min_element(answer.slab_signs.begin(), answer.slab_signs.end());
   answer.hit = *answer.margin_sign >= 0;
+  return answer;
+}
+
+CgalAnswer cgal_answer(const harness::RayMeshInput& in) {
+  require(in.mesh.mesh != nullptr, "no mesh");
+  const Mesh& mesh = *in.mesh.mesh;
+  require(!mesh_problem(mesh), "invalid mesh");
+  const std::vector<RayPart> parts = ray_parts(in.ray);
+  const Point origin = point(in.ray.origin);
+  const Vector dir = vector(in.ray.dir);
+  const bool origin_alone = dir == CGAL::NULL_VECTOR;  // t stands for tmin
+  CgalAnswer answer;
+  std::optional<FT> first;
+  for (std::uint32_t f = 0; f < mesh.size(); ++f) {
+    bool met = false;
+    for (const Piece& piece : pieces(mesh.triangle(f))) {
+      for (const RayPart& part : parts) {
+        std::visit(
+            [&](const auto& x, const auto& y) {
+              if constexpr (!std::is_same_v<std::decay_t<decltype(y)>, Tetrahedron>) {  // not of a face
+                if (origin_alone) {
+                  met |= meet(x, y);
+                } else if (const std::optional<FT> t = first_meeting(x, y, origin, dir)) {
+                  met = true;
+                  if (!first || *t < *first) first = t;
+                }
+              }
+            },
+            part, piece);
+      }
+    }
+    if (met) answer.faces.push_back(f);
+  }
+  answer.hit = !answer.faces.empty();
+  if (answer.hit) answer.first_t = origin_alone ? Bracket{in.ray.tmin, in.ray.tmin} : bracket(*first);
   return answer;
 }
 

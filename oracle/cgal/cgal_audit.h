@@ -1,7 +1,8 @@
 // CGAL's exact kernel (exact predicates, exact constructions) as a second exact reference, to
 // audit oracle/exact with: whether two closed shapes meet, for the shapes CGAL can express, the
-// same doubles converted exactly; the slabs of two k-DOPs. This unit is the only one that
-// includes CGAL (its headers are slow to compile); exact_audit.h puts it to work on the queries.
+// same doubles converted exactly; the slabs of two k-DOPs; where a ray first meets a mesh. This
+// unit is the only one that includes CGAL (its headers are slow to compile); exact_audit.h puts
+// it to work on the queries.
 //
 // Every function takes inputs in the library's contract (finite coordinates, boxes not
 // inverted, radii and half extents >= 0, an oriented box's axes independent, a ray's tmin < inf
@@ -10,6 +11,7 @@
 // box of zero extent a rectangle, a segment or a point.
 #pragma once
 
+#include <cstdint>
 #include <optional>
 #include <vector>
 
@@ -19,8 +21,15 @@
 #include "collide/sphere.h"
 #include "collide/triangle.h"
 #include "harness/kinds/kdop_kdop.h"
+#include "harness/kinds/ray_mesh.h"
 
 namespace cc::cgal {
+
+/// A number held by two adjacent doubles: down, the largest double <= it, and up, the smallest
+/// double >= it (equal when it is a double; -inf or +inf beyond the doubles' range).
+struct Bracket {
+  double down = 0, up = 0;
+};
 
 /// CGAL's answer to whether two shapes meet.
 struct CgalAnswer {
@@ -32,6 +41,11 @@ struct CgalAnswer {
   /// kdop_kdop: the sign of each slab's overlap min(a_hi, b_hi) - max(a_lo, b_lo), in the order
   /// of kdop_directions(k) (> 0 overlapping, 0 touching, < 0 apart).
   std::vector<int> slab_signs;
+  /// ray_mesh: the faces the ray meets, ascending.
+  std::vector<std::uint32_t> faces;
+  /// ray_mesh, a hit: the first parameter t at which the ray meets the mesh (exact in FT, then
+  /// bracketed).
+  std::optional<Bracket> first_t;
 };
 
 /// Squared distance of the centres against the squared sum of the radii.
@@ -58,5 +72,11 @@ CgalAnswer cgal_answer(const Obb& a, const Obb& b);
 /// no slab is apart, margin_sign the smallest slab sign. An empty set's k-DOP is empty: every
 /// slab apart. k must have a direction set.
 CgalAnswer cgal_answer(const harness::KdopKdopInput& in);
+/// The ray's points (the parts above, but a subnormal direction component stays as it is)
+/// against every face of the mesh (Triangle_3, or Segment_3 or Point_3 as a triangle above): the
+/// faces it meets and, for a hit, the smallest t over the points where it meets them, t = (P -
+/// origin) . dir / (dir . dir), a segment of points counting by its ends; with a zero direction
+/// the origin alone, t = tmin (which may be -inf). The mesh must be valid (mesh_problem).
+CgalAnswer cgal_answer(const harness::RayMeshInput& in);
 
 }  // namespace cc::cgal

@@ -1,8 +1,10 @@
 #include "oracle/cgal/exact_audit.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <tuple>
 
+#include "harness/formats/number_text.h"
 #include "oracle/exact/kinds/kdop_kdop.h"
 
 namespace cc::cgal {
@@ -47,6 +49,32 @@ std::string differences(const harness::KdopKdopInput& in, const harness::ExactVe
   if (exact_signs == cgal.slab_signs) return {};
   return "exact reference's slab overlap signs " + signs_text(exact_signs) + " differ from CGAL's " +
          signs_text(cgal.slab_signs) + " (directions of k = " + std::to_string(in.k) + " in order)";
+}
+
+std::string faces_text(const std::vector<std::uint32_t>& faces) {
+  std::string text = "{";
+  for (std::size_t i = 0; i < faces.size(); ++i) text += (i > 0 ? ", " : "") + std::to_string(faces[i]);
+  return text + "}";
+}
+
+// ray_mesh: the faces hit, every one; for a hit, the first t: the upper end of the exact
+// reference's range must be CGAL's smallest double >= t, and its t one of the two doubles around t.
+std::string differences(const harness::RayMeshInput&, const harness::ExactVerdict& exact, const CgalAnswer& cgal) {
+  std::vector<std::uint32_t> exact_faces;
+  for (const harness::FacePair& pair : exact.answer.pairs) exact_faces.push_back(pair.first);
+  std::sort(exact_faces.begin(), exact_faces.end());
+  if (exact_faces != cgal.faces) {
+    return "exact reference's faces hit " + faces_text(exact_faces) + " differ from CGAL's " + faces_text(cgal.faces);
+  }
+  if (!cgal.first_t) return {};
+  const Bracket& t = *cgal.first_t;
+  const std::string cgal_t = "CGAL's first t lies in [" + harness::format_double(t.down) + ", " +
+                             harness::format_double(t.up) + "]";
+  if (exact.answer.params.empty() || exact.param_ranges.empty()) return "exact reference gives no first t, " + cgal_t;
+  const double exact_t = exact.answer.params[0], exact_upper = exact.param_ranges[0].second;
+  if (exact_upper == t.up && (exact_t == t.down || exact_t == t.up)) return {};
+  return "exact reference's first t " + harness::format_double(exact_t) + " (allowed up to " +
+         harness::format_double(exact_upper) + "): " + cgal_t;
 }
 
 }  // namespace

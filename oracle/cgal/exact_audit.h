@@ -1,6 +1,6 @@
 // The audit of the exact reference by CGAL: one case answered by both and compared. CGAL
 // answers every kind whose input is two shapes it expresses, and the kinds whose input it takes
-// whole (kdop_kdop), see cgal_audit.h.
+// whole (kdop_kdop, ray_mesh), see cgal_audit.h.
 #pragma once
 
 #include <optional>
@@ -13,8 +13,10 @@ namespace cc::cgal {
 
 /// What the audit of one case found.
 enum class AuditOutcome {
-  agree,            // CGAL gives the exact reference's answer (and the sign of its margin, where it computes one;
-                    // of every k-DOP slab's overlap, as exact_kdop_slabs gives them)
+  agree,            // CGAL gives the exact reference's answer and, where it computes them, the sign of
+                    // its margin, of every k-DOP slab's overlap (exact_kdop_slabs), a ray's faces hit and
+                    // its first t (the reference's t one of the two doubles around CGAL's, the upper end
+                    // of its range the smallest double >= CGAL's)
   disagree,         // it does not: one of the two is wrong (class exact_defect)
   out_of_contract,  // the inputs are outside the library's contract: not compared
   undecided,        // the exact reference cannot decide the case: not compared

@@ -1,14 +1,17 @@
-// The audit of one case: which kinds CGAL answers, what is compared and what is skipped.
+// The audit of one case: which kinds CGAL answers, what is compared and what is skipped, and that
+// an exact verdict altered where it is compared is a disagreement.
 #include "oracle/cgal/exact_audit.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
+#include <initializer_list>
 #include <utility>
 #include <vector>
 
 #include "collide/moving_box.h"
+#include "harness/model/mesh_query.h"
 #include "oracle/exact/exact_reference.h"
 
 namespace cc::cgal {
@@ -41,13 +44,23 @@ KdopKdopInput tetrahedron_and_box(double x_low) {
   return {18, {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}, {{x_low, 0.5, 0.25}, {0.625, 0.875, 0.5}}};
 }
 
+// Two parallel right triangles, face 0 in the plane z = 2 and face 1 in z = 1, each with the legs
+// x, y in [0, 4] (cgal_audit_test.cpp works the rays out).
+RayMeshInput ray_on_two_faces(Ray ray) {
+  Mesh mesh;
+  mesh.vertices = {{0, 0, 2}, {4, 0, 2}, {0, 4, 2}, {0, 0, 1}, {4, 0, 1}, {0, 4, 1}};
+  mesh.faces = {{0, 1, 2}, {3, 4, 5}};
+  return {triangles_mesh(mesh), ray, {}};
+}
+
 TEST(ExactAudit, AnswersTheKindsMadeOfTwoShapesItExpresses) {
   for (QueryKind kind : {QueryKind::ray_aabb, QueryKind::sphere_sphere, QueryKind::aabb_aabb, QueryKind::tri_aabb,
-                         QueryKind::tri_obb, QueryKind::tri_tri, QueryKind::obb_obb, QueryKind::kdop_kdop}) {
+                         QueryKind::tri_obb, QueryKind::tri_tri, QueryKind::obb_obb, QueryKind::kdop_kdop,
+                         QueryKind::ray_mesh}) {
     EXPECT_TRUE(answers(kind)) << name(kind);
   }
   for (QueryKind kind : {QueryKind::mesh_mesh, QueryKind::mesh_mesh_first, QueryKind::broadphase,
-                         QueryKind::ray_mesh, QueryKind::moving_obb}) {
+                         QueryKind::moving_obb}) {
     EXPECT_FALSE(answers(kind)) << name(kind);
     EXPECT_FALSE(cgal_answer(with_kind(kind, []<class In>() { return Input(In{}); })).has_value()) << name(kind);
   }
@@ -97,6 +110,44 @@ TEST(ExactAudit, AKdopMarginOfTheWrongSignIsADisagreement) {
   const Audit a = audit_case(tetrahedron_and_box(std::nextafter(0.5, 1.0)), rounded_to_zero);
   EXPECT_EQ(a.outcome, AuditOutcome::disagree);
   EXPECT_NE(a.why.find("margin"), std::string::npos) << a.why;
+}
+
+TEST(ExactAudit, RaysOnAMeshAgreeOnTheFacesAndTheFirstT) {
+  const exact::ExactRationalReference reference;
+  constexpr double inf = INFINITY;
+  for (const Ray& ray : {Ray{{1, 1, 0}, {0, 0, 3}, 0, inf},                          // both faces, t = 1/3
+                         Ray{{3, 3, 3}, {-1, -1, -1}, 0, inf},                       // grazing face 0's edge
+                         Ray{{std::nextafter(3.0, 4.0), 3, 3}, {-1, -1, -1}, 0, inf},  // one ulp past it
+                         Ray{{-2, 1, 1}, {3, 0, 0}, -inf, inf},                      // in face 1's plane
+                         Ray{{1, 1, 1}, {0, 0, 0}, 0.5, inf},                        // a point on face 1
+                         Ray{{2, 2, 2}, {0, 0, 0}, -inf, inf},                       // on face 0's edge, t = -inf
+                         Ray{{1, 1, 0}, {0, 0, 1}, 0, 1},                            // ending on face 1
+                         Ray{{1, 1, 0}, {0, 0, 1}, 0, std::nextafter(1.0, 0.0)},     // one ulp short
+                         Ray{{1, 1, 5}, {0, 0, -0x1p-1000}, 0, inf},                 // t = 3 * 2^1000
+                         Ray{{1, 1, 5}, {0, 0, -0x1p-1074}, 0, inf}}) {              // t beyond the doubles
+    const Audit a = audit_case(ray_on_two_faces(ray), reference);
+    EXPECT_EQ(a.outcome, AuditOutcome::agree) << a.why << " on " << ray.origin.x << " " << ray.dir.z;
+  }
+  const Audit both = audit_case(ray_on_two_faces({{1, 1, 0}, {0, 0, 3}, 0, inf}), reference);
+  EXPECT_EQ(both.cgal.faces, (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_EQ(both.exact.answer.params, std::vector<double>{1.0 / 3});
+}
+
+TEST(ExactAudit, ARayFirstTOneUlpOffOrAFaceLeftOutIsADisagreement) {
+  // Up through both faces at speed 3: the exact first t is 1/3, between 1.0 / 3 and the next double.
+  const RayMeshInput in = ray_on_two_faces({{1, 1, 0}, {0, 0, 3}, 0, INFINITY});
+  const AlteredReference later([](ExactVerdict& v) {  // still one of the two doubles, but its range ends later
+    v.answer.params[0] = std::nextafter(v.answer.params[0], 1.0);
+    v.param_ranges[0].second = std::nextafter(v.param_ranges[0].second, 1.0);
+  });
+  const AlteredReference earlier([](ExactVerdict& v) { v.answer.params[0] = std::nextafter(v.answer.params[0], 0.0); });
+  const AlteredReference one_face([](ExactVerdict& v) { v.answer.pairs.pop_back(); });
+  for (const ExactReference* altered : std::initializer_list<const ExactReference*>{&later, &earlier, &one_face}) {
+    const Audit a = audit_case(in, *altered);
+    EXPECT_EQ(a.outcome, AuditOutcome::disagree);
+    EXPECT_FALSE(a.why.empty());
+  }
+  EXPECT_NE(audit_case(in, one_face).why.find("faces"), std::string::npos);
 }
 
 TEST(ExactAudit, AKindCgalDoesNotAnswerIsRefused) {
