@@ -120,7 +120,7 @@ Audit audit_case(const harness::Input& input, const harness::ExactReference& exa
   if (a.cgal.hit != a.exact.answer.hit) {
     a.why = std::string("exact reference says ") + says(a.exact.answer.hit) + ", CGAL says " + says(a.cgal.hit);
   } else if (a.cgal.margin_sign && *a.cgal.margin_sign != sign_of(a.exact.margin)) {
-    a.why = "exact reference's margin " + std::to_string(a.exact.margin) + " has not the sign of CGAL's " +
+    a.why = "exact reference's margin " + harness::format_double(a.exact.margin) + " has not the sign of CGAL's " +
             std::to_string(*a.cgal.margin_sign);
   } else {
     a.why = std::visit([&a](const auto& in) { return differences(in, a.exact, a.cgal); }, input);
