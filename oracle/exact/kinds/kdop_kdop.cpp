@@ -3,6 +3,7 @@
 // Margin: the smallest per-slab overlap divided by the length of the slab's direction.
 #include "oracle/exact/kinds/kdop_kdop.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "collide/kdop.h"
@@ -53,14 +54,14 @@ ExactVerdict judge(const harness::KdopKdopInput& in) {
     return v;
   }
   std::optional<double> margin;
-  bool hit = true;
+  int sign = 1;  // the exact sign of the smallest overlap
   for (const ExactSlab& s : exact_kdop_slabs(in)) {
-    if (sgn(s.overlap) < 0) hit = false;
+    sign = std::min(sign, sgn(s.overlap));
     const double m = to_double(s.overlap) / s.length;
     if (!margin || m < *margin) margin = m;
   }
-  v.answer.hit = hit;
-  v.margin = *margin / scale_of(magnitude);
+  v.answer.hit = sign >= 0;
+  v.margin = signed_margin(*margin / scale_of(magnitude), sign);
   return v;
 }
 
