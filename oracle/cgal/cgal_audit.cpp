@@ -184,7 +184,7 @@ std::vector<RayPart> ray_parts(const Ray& ray) {
 }
 
 /// The ray's points against the box, a direction component whose reciprocal overflows being 0
-/// (parallel to its slab, by the library's contract of ray_aabb).
+/// (parallel to its slab, by the contract of intersect_ray_aabb).
 bool ray_meets(Ray ray, const Cuboid& box) {
   for (int k = 0; k < 3; ++k) {
     if (ray.dir[k] != 0 && std::isinf(1.0 / ray.dir[k])) ray.dir[k] = 0;
@@ -255,11 +255,11 @@ CgalAnswer cgal_answer(const Triangle& tri, const Obb& box) { return hit_or_miss
 CgalAnswer cgal_answer(const Triangle& a, const Triangle& b) { return hit_or_miss(meet(pieces(a), pieces(b))); }
 CgalAnswer cgal_answer(const Obb& a, const Obb& b) { return hit_or_miss(meet(pieces(a), pieces(b))); }
 
-CgalAnswer cgal_answer(const harness::KdopKdopInput& in) {
-  const std::span<const KdopDirection> directions = kdop_directions(in.k);
+CgalAnswer cgal_answer(int k, const std::vector<Vec3>& a_points, const std::vector<Vec3>& b_points) {
+  const std::span<const KdopDirection> directions = kdop_directions(k);
   require(!directions.empty(), "no direction set for this k");
-  for (const Vec3& p : in.a) require_finite({p});
-  for (const Vec3& p : in.b) require_finite({p});
+  for (const Vec3& p : a_points) require_finite({p});
+  for (const Vec3& p : b_points) require_finite({p});
   CgalAnswer answer;
   for (const KdopDirection& d : directions) {
     const Vector n(FT(d.x), FT(d.y), FT(d.z));
@@ -274,7 +274,7 @@ CgalAnswer cgal_answer(const harness::KdopKdopInput& in) {
       }
       return std::pair{lo, hi};
     };
-    const auto a = slab(in.a), b = slab(in.b);
+    const auto a = slab(a_points), b = slab(b_points);
     const int sign = a && b ? CGAL::sign(std::min(a->second, b->second) - std::max(a->first, b->first)) : -1;
     answer.slab_signs.push_back(sign);
   }
@@ -283,15 +283,16 @@ CgalAnswer cgal_answer(const harness::KdopKdopInput& in) {
   return answer;
 }
 
-CgalAnswer cgal_answer(const harness::RayMeshInput& in) {
-  require(in.mesh.mesh != nullptr, "no mesh");
-  const Mesh& mesh = *in.mesh.mesh;
+CgalAnswer cgal_answer(const Ray& ray, const harness::MeshRef& mesh_ref, const harness::LibraryBvh&) {
+  require(mesh_ref.mesh != nullptr, "no mesh");
+  const Mesh& mesh = *mesh_ref.mesh;
   require(!mesh_problem(mesh), "invalid mesh");
-  const std::vector<RayPart> parts = ray_parts(in.ray);
-  const Point origin = point(in.ray.origin);
-  const Vector dir = vector(in.ray.dir);
+  const std::vector<RayPart> parts = ray_parts(ray);
+  const Point origin = point(ray.origin);
+  const Vector dir = vector(ray.dir);
   const bool origin_alone = dir == CGAL::NULL_VECTOR;  // t stands for tmin
   CgalAnswer answer;
+  std::vector<std::uint32_t> faces;
   std::optional<FT> first;
   for (std::uint32_t f = 0; f < mesh.size(); ++f) {
     bool met = false;
@@ -311,10 +312,11 @@ CgalAnswer cgal_answer(const harness::RayMeshInput& in) {
             part, piece);
       }
     }
-    if (met) answer.faces.push_back(f);
+    if (met) faces.push_back(f);
   }
-  answer.hit = !answer.faces.empty();
-  if (answer.hit) answer.first_t = origin_alone ? Bracket{in.ray.tmin, in.ray.tmin} : bracket(*first);
+  answer.hit = !faces.empty();
+  answer.faces = std::move(faces);
+  if (answer.hit) answer.first_t = origin_alone ? Bracket{ray.tmin, ray.tmin} : bracket(*first);
   return answer;
 }
 

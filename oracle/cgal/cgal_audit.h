@@ -20,8 +20,7 @@
 #include "collide/ray_aabb.h"
 #include "collide/sphere.h"
 #include "collide/triangle.h"
-#include "harness/kinds/kdop_kdop.h"
-#include "harness/kinds/ray_mesh.h"
+#include "harness/model/mesh_query.h"
 
 namespace cc::cgal {
 
@@ -38,12 +37,12 @@ struct CgalAnswer {
   /// < 0 apart (two spheres: (r_a + r_b)^2 - |c_a - c_b|^2; two k-DOPs: the smallest overlap of
   /// a slab).
   std::optional<int> margin_sign;
-  /// kdop_kdop: the sign of each slab's overlap min(a_hi, b_hi) - max(a_lo, b_lo), in the order
+  /// Two k-DOPs: the sign of each slab's overlap min(a_hi, b_hi) - max(a_lo, b_lo), in the order
   /// of kdop_directions(k) (> 0 overlapping, 0 touching, < 0 apart).
   std::vector<int> slab_signs;
-  /// ray_mesh: the faces the ray meets, ascending.
-  std::vector<std::uint32_t> faces;
-  /// ray_mesh, a hit: the first parameter t at which the ray meets the mesh (exact in FT, then
+  /// A ray against a mesh: the faces the ray meets, ascending.
+  std::optional<std::vector<std::uint32_t>> faces;
+  /// A ray against a mesh, a hit: the first parameter t at which the ray meets the mesh (exact in FT, then
   /// bracketed).
   std::optional<Bracket> first_t;
 };
@@ -71,12 +70,13 @@ CgalAnswer cgal_answer(const Obb& a, const Obb& b);
 /// smallest and largest n . p of each set (in FT) and the sign of the slabs' overlap; a hit iff
 /// no slab is apart, margin_sign the smallest slab sign. An empty set's k-DOP is empty: every
 /// slab apart. k must have a direction set.
-CgalAnswer cgal_answer(const harness::KdopKdopInput& in);
+CgalAnswer cgal_answer(int k, const std::vector<Vec3>& a, const std::vector<Vec3>& b);
 /// The ray's points (the parts above, but a subnormal direction component stays as it is)
 /// against every face of the mesh (Triangle_3, or Segment_3 or Point_3 as a triangle above): the
 /// faces it meets and, for a hit, the smallest t over the points where it meets them, t = (P -
 /// origin) . dir / (dir . dir), a segment of points counting by its ends; with a zero direction
-/// the origin alone, t = tmin (which may be -inf). The mesh must be valid (mesh_problem).
-CgalAnswer cgal_answer(const harness::RayMeshInput& in);
+/// the origin alone, t = tmin (which may be -inf). The mesh must be valid (mesh_problem). The
+/// hierarchy the library is asked to use does not change the answer.
+CgalAnswer cgal_answer(const Ray& ray, const harness::MeshRef& mesh, const harness::LibraryBvh& library);
 
 }  // namespace cc::cgal

@@ -3,28 +3,31 @@
 #include <algorithm>
 #include <stdexcept>
 #include <tuple>
+#include <utility>
 
 #include "harness/formats/number_text.h"
-#include "oracle/exact/kinds/kdop_kdop.h"
+#include "oracle/exact/exact_kdops.h"
 
 namespace cc::cgal {
 namespace {
 
-// An input of two fields that cgal_answer takes, in the order of its fields.
-template <class In>
-concept TwoShapes = std::tuple_size_v<std::remove_cv_t<decltype(harness::Fields<In>::list)>> == 2 &&
-                    requires(const In& in) {
-                      cgal_answer(std::get<0>(harness::Fields<In>::list).of(in),
-                                  std::get<1>(harness::Fields<In>::list).of(in));
-                    };
+// The input's fields, in their order, as arguments of f.
+template <class In, class F>
+decltype(auto) with_fields(const In& in, F&& f) {
+  return std::apply([&](const auto&... field) -> decltype(auto) { return f(field.of(in)...); }, harness::Fields<In>::list);
+}
 
-// An input that cgal_answer takes whole: an overload for the input type itself (not through
-// harness::Input, which every input converts to).
-template <class In>
-concept TakenWhole = requires { static_cast<CgalAnswer (*)(const In&)>(&cgal_answer); };
+// Whether cgal_answer takes an In's fields I..., in their order.
+template <class In, std::size_t... I>
+constexpr bool takes_fields(std::index_sequence<I...>) {
+  return requires(const In& in) { cgal_answer(std::get<I>(harness::Fields<In>::list).of(in)...); };
+}
 
+// An input whose fields, in their order, cgal_answer takes: CGAL answers kinds by what their
+// inputs are made of, not by their names.
 template <class In>
-concept Answered = TwoShapes<In> || TakenWhole<In>;
+concept Answered =
+    takes_fields<In>(std::make_index_sequence<std::tuple_size_v<std::remove_cv_t<decltype(harness::Fields<In>::list)>>>{});
 
 int sign_of(double margin) { return (margin > 0) - (margin < 0); }
 
@@ -34,21 +37,22 @@ std::string signs_text(const std::vector<int>& signs) {
   return text;
 }
 
-// What differs beyond the hit and the margin's sign, for the kinds with more to compare.
-template <class In>
-std::string differences(const In&, const harness::ExactVerdict&, const CgalAnswer&) {
+// What differs beyond the hit and the margin's sign, for inputs with more to compare (found by
+// their fields, as cgal_answer finds them): none for most.
+template <class... Fields>
+std::string slab_differences(const CgalAnswer&, const Fields&...) {
   return {};
 }
 
-// kdop_kdop: the sign of every slab's overlap, against those of exact_kdop_slabs (which takes
-// non-empty sets only).
-std::string differences(const harness::KdopKdopInput& in, const harness::ExactVerdict&, const CgalAnswer& cgal) {
-  if (in.a.empty() || in.b.empty()) return {};
+// Two point sets with a k: the sign of every slab's overlap, against those of exact_kdop_slabs
+// (which takes non-empty sets only).
+std::string slab_differences(const CgalAnswer& cgal, int k, const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  if (a.empty() || b.empty()) return {};
   std::vector<int> exact_signs;
-  for (const exact::ExactSlab& s : exact::exact_kdop_slabs(in)) exact_signs.push_back(sgn(s.overlap));
+  for (const exact::ExactSlab& s : exact::exact_kdop_slabs(k, a, b)) exact_signs.push_back(sgn(s.overlap));
   if (exact_signs == cgal.slab_signs) return {};
   return "exact reference's slab overlap signs " + signs_text(exact_signs) + " differ from CGAL's " +
-         signs_text(cgal.slab_signs) + " (directions of k = " + std::to_string(in.k) + " in order)";
+         signs_text(cgal.slab_signs) + " (directions of k = " + std::to_string(k) + " in order)";
 }
 
 std::string faces_text(const std::vector<std::uint32_t>& faces) {
@@ -57,14 +61,16 @@ std::string faces_text(const std::vector<std::uint32_t>& faces) {
   return text + "}";
 }
 
-// ray_mesh: the faces hit, every one; for a hit, the first t: the upper end of the exact
-// reference's range must be CGAL's smallest double >= t, and its t one of the two doubles around t.
-std::string differences(const harness::RayMeshInput&, const harness::ExactVerdict& exact, const CgalAnswer& cgal) {
+// Where CGAL gives the faces a ray meets: those, every one; for a hit, the first t: the upper
+// end of the exact reference's range must be CGAL's smallest double >= t, and its t one of the
+// two doubles around t.
+std::string face_differences(const harness::ExactVerdict& exact, const CgalAnswer& cgal) {
+  if (!cgal.faces) return {};
   std::vector<std::uint32_t> exact_faces;
   for (const harness::FacePair& pair : exact.answer.pairs) exact_faces.push_back(pair.first);
   std::sort(exact_faces.begin(), exact_faces.end());
-  if (exact_faces != cgal.faces) {
-    return "exact reference's faces hit " + faces_text(exact_faces) + " differ from CGAL's " + faces_text(cgal.faces);
+  if (exact_faces != *cgal.faces) {
+    return "exact reference's faces hit " + faces_text(exact_faces) + " differ from CGAL's " + faces_text(*cgal.faces);
   }
   if (!cgal.first_t) return {};
   const Bracket& t = *cgal.first_t;
@@ -86,10 +92,8 @@ bool answers(harness::QueryKind kind) {
 std::optional<CgalAnswer> cgal_answer(const harness::Input& input) {
   return std::visit(
       []<class In>(const In& in) -> std::optional<CgalAnswer> {
-        if constexpr (TakenWhole<In>) {
-          return cgal_answer(in);
-        } else if constexpr (TwoShapes<In>) {
-          return cgal_answer(std::get<0>(harness::Fields<In>::list).of(in), std::get<1>(harness::Fields<In>::list).of(in));
+        if constexpr (Answered<In>) {
+          return with_fields(in, [](const auto&... fields) { return cgal_answer(fields...); });
         } else {
           return std::nullopt;
         }
@@ -123,7 +127,10 @@ Audit audit_case(const harness::Input& input, const harness::ExactReference& exa
     a.why = "exact reference's margin " + harness::format_double(a.exact.margin) + " has not the sign of CGAL's " +
             std::to_string(*a.cgal.margin_sign);
   } else {
-    a.why = std::visit([&a](const auto& in) { return differences(in, a.exact, a.cgal); }, input);
+    a.why = std::visit(
+        [&a](const auto& in) { return with_fields(in, [&a](const auto&... fields) { return slab_differences(a.cgal, fields...); }); },
+        input);
+    if (a.why.empty()) a.why = face_differences(a.exact, a.cgal);
   }
   a.outcome = a.why.empty() ? AuditOutcome::agree : AuditOutcome::disagree;
   return a;

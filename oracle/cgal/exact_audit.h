@@ -1,6 +1,6 @@
 // The audit of the exact reference by CGAL: one case answered by both and compared. CGAL
-// answers every kind whose input is two shapes it expresses, and the kinds whose input it takes
-// whole (kdop_kdop, ray_mesh), see cgal_audit.h.
+// answers every kind whose input's fields, in their order, a cgal_answer of cgal_audit.h takes
+// (two shapes it expresses, a k with two point sets, a ray with a mesh).
 #pragma once
 
 #include <optional>
@@ -31,8 +31,7 @@ struct Audit {
   bool touching() const;
 };
 
-/// Whether CGAL answers the kind: its input is two shapes that cgal_answer takes, or cgal_answer
-/// takes the input itself.
+/// Whether CGAL answers the kind: cgal_answer takes its input's fields, in their order.
 bool answers(harness::QueryKind kind);
 
 /// CGAL's answer to an input in the library's contract; nothing for a kind it does not answer.

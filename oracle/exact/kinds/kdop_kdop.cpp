@@ -1,40 +1,16 @@
 // kdop_kdop in exact arithmetic: the exact k-DOPs of the two point sets (the extreme exact
 // projections onto each direction) overlap iff they overlap on every slab.
 // Margin: the smallest per-slab overlap divided by the length of the slab's direction.
-#include "oracle/exact/kinds/kdop_kdop.h"
-
 #include <algorithm>
 #include <cmath>
 
 #include "collide/kdop.h"
 #include "oracle/exact/domain.h"
+#include "oracle/exact/exact_kdops.h"
 #include "oracle/exact/explain.h"
 #include "oracle/exact/judges.h"
 
 namespace cc::exact {
-
-std::vector<ExactSlab> exact_kdop_slabs(const harness::KdopKdopInput& in) {
-  std::vector<ExactSlab> slabs;
-  for (const KdopDirection& dir : kdop_directions(in.k)) {
-    const QVec3 d{dir.x, dir.y, dir.z};
-    const auto extent = [&d](const std::vector<Vec3>& points) {
-      Rational lo = dot(d, rational(points[0])), hi = lo;
-      for (const Vec3& p : points) {
-        const Rational s = dot(d, rational(p));
-        if (s < lo) lo = s;
-        if (s > hi) hi = s;
-      }
-      return std::pair{lo, hi};
-    };
-    ExactSlab s;
-    std::tie(s.a_lo, s.a_hi) = extent(in.a);
-    std::tie(s.b_lo, s.b_hi) = extent(in.b);
-    s.overlap = (s.a_hi < s.b_hi ? s.a_hi : s.b_hi) - (s.a_lo > s.b_lo ? s.a_lo : s.b_lo);
-    s.length = std::sqrt(static_cast<double>(std::abs(dir.x) + std::abs(dir.y) + std::abs(dir.z)));
-    slabs.push_back(s);
-  }
-  return slabs;
-}
 
 template <>
 ExactVerdict judge(const harness::KdopKdopInput& in) {
@@ -55,7 +31,7 @@ ExactVerdict judge(const harness::KdopKdopInput& in) {
   }
   std::optional<double> margin;
   int sign = 1;  // the exact sign of the smallest overlap
-  for (const ExactSlab& s : exact_kdop_slabs(in)) {
+  for (const ExactSlab& s : exact_kdop_slabs(in.k, in.a, in.b)) {
     sign = std::min(sign, sgn(s.overlap));
     const double m = to_double(s.overlap) / s.length;
     if (!margin || m < *margin) margin = m;
@@ -76,7 +52,7 @@ harness::Explanation explain(const harness::KdopKdopInput& in) {
     for (const Vec3& p : *set) finite_points &= finite(p);
   }
   if (!finite_points || !is_supported_kdop(in.k)) return e;
-  const auto slabs = exact_kdop_slabs(in);
+  const auto slabs = exact_kdop_slabs(in.k, in.a, in.b);
   const auto dirs = kdop_directions(in.k);
   // The library's fitted slabs, through a runtime dispatch on k.
   std::vector<double> alo, ahi, blo, bhi;

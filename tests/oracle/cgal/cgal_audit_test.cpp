@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "harness/kinds/ray_mesh.h"
 #include "harness/model/mesh_query.h"
 
 namespace cc::cgal {
@@ -141,11 +142,11 @@ TEST(CgalKdops, TouchingOnOneSlabIsAHitAtSignZeroThere) {
   // y 0.375, z 0.25, x + z 0.25 (B in [0.75, 1.125]), y + z 0.25 (B in [0.75, 1.375]), x - y 0.25
   // (B in [-0.25, 0]), x - z 0.125 (B in [0.125, 0.25]), y - z 0.125 (B in [0.25, 0.375]).
   const std::vector<Vec3> b = {{0.5, 0.5, 0.25}, {0.625, 0.875, 0.5}};
-  const CgalAnswer a = cgal_answer(harness::KdopKdopInput{18, kTetrahedron, b});
+  const CgalAnswer a = cgal_answer(18, kTetrahedron, b);
   EXPECT_TRUE(a.hit);
   EXPECT_EQ(a.margin_sign, 0);
   EXPECT_EQ(a.slab_signs, (std::vector<int>{1, 1, 1, 0, 1, 1, 1, 1, 1}));
-  EXPECT_EQ(cgal_answer(harness::KdopKdopInput{18, b, kTetrahedron}).slab_signs, a.slab_signs);  // either order
+  EXPECT_EQ(cgal_answer(18, b, kTetrahedron).slab_signs, a.slab_signs);  // either order
 }
 
 TEST(CgalKdops, OneUlpApartOnOneSlabIsAMiss) {
@@ -153,7 +154,7 @@ TEST(CgalKdops, OneUlpApartOnOneSlabIsAMiss) {
   // double holds it), so the slab (1, 1, 0) is apart by 2^-53 and nothing else changes sign.
   const double above_half = std::nextafter(0.5, 1.0);
   const CgalAnswer a =
-      cgal_answer(harness::KdopKdopInput{18, kTetrahedron, {{above_half, 0.5, 0.25}, {0.625, 0.875, 0.5}}});
+      cgal_answer(18, kTetrahedron, {{above_half, 0.5, 0.25}, {0.625, 0.875, 0.5}});
   EXPECT_FALSE(a.hit);
   EXPECT_EQ(a.margin_sign, -1);
   EXPECT_EQ(a.slab_signs, (std::vector<int>{1, 1, 1, -1, 1, 1, 1, 1, 1}));
@@ -165,10 +166,10 @@ TEST(CgalKdops, ADiagonalSlabSeparatesWhereTheAxesOverlap) {
   // k = 14's others, against [-1, 1]: x - y + z in [0.125, 0.5], x + y - z in [0.875, 1] (overlap
   // 0.125), x - y - z in [-0.5, -0.375].
   const std::vector<Vec3> b = {{0.5, 0.625, 0.25}, {0.75, 0.75, 0.5}};
-  const CgalAnswer box = cgal_answer(harness::KdopKdopInput{6, kTetrahedron, b});
+  const CgalAnswer box = cgal_answer(6, kTetrahedron, b);
   EXPECT_TRUE(box.hit);
   EXPECT_EQ(box.slab_signs, (std::vector<int>{1, 1, 1}));
-  const CgalAnswer dop = cgal_answer(harness::KdopKdopInput{14, kTetrahedron, b});
+  const CgalAnswer dop = cgal_answer(14, kTetrahedron, b);
   EXPECT_FALSE(dop.hit);
   EXPECT_EQ(dop.margin_sign, -1);
   EXPECT_EQ(dop.slab_signs, (std::vector<int>{1, 1, 1, -1, 1, 1, 1}));
@@ -176,10 +177,10 @@ TEST(CgalKdops, ADiagonalSlabSeparatesWhereTheAxesOverlap) {
 
 TEST(CgalKdops, APointInsideOverlapsByZeroAndAnEmptySetByNothing) {
   // A single point's slab has no width: inside the other k-DOP every overlap is 0.
-  const CgalAnswer point = cgal_answer(harness::KdopKdopInput{26, kTetrahedron, {{0.25, 0.25, 0.25}}});
+  const CgalAnswer point = cgal_answer(26, kTetrahedron, {{0.25, 0.25, 0.25}});
   EXPECT_TRUE(point.hit);
   EXPECT_EQ(point.slab_signs, std::vector<int>(13, 0));
-  const CgalAnswer empty = cgal_answer(harness::KdopKdopInput{6, kTetrahedron, {}});
+  const CgalAnswer empty = cgal_answer(6, kTetrahedron, {});
   EXPECT_FALSE(empty.hit);
   EXPECT_EQ(empty.margin_sign, -1);
   EXPECT_EQ(empty.slab_signs, (std::vector<int>{-1, -1, -1}));
@@ -196,19 +197,22 @@ harness::RayMeshInput ray_on_mesh(Ray ray) {
   return {harness::triangles_mesh(mesh), ray, {}};
 }
 
+// CGAL's answer for the ray and the mesh of a case.
+CgalAnswer answer(const harness::RayMeshInput& in) { return cgal_answer(in.ray, in.mesh, in.library); }
+
 using Faces = std::vector<std::uint32_t>;
 
 TEST(CgalRayMesh, TheFirstOfTwoFacesHitIsExactAndBothAreListed) {
   // Up from (1, 1, 0) at speed 3: z = 1 at t = 1/3, z = 2 at t = 2/3. 1/3 is no double: the
   // double 1.0 / 3 is the one below it (0.33333333333333331...), the next one above.
-  const CgalAnswer a = cgal_answer(ray_on_mesh({{1, 1, 0}, {0, 0, 3}, 0, kInf}));
+  const CgalAnswer a = answer(ray_on_mesh({{1, 1, 0}, {0, 0, 3}, 0, kInf}));
   EXPECT_TRUE(a.hit);
   EXPECT_EQ(a.faces, (Faces{0, 1}));
   ASSERT_TRUE(a.first_t);
   EXPECT_EQ(a.first_t->down, 1.0 / 3);
   EXPECT_EQ(a.first_t->up, std::nextafter(1.0 / 3, 1.0));
   // Downward from z = 5 at speed 1: z = 2 first, at t = 3, a double.
-  const CgalAnswer down = cgal_answer(ray_on_mesh({{1, 1, 5}, {0, 0, -1}, 0, kInf}));
+  const CgalAnswer down = answer(ray_on_mesh({{1, 1, 5}, {0, 0, -1}, 0, kInf}));
   EXPECT_EQ(down.faces, (Faces{0, 1}));
   ASSERT_TRUE(down.first_t);
   EXPECT_EQ(down.first_t->down, 3);
@@ -218,12 +222,12 @@ TEST(CgalRayMesh, TheFirstOfTwoFacesHitIsExactAndBothAreListed) {
 TEST(CgalRayMesh, GrazingAnEdgeExactlyIsAHitOneUlpPastAMiss) {
   // From (3, 3, 3) along (-1, -1, -1): z = 2 at t = 1, at (2, 2, 2) on face 0's hypotenuse; z = 1
   // at t = 2, at (1, 1, 1) inside face 1.
-  const CgalAnswer a = cgal_answer(ray_on_mesh({{3, 3, 3}, {-1, -1, -1}, 0, kInf}));
+  const CgalAnswer a = answer(ray_on_mesh({{3, 3, 3}, {-1, -1, -1}, 0, kInf}));
   EXPECT_EQ(a.faces, (Faces{0, 1}));
   ASSERT_TRUE(a.first_t);
   EXPECT_EQ(a.first_t->up, 1);
   // x one ulp (2^-51) larger: x + y = 4 + 2^-51 at z = 2, past the hypotenuse; face 1 is still hit.
-  const CgalAnswer past = cgal_answer(ray_on_mesh({{std::nextafter(3.0, 4.0), 3, 3}, {-1, -1, -1}, 0, kInf}));
+  const CgalAnswer past = answer(ray_on_mesh({{std::nextafter(3.0, 4.0), 3, 3}, {-1, -1, -1}, 0, kInf}));
   EXPECT_EQ(past.faces, (Faces{1}));
   ASSERT_TRUE(past.first_t);
   EXPECT_EQ(past.first_t->down, 2);
@@ -234,7 +238,7 @@ TEST(CgalRayMesh, ARayInTheFacesPlaneEntersAtItsEdge) {
   // Along x at speed 3 in the plane z = 1, at y = 1: face 1 spans x in [0, 3] there, so the
   // intersection is the segment t in [2/3, 5/3]; its first point is its entry, t = 2/3 (no double:
   // 2.0 / 3 is the one below).
-  const auto first_t = [](double tmin, double tmax) { return cgal_answer(ray_on_mesh({{-2, 1, 1}, {3, 0, 0}, tmin, tmax})); };
+  const auto first_t = [](double tmin, double tmax) { return answer(ray_on_mesh({{-2, 1, 1}, {3, 0, 0}, tmin, tmax})); };
   const CgalAnswer ray = first_t(0, kInf);
   EXPECT_EQ(ray.faces, (Faces{1}));
   ASSERT_TRUE(ray.first_t);
@@ -254,27 +258,27 @@ TEST(CgalRayMesh, ARayInTheFacesPlaneEntersAtItsEdge) {
 }
 
 TEST(CgalRayMesh, AZeroDirectionIsTheOriginAloneAtTmin) {
-  const CgalAnswer inside = cgal_answer(ray_on_mesh({{1, 1, 1}, {0, 0, 0}, 0.5, kInf}));
+  const CgalAnswer inside = answer(ray_on_mesh({{1, 1, 1}, {0, 0, 0}, 0.5, kInf}));
   EXPECT_EQ(inside.faces, (Faces{1}));
   ASSERT_TRUE(inside.first_t);
   EXPECT_EQ(inside.first_t->down, 0.5);
   EXPECT_EQ(inside.first_t->up, 0.5);
-  const CgalAnswer on_edge = cgal_answer(ray_on_mesh({{2, 2, 2}, {0, 0, 0}, -kInf, kInf}));
+  const CgalAnswer on_edge = answer(ray_on_mesh({{2, 2, 2}, {0, 0, 0}, -kInf, kInf}));
   EXPECT_EQ(on_edge.faces, (Faces{0}));
   ASSERT_TRUE(on_edge.first_t);
   EXPECT_EQ(on_edge.first_t->up, -kInf);
-  EXPECT_FALSE(cgal_answer(ray_on_mesh({{1, 1, 1.5}, {0, 0, 0}, 0, kInf})).hit);
-  EXPECT_EQ(cgal_answer(ray_on_mesh({{11, 0, 0}, {0, 0, 0}, 0, kInf})).faces, (Faces{3}));  // on the segment face
+  EXPECT_FALSE(answer(ray_on_mesh({{1, 1, 1.5}, {0, 0, 0}, 0, kInf})).hit);
+  EXPECT_EQ(answer(ray_on_mesh({{11, 0, 0}, {0, 0, 0}, 0, kInf})).faces, (Faces{3}));  // on the segment face
 }
 
 TEST(CgalRayMesh, ASegmentEndingOnAFaceHitsIt) {
-  const CgalAnswer a = cgal_answer(ray_on_mesh({{1, 1, 0}, {0, 0, 1}, 0, 1}));  // ends at (1, 1, 1)
+  const CgalAnswer a = answer(ray_on_mesh({{1, 1, 0}, {0, 0, 1}, 0, 1}));  // ends at (1, 1, 1)
   EXPECT_EQ(a.faces, (Faces{1}));
   ASSERT_TRUE(a.first_t);
   EXPECT_EQ(a.first_t->up, 1);
-  EXPECT_FALSE(cgal_answer(ray_on_mesh({{1, 1, 0}, {0, 0, 1}, 0, std::nextafter(1.0, 0.0)})).hit);
+  EXPECT_FALSE(answer(ray_on_mesh({{1, 1, 0}, {0, 0, 1}, 0, std::nextafter(1.0, 0.0)})).hit);
   // Across the degenerate face 3 (a segment along x): at (11.5, 0, 0), t = 2 from (11.5, 0, -4).
-  const CgalAnswer across = cgal_answer(ray_on_mesh({{11.5, 0, -4}, {0, 0, 2}, 0, kInf}));
+  const CgalAnswer across = answer(ray_on_mesh({{11.5, 0, -4}, {0, 0, 2}, 0, kInf}));
   EXPECT_EQ(across.faces, (Faces{3}));
   ASSERT_TRUE(across.first_t);
   EXPECT_EQ(across.first_t->up, 2);
@@ -283,33 +287,33 @@ TEST(CgalRayMesh, ASegmentEndingOnAFaceHitsIt) {
 TEST(CgalRayMesh, ASubnormalDirectionComponentCounts) {
   // Down through (2, 2, z), on both hypotenuses, but drifting 5e-324 in x per unit of t: at z = 2
   // (t = 3) and z = 1 (t = 4) x + y exceeds 4. (ray_aabb's contract would make the drift 0.)
-  EXPECT_TRUE(cgal_answer(ray_on_mesh({{2, 2, 5}, {0, 0, -1}, 0, kInf})).hit);
-  EXPECT_FALSE(cgal_answer(ray_on_mesh({{2, 2, 5}, {5e-324, 0, -1}, 0, kInf})).hit);
+  EXPECT_TRUE(answer(ray_on_mesh({{2, 2, 5}, {0, 0, -1}, 0, kInf})).hit);
+  EXPECT_FALSE(answer(ray_on_mesh({{2, 2, 5}, {5e-324, 0, -1}, 0, kInf})).hit);
 }
 
 TEST(CgalRayMesh, ATinyDirectionGivesAFirstTFarOut) {
   // Down from z = 5 at speed 2^-1000: z = 2 at t = 3 * 2^1000, a double (dir . dir = 2^-2000 is
   // none).
-  const CgalAnswer far = cgal_answer(ray_on_mesh({{1, 1, 5}, {0, 0, -0x1p-1000}, 0, kInf}));
+  const CgalAnswer far = answer(ray_on_mesh({{1, 1, 5}, {0, 0, -0x1p-1000}, 0, kInf}));
   ASSERT_TRUE(far.first_t);
   EXPECT_EQ(far.first_t->down, 0x3p1000);
   EXPECT_EQ(far.first_t->up, 0x3p1000);
   // At speed 2^-1074, t = 3 * 2^1074 is beyond the doubles.
-  const CgalAnswer beyond = cgal_answer(ray_on_mesh({{1, 1, 5}, {0, 0, -0x1p-1074}, 0, kInf}));
+  const CgalAnswer beyond = answer(ray_on_mesh({{1, 1, 5}, {0, 0, -0x1p-1074}, 0, kInf}));
   ASSERT_TRUE(beyond.first_t);
   EXPECT_EQ(beyond.first_t->down, std::numeric_limits<double>::max());
   EXPECT_EQ(beyond.first_t->up, kInf);
 }
 
 TEST(CgalAnswer, InputsOutOfContractAreRefused) {
-  EXPECT_THROW(cgal_answer(ray_on_mesh({{0, 0, 0}, {NAN, 0, 1}, 0, kInf})), std::invalid_argument);
+  EXPECT_THROW(answer(ray_on_mesh({{0, 0, 0}, {NAN, 0, 1}, 0, kInf})), std::invalid_argument);
   harness::RayMeshInput bad_face = ray_on_mesh({{1, 1, 0}, {0, 0, 1}, 0, kInf});
   Mesh mesh = *bad_face.mesh.mesh;
   mesh.faces.push_back({0, 1, 99});
   bad_face.mesh = harness::triangles_mesh(mesh);
-  EXPECT_THROW(cgal_answer(bad_face), std::invalid_argument);
-  EXPECT_THROW(cgal_answer(harness::KdopKdopInput{8, kTetrahedron, kTetrahedron}), std::invalid_argument);
-  EXPECT_THROW(cgal_answer(harness::KdopKdopInput{18, kTetrahedron, {{0, NAN, 0}}}), std::invalid_argument);
+  EXPECT_THROW(answer(bad_face), std::invalid_argument);
+  EXPECT_THROW(cgal_answer(8, kTetrahedron, kTetrahedron), std::invalid_argument);
+  EXPECT_THROW(cgal_answer(18, kTetrahedron, {{0, NAN, 0}}), std::invalid_argument);
   EXPECT_THROW(cgal_answer(Sphere{{NAN, 0, 0}, 1}, Sphere{{0, 0, 0}, 1}), std::invalid_argument);
   EXPECT_THROW(cgal_answer(Sphere{{0, 0, 0}, -1}, Sphere{{0, 0, 0}, 1}), std::invalid_argument);
   EXPECT_THROW(cgal_answer(Aabb{{1, 0, 0}, {0, 1, 1}}, unit_box()), std::invalid_argument);
