@@ -1,10 +1,12 @@
-// FCL's mesh-mesh collision, for the mesh kinds' units: BVHModel<OBBd>, <OBBRSSd>, <AABBd> and
-// <KDOPd<18>>, asked for all contacts or for the first.
+// FCL's mesh-mesh collision, for the mesh kinds' units: BVHModel<OBBd>, <OBBRSSd>, <AABBd>,
+// <KDOPd<18>>, <kIOSd> and <RSSd>, asked for all contacts or for the first.
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/math/bv/AABB.h>
 #include <fcl/math/bv/OBB.h>
 #include <fcl/math/bv/OBBRSS.h>
+#include <fcl/math/bv/RSS.h>
 #include <fcl/math/bv/kDOP.h>
+#include <fcl/math/bv/kIOS.h>
 #include <fcl/narrowphase/collision.h>
 
 #include <algorithm>
@@ -79,6 +81,8 @@ Opinion fcl_collide_models(Volume volume, const harness::MeshPair& m, bool first
     case Volume::obbrss: return collide_models<fcl::OBBRSSd>(m, first_only);
     case Volume::aabb: return collide_models<fcl::AABBd>(m, first_only);
     case Volume::kdop18: return collide_models<fcl::KDOPd<18>>(m, first_only);
+    case Volume::kios: return collide_models<fcl::kIOSd>(m, first_only);
+    case Volume::rss: return collide_models<fcl::RSSd>(m, first_only);
   }
   return failed("an unknown volume type");
 }

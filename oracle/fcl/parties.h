@@ -25,7 +25,7 @@ const std::vector<Party<In>>& fcl_parties();
 
 /// FCL's BVHModel collision on two placed meshes with volume type BV, all contacts or only the
 /// first (fcl_meshes.cpp, for the mesh kinds' units): the colliding pairs, sorted.
-enum class Volume { obb, obbrss, aabb, kdop18 };
+enum class Volume { obb, obbrss, aabb, kdop18, kios, rss };
 Opinion fcl_collide_models(Volume volume, const harness::MeshPair& m, bool first_only);
 
 /// The BVHModel parties on two placed meshes, asked for every contact, by name (for the

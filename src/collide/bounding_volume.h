@@ -1,5 +1,5 @@
 // What a bounding-volume hierarchy needs of its bounding volume: one traits class per type
-// (Aabb, Obb, Kdop<K>), so that building and traversal are written once.
+// (Aabb, Obb, Kdop<K>, Sphere), so that building and traversal are written once.
 #pragma once
 
 #include <span>
@@ -9,6 +9,7 @@
 #include "collide/kdop.h"
 #include "collide/obb.h"
 #include "collide/obb_fit.h"
+#include "collide/sphere_fit.h"
 
 namespace cc {
 
@@ -26,14 +27,15 @@ inline BvSize box_size(const Vec3& half) {
   return {8 * half.x * half.y * half.z, 8 * (half.x * half.y + half.y * half.z + half.z * half.x)};
 }
 
-/// BoundingVolume<BV> provides, for BV in {Aabb, Obb, Kdop<K>}:
-///  - name():            "AABB", "OBB" or "k-DOP<K>";
+/// BoundingVolume<BV> provides, for BV in {Aabb, Obb, Kdop<K>, Sphere}:
+///  - name():            "AABB", "OBB", "k-DOP<K>" or "sphere";
 ///  - fit(points):       a volume that contains every point in exact arithmetic;
 ///  - merge(a, b):       a volume that contains both (the smallest for Aabb and k-DOPs);
 ///  - overlap(a, b):     the library's conservative overlap test;
 ///  - axes(v), center(v), half(v): a frame of the volume for splitting (the coordinate axes for
-///                       Aabb and k-DOPs, the box's own for Obb) and its extent along it;
-///  - size(v):           the BvSize of that box (for a k-DOP, of its x, y, z slabs).
+///                       Aabb, k-DOPs and spheres, the box's own for Obb) and its extent along it;
+///  - size(v):           the BvSize of that box (for a k-DOP, of its x, y, z slabs; for a sphere,
+///                       of the cube around it).
 template <class BV>
 struct BoundingVolume;
 
@@ -89,8 +91,22 @@ struct BoundingVolume<Kdop<K>> {
   [[gnu::always_inline]] static BvSize size(const Kdop<K>& d) { return box_size(half(d)); }
 };
 
+/// Spheres: the notes' first bounding volume, which a rotation leaves as it is.
+template <>
+struct BoundingVolume<Sphere> {
+  static std::string name() { return "sphere"; }
+  static Sphere fit(std::span<const Vec3> points) { return fit_sphere(points); }
+  static Sphere merge(const Sphere& a, const Sphere& b) { return merge_spheres(a, b); }
+  static bool overlap(const Sphere& a, const Sphere& b) { return test_sphere_sphere(a, b); }
+  static Mat3 axes(const Sphere&) { return Mat3::identity(); }
+  static Vec3 center(const Sphere& s) { return s.center; }
+  static Vec3 half(const Sphere& s) { return {s.radius, s.radius, s.radius}; }
+  [[gnu::always_inline]] static BvSize size(const Sphere& s) { return box_size(half(s)); }
+};
+
 }  // namespace cc
 
 /// Applies X to every volume type the hierarchies take (for their explicit instantiations).
 #define CC_FOR_EACH_BOUNDING_VOLUME(X) \
-  X(cc::Aabb) X(cc::Obb) X(cc::Kdop<6>) X(cc::Kdop<14>) X(cc::Kdop<16>) X(cc::Kdop<18>) X(cc::Kdop<24>) X(cc::Kdop<26>)
+  X(cc::Aabb) X(cc::Obb) X(cc::Kdop<6>) X(cc::Kdop<14>) X(cc::Kdop<16>) X(cc::Kdop<18>) X(cc::Kdop<24>) X(cc::Kdop<26>) \
+  X(cc::Sphere)

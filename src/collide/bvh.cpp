@@ -212,11 +212,26 @@ void fit_obbs(Bvh<Obb>& bvh) {
   }
 }
 
+// Spheres: each node's ball fitted to the vertices of its triangles (fit_sphere), not merged
+// from its children's balls, which would widen up the tree. Every point of a ball has norm1 at
+// most that of its centre plus sqrt(3) < 2 times its radius.
+void fit_spheres(Bvh<Sphere>& bvh) {
+  std::vector<Vec3> points;
+  for (BvhNode<Sphere>& n : bvh.nodes) {
+    points.clear();
+    append_vertices(bvh, n, points);
+    n.bv = fit_sphere(points);
+    bvh.magnitude = std::max(bvh.magnitude, norm1(n.bv.center) + 2 * n.bv.radius);
+  }
+}
+
 template <class BV>
 Bvh<BV> fit(const Mesh& mesh, detail::Topology t, const BuildOptions& options) {
   Bvh<BV> bvh = lay_out<BV>(mesh, std::move(t));
   if constexpr (std::is_same_v<BV, Obb>) {
     fit_obbs(bvh);
+  } else if constexpr (std::is_same_v<BV, Sphere>) {
+    fit_spheres(bvh);
   } else {
     fit_refittable(bvh, options.hull_points);
   }

@@ -1,5 +1,5 @@
-// Bounding-volume hierarchies over a triangle mesh: OBBTrees, k-DOP trees and AABB trees, built
-// top-down, bottom-up or by incremental insertion.
+// Bounding-volume hierarchies over a triangle mesh: OBBTrees, k-DOP trees, AABB trees and sphere
+// trees, built top-down, bottom-up or by incremental insertion.
 #pragma once
 
 #include <array>
@@ -96,7 +96,8 @@ struct Bvh {
 /// Builds the hierarchy of a valid mesh (see mesh_problem). Every strategy gives the same
 /// kind of tree: binary, each triangle in exactly one leaf, each node's volume fitted to the
 /// triangles below it (Aabb and k-DOPs the smallest; OBBs with the axes of the convex hull of
-/// the node's triangles, as fit_obb, and extents over their vertices). The convex hull of a
+/// the node's triangles, as fit_obb, and extents over their vertices; spheres as fit_sphere on
+/// their vertices). The convex hull of a
 /// node comes from its children's hull points, never from all of its triangles.
 template <class BV>
 Bvh<BV> build_bvh(const Mesh& mesh, const BuildOptions& options);

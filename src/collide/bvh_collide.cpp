@@ -49,8 +49,39 @@ Obb moved_box(const Obb& box, const RigidTransform& t, double pad) {
   return out;
 }
 
+// A bound on |R x| / |x| for the rotation R of t: |R x|^2 = x^T R^T R x <= (1 + g) |x|^2 with g the
+// largest row sum of |R^T R - I| (Gershgorin), and sqrt(1 + g) <= 1 + g / 2. Each entry of R^T R
+// sums three products of entries at most 1 + 2^-48 in magnitude (RigidTransform), so it rounds
+// by less than 2^-50 and a row sum by less than 2^-47; 1 + g / 2 rounds by less than 2^-52.
+double stretch_bound(const RigidTransform& t) {
+  const Mat3& r = t.rotation;
+  double g = 0;
+  for (int i = 0; i < 3; ++i) {
+    double row = 0;
+    for (int j = 0; j < 3; ++j) {
+      const double entry = r.col[i].x * r.col[j].x + r.col[i].y * r.col[j].y + r.col[i].z * r.col[j].z;
+      row += std::fabs(entry - (i == j ? 1.0 : 0.0));
+    }
+    g = std::max(g, row);
+  }
+  return 1 + 0.5 * (g + 0x1p-47) + 0x1p-51;
+}
+
+// A ball moved by t: its centre by apply(), its radius stretched by stretch_bound(t) and padded.
+// The ball holds each vertex v of the node (|v - c| <= r), and the leaf test sees apply(t, v),
+// within sqrt(3) transform_error_bound of R v + T, as the centre is of R c + T: so apply(t, v)
+// lies within stretch r + 2 sqrt(3) 2^-50 (M + |T|) of apply(t, c), below the radius plus pad.
+Sphere moved_ball(const Sphere& ball, const RigidTransform& t, double stretch, double pad) {
+  return {apply(t, ball.center), std::nextafter(ball.radius * stretch, INFINITY) + pad};
+}
+
+// Whether b's volumes are moved by t as they are (an Obb, a ball: no update) rather than
+// re-fitted in a's frame (an Aabb, a k-DOP).
+template <class BV>
+inline constexpr bool kMovedWhole = std::is_same_v<BV, Obb> || std::is_same_v<BV, Sphere>;
+
 // The slabs of the k-DOP a volume is re-fitted as: 3 for a box (an Aabb is the 6-DOP; an Obb
-// is moved instead and uses none).
+// or a ball is moved instead and uses none).
 template <class BV>
 struct SlabCount {
   static constexpr int value = 3;
@@ -63,6 +94,7 @@ struct SlabCount<Kdop<K>> {
 // Brings volumes of b into a's frame for one relative transform t (b to a), each slab widened
 // by pad times the 1-norm of its direction.
 //  - Obb: moved by t.
+//  - Sphere: its centre moved by t, its radius stretched by t's rotation (moved_ball).
 //  - approximate: slab i of the moved volume, along n_i, is [-h(-m_i), h(m_i)] + n_i . T with
 //    m_i = R^T n_i, where h is the support of b's volume bounded through three of its slabs
 //    (kdop_cone, support_bound; for a box, exactly the support: the box around its moved
@@ -77,7 +109,9 @@ class VolumeMover {
  public:
   VolumeMover(const Bvh<BV>& b, const RigidTransform& t, BvUpdate update)
       : b_(b), t_(t), update_(update), pad_(update_pad(b.magnitude, t)) {
-    if constexpr (!std::is_same_v<BV, Obb>) {
+    if constexpr (kMovedWhole<BV>) {
+      if constexpr (std::is_same_v<BV, Sphere>) stretch_ = stretch_bound(t);
+    } else {
       if (update_ != BvUpdate::approximate) return;
       const auto dirs = kdop_directions<2 * kSlabs>();
       for (int i = 0; i < kSlabs; ++i) {
@@ -96,6 +130,8 @@ class VolumeMover {
     const BV& v = b_.nodes[node].bv;
     if constexpr (std::is_same_v<BV, Obb>) {
       return moved_box(v, t_, pad_);
+    } else if constexpr (std::is_same_v<BV, Sphere>) {
+      return moved_ball(v, t_, stretch_, pad_);
     } else if constexpr (std::is_same_v<BV, Aabb>) {
       Kdop<6> box;
       box.lo = {v.lo.x, v.lo.y, v.lo.z}, box.hi = {v.hi.x, v.hi.y, v.hi.z};
@@ -142,6 +178,7 @@ class VolumeMover {
   RigidTransform t_;
   BvUpdate update_;
   double pad_;
+  double stretch_ = 1;  // spheres: stretch_bound(t_)
   std::array<KdopCone<2 * kSlabs>, kSlabs> upper_, lower_;
   std::array<double, kSlabs> offset_{}, width_{};
 };
@@ -194,13 +231,13 @@ class Traversal {
   }
 
   // b's volume in a's frame, computed once per node and query (a's descent tests the same node
-  // of b against many of a's). Moving an OBB is not an update (n_u counts refits only).
+  // of b against many of a's). Moving an OBB or a ball is not an update (n_u counts refits only).
   const BV& volume_of(std::int32_t nb) {
     std::int32_t& slot = volume_slot_[nb];
     if (slot < 0) {
       slot = static_cast<std::int32_t>(volumes_.size());
       volumes_.push_back(mover_(static_cast<std::size_t>(nb)));
-      if constexpr (!std::is_same_v<BV, Obb>) ++result_.counters.bv_updates;
+      if constexpr (!kMovedWhole<BV>) ++result_.counters.bv_updates;
     }
     return volumes_[slot];
   }

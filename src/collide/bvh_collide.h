@@ -14,8 +14,8 @@ namespace cc {
 
 enum class CollisionMode { first_hit, all_pairs };
 
-/// How an Aabb or k-DOP of b is brought into a's frame when b moves relative to a (an OBB is
-/// moved with the relative transform itself and needs no update). Both results are padded to
+/// How an Aabb or k-DOP of b is brought into a's frame when b moves relative to a (an OBB or a
+/// sphere is moved with the relative transform itself and needs no update). Both results are padded to
 /// cover the rounding of the transform, so they contain b's moved triangles as the leaf test
 /// sees them.
 enum class BvUpdate {
@@ -72,6 +72,8 @@ CollisionResult collide(const Bvh<BV>& a, const RigidTransform& pose_a, const Bv
 
 /// The volume of b's node in a's frame as collide() tests it, for b moved by t (relative to a):
 ///  - Obb: moved by t.
+///  - Sphere: its centre moved by t, its radius times a bound on how much t's rotation can
+///    stretch a length (1 for an orthonormal rotation, up to rounding).
 ///  - Aabb and k-DOP, approximate: each slab bounds the moved original volume, through three of
 ///    its slabs per direction (kdop_cone): for an Aabb the box around its moved corners; for a
 ///    k-DOP the k-DOP around its moved polytope when its slabs meet at vertices as the cones

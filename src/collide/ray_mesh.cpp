@@ -69,6 +69,14 @@ RayVolumeEntry enter_scaled(const Obb& box, const Ray& ray, double pad) {
   return enter_box(Aabb{-box.half, box.half}, local, pad);
 }
 
+// A ball through the cube around it: an entry never later than the ball's. The cube's bounds
+// c -+ r round by at most u M, far below the half of pad that covers the volume tests' rounding.
+RayVolumeEntry enter_scaled(const Sphere& ball, const Ray& ray, double pad) {
+  if (!finite(ball.center) || !fp::finite(ball.radius) || !(ball.radius >= 0)) return {};
+  const Vec3 r{ball.radius, ball.radius, ball.radius};
+  return enter_box(Aabb{ball.center - r, ball.center + r}, ray, pad);
+}
+
 template <int K>
 RayVolumeEntry enter_scaled(const Kdop<K>& dop, const Ray& ray, double pad) {
   const auto directions = kdop_directions<K>();

@@ -76,6 +76,7 @@ double ray_mesh_pad(const Bvh<BV>& bvh, const Ray& ray);
 ///    axes), then as an Aabb.
 ///  - Kdop<K>: the slabs lo <= n . p <= hi of its k/2 directions n, each grown by pad |n|_1;
 ///    a slab with n . dir == 0 (as computed) is parallel, and the origin decides.
+///  - Sphere: the cube around the ball, as an Aabb (an entry never later than the ball's).
 ///  - Every test scales dir by a power of two first, so a huge or tiny dir is as good as a unit
 ///    one. NaN or infinite input, tmin > tmax, or a negative pad: no hit.
 template <class BV>

@@ -100,7 +100,7 @@ Tally run_library(const harness::LibraryBvh& library, const std::vector<Pose>& p
       answer.hit = !r.pairs.empty();
       for (const auto& [fa, fb] : r.pairs) answer.pairs.emplace_back(fa, fb);
       t.stand(harness::classify(kAllPairsKind, answer, p.exact, {}).parties[0].standing);
-      if (library.update == BvUpdate::approximate && library.bv != harness::BvType::obb) {
+      if (library.update == BvUpdate::approximate && !harness::moved_whole(library.bv)) {
         t.tightness.push_back(approximate_over_exact(b, relative(p.m.pose_a, p.m.pose_b)));
       }
     }
@@ -128,7 +128,7 @@ std::vector<harness::LibraryBvh> every_hierarchy(int leaf_size) {
   for (harness::BvType bv : harness::kAllBvTypes) {
     for (BuildStrategy s : {BuildStrategy::top_down, BuildStrategy::bottom_up, BuildStrategy::incremental}) {
       for (BvUpdate u : {BvUpdate::approximate, BvUpdate::exact}) {
-        if (bv == harness::BvType::obb && u == BvUpdate::exact) continue;  // an OBB moves exactly
+        if (harness::moved_whole(bv) && u == BvUpdate::exact) continue;  // an OBB or a ball moves as it is
         harness::LibraryBvh l;
         l.bv = bv;
         l.build.strategy = s;

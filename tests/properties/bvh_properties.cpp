@@ -161,6 +161,10 @@ bool holds(const Obb& b, const QVec3& p) {
   }
   return true;
 }
+bool holds(const Sphere& b, const QVec3& p) {
+  const QVec3 d = p - rational(b.center);
+  return dot(d, d) <= rational(b.radius) * rational(b.radius);
+}
 template <int K>
 bool holds(const Kdop<K>& d, const QVec3& p) {
   const auto dirs = kdop_directions<K>();

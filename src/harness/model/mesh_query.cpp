@@ -33,6 +33,7 @@ std::string_view to_string(BvType t) {
     case BvType::kdop18: return "kdop18";
     case BvType::kdop24: return "kdop24";
     case BvType::kdop26: return "kdop26";
+    case BvType::sphere: return "sphere";
   }
   return "?";
 }

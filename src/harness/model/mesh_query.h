@@ -32,9 +32,12 @@ MeshRef triangles_mesh(Mesh mesh);
 MeshRef procedural_mesh(const ProceduralMesh& recipe);
 
 /// The bounding-volume types the library's hierarchies take.
-enum class BvType { aabb, obb, kdop6, kdop14, kdop16, kdop18, kdop24, kdop26 };
-inline constexpr BvType kAllBvTypes[] = {BvType::aabb,   BvType::obb,    BvType::kdop6,  BvType::kdop14,
-                                         BvType::kdop16, BvType::kdop18, BvType::kdop24, BvType::kdop26};
+enum class BvType { aabb, obb, kdop6, kdop14, kdop16, kdop18, kdop24, kdop26, sphere };
+inline constexpr BvType kAllBvTypes[] = {BvType::aabb,   BvType::obb,    BvType::kdop6,  BvType::kdop14, BvType::kdop16,
+                                         BvType::kdop18, BvType::kdop24, BvType::kdop26, BvType::sphere};
+/// Whether b's volumes of this type are moved whole under a rotation (OBBs, spheres), so that a
+/// case's `update` (approximate or exact) does not apply.
+constexpr bool moved_whole(BvType t) { return t == BvType::obb || t == BvType::sphere; }
 std::string_view to_string(BvType t);
 std::optional<BvType> bv_type_named(std::string_view name);
 
@@ -49,9 +52,10 @@ decltype(auto) with_bv_type(BvType t, F&& f) {
     case BvType::kdop16: return f.template operator()<Kdop<16>>();
     case BvType::kdop18: return f.template operator()<Kdop<18>>();
     case BvType::kdop24: return f.template operator()<Kdop<24>>();
-    case BvType::kdop26: break;
+    case BvType::kdop26: return f.template operator()<Kdop<26>>();
+    case BvType::sphere: break;
   }
-  return f.template operator()<Kdop<26>>();
+  return f.template operator()<Sphere>();
 }
 
 /// How the library answers a mesh query: the hierarchy it builds for both meshes and how it

@@ -156,7 +156,7 @@ inline harness::Input distinct_input(harness::QueryKind kind, DistinctValues& va
   };
   const auto library = [&] {
     LibraryBvh l;
-    l.bv = kAllBvTypes[values.below(8)];
+    l.bv = kAllBvTypes[values.below(std::size(kAllBvTypes))];
     l.build.strategy = static_cast<BuildStrategy>(values.below(3));
     l.update = values.below(2) ? BvUpdate::exact : BvUpdate::approximate;
     l.descent = values.below(2) ? Descent::larger : Descent::first_model;
