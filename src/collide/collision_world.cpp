@@ -5,8 +5,9 @@ namespace cc {
 template <class BV>
 ObjectId CollisionWorld<BV>::add(std::shared_ptr<const Mesh> mesh, std::shared_ptr<const Bvh<BV>> bvh,
                                  const RigidTransform& pose) {
-  Object o{std::move(mesh), std::move(bvh), pose, 0, true};
+  Object o{std::move(mesh), std::move(bvh), pose, 0, {}, true};
   o.radius = rotation_radius(*o.mesh);
+  o.ball = mesh_ball(*o.mesh);
   objects_.push_back(std::move(o));
   const ObjectId id = sap_.add(box_of(static_cast<ObjectId>(objects_.size() - 1)));
   return id;  // sap_ and objects_ count alike: both never reuse ids
@@ -23,7 +24,12 @@ void CollisionWorld<BV>::remove(ObjectId id) {
 template <class BV>
 Aabb CollisionWorld<BV>::box_of(ObjectId id) const {
   const Object& o = objects_.at(id);
-  return bounds_ == RotationBounds::refit ? fitted_box(*o.mesh, o.pose) : bounding_cube(o.radius, o.pose);
+  switch (bounds_) {
+    case RotationBounds::refit: return fitted_box(*o.mesh, o.pose);
+    case RotationBounds::bounding_sphere: return cc::box_of(placed_ball(o.ball, o.pose));
+    case RotationBounds::bounding_cube: break;
+  }
+  return bounding_cube(o.radius, o.pose);
 }
 
 template <class BV>
@@ -33,6 +39,12 @@ const std::vector<ObjectPair>& CollisionWorld<BV>::broad_phase() {
   }
   sap_.update();
   candidates_ = sap_.pairs();
+  if (bounds_ == RotationBounds::bounding_sphere) {
+    std::erase_if(candidates_, [this](const ObjectPair& p) {
+      const Object &a = objects_[p.first], &b = objects_[p.second];
+      return !test_sphere_sphere(placed_ball(a.ball, a.pose), placed_ball(b.ball, b.pose));
+    });
+  }
   return candidates_;
 }
 

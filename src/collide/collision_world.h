@@ -12,10 +12,12 @@
 
 namespace cc {
 
-/// How a rotating object's box is made each frame.
+/// How a rotating object is bounded each frame at the first level.
 enum class RotationBounds {
-  bounding_cube,  // the cube that holds the object in every rotation: only moved each frame
-  refit,          // the box fitted around the placed vertices: tighter, a pass over them
+  bounding_cube,    // the cube that holds the object in every rotation: only moved each frame
+  refit,            // the box fitted around the placed vertices: tighter, a pass over them
+  bounding_sphere,  // the ball around the object (mesh_ball), moved each frame (placed_ball): the
+                    // cube around it for the sweep, then the balls' own test on its candidates
 };
 
 /// Two objects that collide, and their colliding triangle pairs (faces of the first object's
@@ -27,8 +29,9 @@ struct ObjectContact {
 
 /// Objects (a mesh with its hierarchy, and a pose) in one world. Per frame: move(), then
 /// broad_phase() (boxes, then ColumnSweep), then narrow_phase() on its candidates.
-///  - The candidates are the pairs whose boxes overlap; the boxes hold the placed meshes (see
-///    object_bounds.h), so no colliding pair is pruned. The contacts are collide()'s on every
+///  - The candidates are the pairs whose boxes overlap (with bounding_sphere, and whose balls
+///    do, by test_sphere_sphere); boxes and balls hold the placed meshes (see object_bounds.h),
+///    so no colliding pair is pruned. The contacts are collide()'s on every
 ///    candidate (its contract: closed sets, conservative leaf tests, surfaces only).
 ///  - Ids come from add() and are not reused; a removed object leaves at once.
 template <class BV>
@@ -54,7 +57,8 @@ class CollisionWorld {
     std::shared_ptr<const Mesh> mesh;
     std::shared_ptr<const Bvh<BV>> bvh;
     RigidTransform pose;
-    double radius = 0;
+    double radius = 0;  // rotation_radius, for bounding_cube
+    Sphere ball;        // mesh_ball, for bounding_sphere
     bool alive = true;
   };
   RotationBounds bounds_;

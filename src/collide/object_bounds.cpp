@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "collide/bound_records.h"
+#include "collide/sphere_fit.h"
 
 namespace cc {
 namespace {
@@ -90,6 +91,29 @@ Aabb bounding_cube(double radius, const RigidTransform& pose) {
 
 Aabb bounding_cube(double radius, const RigidTransform& pose, bounds::Records& records) {
   return cube(radius, pose, records);
+}
+
+Sphere mesh_ball(const Mesh& mesh) { return mesh.vertices.empty() ? Sphere{} : fit_sphere(mesh.vertices); }
+
+// A point p of the ball (|p - c| <= r) is placed at R p + T exactly and at apply(pose, p) within
+// transform_error_bound per coordinate (sqrt(3) times it in length); the centre at apply(pose, c)
+// likewise. |R (p - c)| <= (1 + 2^-47) r for R orthonormal within 2^-48, so both placements of p
+// lie within (1 + 2^-47) r + 2 sqrt(3) e of the placed centre, e = transform_error_bound for
+// points of norm1 up to |c|_1 + sqrt(3) r. The radius r + 2^-40 r + 4 e covers that and its own
+// rounding (each sum rounds by at most u of it: one step up more).
+Sphere placed_ball(const Sphere& ball, const RigidTransform& pose) {
+  const double e = transform_error_bound(pose, norm1(ball.center) + 2 * ball.radius);
+  const double radius = (ball.radius + ball.radius * 0x1p-40) + 4 * e;
+  return {apply(pose, ball.center), std::nextafter(radius, INFINITY)};
+}
+
+Aabb box_of(const Sphere& ball) {
+  Aabb box;
+  for (int k = 0; k < 3; ++k) {
+    box.lo[k] = std::nextafter(ball.center[k] - ball.radius, -INFINITY);
+    box.hi[k] = std::nextafter(ball.center[k] + ball.radius, INFINITY);
+  }
+  return box;
 }
 
 Aabb fitted_box(const Mesh& mesh, const RigidTransform& pose) {

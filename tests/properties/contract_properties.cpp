@@ -7,8 +7,9 @@
 //    within the OBB contract's tolerance; the merge of two boxes holds both;
 //  - kdop_cone, support_bound: the cone's nonnegative combination is its direction to within
 //    2^-46 of it, and the bound is at least every point's projection (up to its own rounding);
-//  - rotation_radius, bounding_cube, fitted_box: the radius is no less than any vertex's
-//    distance, and both boxes hold the mesh placed by the pose, exactly and as apply() places it;
+//  - rotation_radius, bounding_cube, fitted_box, mesh_ball, placed_ball: the radius is no less
+//    than any vertex's distance, the ball holds every vertex, and both boxes, the placed ball and
+//    its cube hold the mesh placed by the pose, exactly and as apply() places it;
 //  - transform_error_bound: apply() places each vertex within it of the exact placement.
 // The point sets are coincident, collinear, coplanar or in general position, in a random order
 // (the extremes anywhere), with repeated points, at every scale the value source draws.
@@ -287,6 +288,11 @@ bool holds(const Aabb& b, const QVec3& p) {
   return true;
 }
 
+bool in_ball(const Sphere& s, const QVec3& p) {
+  const QVec3 d = p - q(s.center);
+  return dot(d, d) <= rational(s.radius) * rational(s.radius);
+}
+
 QVec3 placed_exactly(const RigidTransform& t, const Vec3& v) {
   QVec3 out = q(t.translation);
   for (int j = 0; j < 3; ++j) out = out + rational(v[j]) * q(t.rotation.col[j]);
@@ -296,7 +302,8 @@ QVec3 placed_exactly(const RigidTransform& t, const Vec3& v) {
 TEST(Contracts, AnObjectsBoxesHoldItsPlacedMesh) {
   Layouts met;
   const std::string property =
-      "rotation_radius, bounding_cube and fitted_box hold the placed mesh, apply() within transform_error_bound";
+      "rotation_radius, bounding_cube, fitted_box and placed_ball hold the placed mesh, apply() within "
+      "transform_error_bound";
   const bool passed = check_property_with_choices(property, 800, [&](harness::Choices& c) {
     harness::ValueSource values(c, {.max_exponent = 8, .extreme = true, .huge = false});
     const std::vector<Vec3> points = draw_points(values, kLayouts[c.draw(4)]);
@@ -308,11 +315,17 @@ TEST(Contracts, AnObjectsBoxesHoldItsPlacedMesh) {
     for (const Vec3& v : points) {
       if (rational(radius) * rational(radius) < dot(q(v), q(v))) RC_FAIL("rotation_radius is below a vertex's distance: " + text(points));
     }
+    const Sphere ball = mesh_ball(mesh);
+    for (const Vec3& v : points) {
+      if (!in_ball(ball, q(v))) RC_FAIL("mesh_ball does not hold a vertex: " + text(points));
+    }
     RigidTransform pose;
     pose.translation = values.point();
     for (int rotations = 0; rotations < 3; ++rotations) {
       pose.rotation = harness::draw_rotation(values);
       const Aabb cube = bounding_cube(radius, pose), fitted = fitted_box(mesh, pose);
+      const Sphere placed = placed_ball(ball, pose);
+      const Aabb ball_box = box_of(placed);
       for (const Vec3& v : points) {
         const QVec3 exactly = placed_exactly(pose, v), as_applied = q(apply(pose, v));
         const Rational bound = rational(transform_error_bound(pose, norm1(v)));
@@ -321,6 +334,9 @@ TEST(Contracts, AnObjectsBoxesHoldItsPlacedMesh) {
         }
         if (!holds(cube, exactly) || !holds(cube, as_applied)) RC_FAIL("the bounding cube does not hold a placed vertex: " + text(points) + " rotation " + text({pose.rotation.col[0], pose.rotation.col[1], pose.rotation.col[2]}) + " translation " + text({pose.translation}));
         if (!holds(fitted, exactly) || !holds(fitted, as_applied)) RC_FAIL("the fitted box does not hold a placed vertex: " + text(points) + " rotation " + text({pose.rotation.col[0], pose.rotation.col[1], pose.rotation.col[2]}) + " translation " + text({pose.translation}));
+        if (!in_ball(placed, exactly) || !in_ball(placed, as_applied) || !holds(ball_box, exactly) || !holds(ball_box, as_applied)) {
+          RC_FAIL("the placed ball or its cube does not hold a placed vertex: " + text(points) + " rotation " + text({pose.rotation.col[0], pose.rotation.col[1], pose.rotation.col[2]}) + " translation " + text({pose.translation}));
+        }
       }
     }
   });

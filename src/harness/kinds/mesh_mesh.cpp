@@ -12,9 +12,9 @@
 namespace cc::harness {
 namespace {
 
-// mesh_mesh through the two-level pipeline: both meshes as objects of a CollisionWorld, boxed
-// by fitted_box (refit) or bounding_cube, sweep-and-prune, then collide() on the candidate; the
-// pairs of the contact, as (face of a, face of b).
+// mesh_mesh through the two-level pipeline: both meshes as objects of a CollisionWorld, bounded
+// by fitted_box (refit), bounding_cube or their placed balls, sweep-and-prune (and the balls'
+// test), then collide() on the candidate; the pairs of the contact, as (face of a, face of b).
 Answer world_pairs(const MeshPair& m, RotationBounds bounds) {
   const CollideOptions options{CollisionMode::all_pairs, m.library.update, m.library.descent};
   return with_bv_type(m.library.bv, [&]<class BV>() {
@@ -54,7 +54,9 @@ const std::vector<Party<MeshMeshInput>>& Query<MeshMeshInput>::library_parties()
       {"library.collision_world(refit)", band,
        [](const MeshMeshInput& in) { return answered(world_pairs(in.meshes, RotationBounds::refit)); }},
       {"library.collision_world(cube)", band,
-       [](const MeshMeshInput& in) { return answered(world_pairs(in.meshes, RotationBounds::bounding_cube)); }}};
+       [](const MeshMeshInput& in) { return answered(world_pairs(in.meshes, RotationBounds::bounding_cube)); }},
+      {"library.collision_world(sphere)", band,
+       [](const MeshMeshInput& in) { return answered(world_pairs(in.meshes, RotationBounds::bounding_sphere)); }}};
   return parties;
 }
 

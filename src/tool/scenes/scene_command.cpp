@@ -104,7 +104,9 @@ harness::Answer answer_of(const std::vector<std::pair<std::uint32_t, std::uint32
 template <class BV>
 int run_scene(const SceneArgs& args, harness::BvType bv_type) {
   harness::RockSlide slide({args.objects, args.seed, 20});
-  const RotationBounds bounds = args.bounds == "cube" ? RotationBounds::bounding_cube : RotationBounds::refit;
+  const RotationBounds bounds = args.bounds == "cube"     ? RotationBounds::bounding_cube
+                                : args.bounds == "sphere" ? RotationBounds::bounding_sphere
+                                                          : RotationBounds::refit;
   CollisionWorld<BV> world(bounds);
   std::map<const Mesh*, std::shared_ptr<const Bvh<BV>>> hierarchies;
   for (const auto& mesh : slide.shapes()) hierarchies[mesh.get()] = std::make_shared<const Bvh<BV>>(build_bvh<BV>(*mesh, {}));
@@ -202,7 +204,7 @@ int run_scene(const SceneArgs& args, harness::BvType bv_type) {
 
   const double frames = args.frames;
   const auto per_frame = [frames](std::size_t total) { return static_cast<double>(total) / frames; };
-  std::printf("\n%d rocks (%s trees, %s boxes), %d frames, seed %llu\n", args.objects, args.bv.c_str(), args.bounds.c_str(),
+  std::printf("\n%d rocks (%s trees, %s bounds), %d frames, seed %llu\n", args.objects, args.bv.c_str(), args.bounds.c_str(),
               args.frames, static_cast<unsigned long long>(args.seed));
   std::printf("library: broad phase %.3f ms, narrow phase %.3f ms per frame (medians); per frame %.1f candidates, "
               "%.1f colliding object pairs, %.1f triangle pairs; %llu swaps in all\n",
@@ -250,8 +252,8 @@ int run(const SceneArgs& args) {
     std::fprintf(stderr, "crosscheck scene: unknown volume type \"%s\"\n", args.bv.c_str());
     return kExitBadInput;
   }
-  if (args.bounds != "refit" && args.bounds != "cube") {
-    std::fprintf(stderr, "crosscheck scene: --bounds is refit or cube, not \"%s\"\n", args.bounds.c_str());
+  if (args.bounds != "refit" && args.bounds != "cube" && args.bounds != "sphere") {
+    std::fprintf(stderr, "crosscheck scene: --bounds is refit, cube or sphere, not \"%s\"\n", args.bounds.c_str());
     return kExitBadInput;
   }
   for (const std::string& m : args.managers) {
@@ -272,8 +274,8 @@ void add_scene_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--objects", args->objects, "Rocks")->capture_default_str()->check(whole_in(1, 100000));
   cmd->add_option("--frames", args->frames, "Frames")->capture_default_str()->check(whole_in(1, 1000000));
   cmd->add_option("--seed", args->seed, "Seed of the scene")->capture_default_str()->check(seed_value());
-  cmd->add_option("--bv", args->bv, "Volume type of the library's trees (aabb, obb, kdop6 ... kdop26)")->capture_default_str();
-  cmd->add_option("--bounds", args->bounds, "Boxes of rotating rocks: refit (per frame) or cube (any rotation)")->capture_default_str();
+  cmd->add_option("--bv", args->bv, "Volume type of the library's trees (aabb, obb, kdop6 ... kdop26, sphere)")->capture_default_str();
+  cmd->add_option("--bounds", args->bounds, "Bounds of rotating rocks: refit (a box per frame), cube (any rotation) or sphere (a ball, moved)")->capture_default_str();
   cmd->add_option("--manager", args->managers, "FCL broad-phase managers to check against (repeat; default: all seven)");
   cmd->add_flag("--quiet", args->quiet, "Only the summary, not a line per frame");
   cmd->add_option("--json", args->json, "Also write the summary as JSON")->check(writable_file());
