@@ -4,6 +4,7 @@
 #include <fcl/math/bv/AABB.h>
 #include <fcl/math/bv/OBB.h>
 #include <fcl/math/bv/kDOP.h>
+#include <fcl/math/bv/kIOS.h>
 
 #include <vector>
 
@@ -35,9 +36,10 @@ std::string_view to_string(FclBv bv) {
     case FclBv::obb: return "obb";
     case FclBv::kdop16: return "kdop16";
     case FclBv::kdop18: return "kdop18";
-    case FclBv::kdop24: break;
+    case FclBv::kdop24: return "kdop24";
+    case FclBv::kios: break;
   }
-  return "kdop24";
+  return "kios";
 }
 
 std::size_t build_fcl_model(FclBv bv, const Mesh& mesh) {
@@ -46,9 +48,10 @@ std::size_t build_fcl_model(FclBv bv, const Mesh& mesh) {
     case FclBv::obb: return build<fcl::OBBd>(mesh);
     case FclBv::kdop16: return build<fcl::KDOPd<16>>(mesh);
     case FclBv::kdop18: return build<fcl::KDOPd<18>>(mesh);
-    case FclBv::kdop24: break;
+    case FclBv::kdop24: return build<fcl::KDOPd<24>>(mesh);
+    case FclBv::kios: break;
   }
-  return build<fcl::KDOPd<24>>(mesh);
+  return build<fcl::kIOSd>(mesh);
 }
 
 }  // namespace cc::bench

@@ -10,8 +10,9 @@
 
 namespace cc::bench {
 
-/// FCL's volume types with a library counterpart.
-enum class FclBv { aabb, obb, kdop16, kdop18, kdop24 };
+/// FCL's volume types with a library counterpart (kIOS: up to five spheres and an OBB per node,
+/// FCL's nearest to the library's sphere trees, which it has no plain form of).
+enum class FclBv { aabb, obb, kdop16, kdop18, kdop24, kios };
 std::string_view to_string(FclBv bv);
 
 /// Builds fcl::BVHModel<BV> of the mesh with FCL's default splitter (mean), and returns the

@@ -11,6 +11,8 @@
 //    contact, seed 1): library collide() (all pairs, approximate update, descent into the larger
 //    volume, the rule FCL's traversal follows) against oracle/fcl's fcl_collide_meshes with the
 //    same volume type (OBBd, AABBd, KDOPd<18>).
+//  - The library's sphere trees are compared with FCL's kIOSd (its nearest: FCL has no tree of
+//    plain spheres), on rows named sphere, without a target.
 #include <benchmark/benchmark.h>
 
 #include <cstdio>
@@ -40,6 +42,7 @@ struct BvCase {
   harness::BvType lib;
   FclBv fcl;
   const char* fcl_party;  // oracle/fcl's mesh party of this volume type, if it has one
+  std::string row() const { return std::string(harness::to_string(lib)); }
 };
 const BvCase kCases[] = {
     {harness::BvType::aabb, FclBv::aabb, "fcl.BVHModel<AABBd>"},
@@ -47,6 +50,7 @@ const BvCase kCases[] = {
     {harness::BvType::kdop16, FclBv::kdop16, nullptr},
     {harness::BvType::kdop18, FclBv::kdop18, "fcl.BVHModel<KDOPd<18>>"},
     {harness::BvType::kdop24, FclBv::kdop24, nullptr},
+    {harness::BvType::sphere, FclBv::kios, "fcl.BVHModel<kIOSd>"},
 };
 
 // What a library hierarchy occupies: every array it owns, by capacity.
@@ -90,7 +94,7 @@ void register_build(const std::string& mesh_name, std::shared_ptr<const Mesh> me
     })->Iterations(1)->Repetitions(repetitions)->Unit(benchmark::kMillisecond);
   };
   for (const BvCase& c : kCases) {
-    const std::string name = "bvh_build/" + mesh_name + "/" + std::string(to_string(c.fcl));
+    const std::string name = "bvh_build/" + mesh_name + "/" + c.row();
     library(name + "/lib", c.lib, BuildOptions{});
     benchmark::RegisterBenchmark((name + "/fcl").c_str(), [=](benchmark::State& state) {
       std::size_t bytes = 0;
@@ -102,8 +106,8 @@ void register_build(const std::string& mesh_name, std::shared_ptr<const Mesh> me
   BuildOptions with_hull_points;
   with_hull_points.hull_points = true;
   for (const BvCase& c : kCases) {
-    if (c.lib == harness::BvType::obb) continue;
-    library("bvh_build/" + mesh_name + "/" + std::string(to_string(c.fcl)) + "_with_hull_points/lib", c.lib, with_hull_points);
+    if (harness::moved_whole(c.lib)) continue;  // OBB and sphere trees keep no hull points
+    library("bvh_build/" + mesh_name + "/" + c.row() + "_with_hull_points/lib", c.lib, with_hull_points);
   }
 }
 
@@ -134,7 +138,7 @@ void register_all_pairs(std::shared_ptr<const Mesh> env, std::shared_ptr<const M
   const auto poses = env_rob_poses(env, rob);
   const double queries = static_cast<double>(poses->size());
   for (const BvCase& c : kCases) {
-    const std::string name = "bvh_all_pairs/env_rob/" + std::string(to_string(c.fcl));
+    const std::string name = "bvh_all_pairs/env_rob/" + c.row();
     // Built once, outside the timing, as FCL's models are (fcl_collide_meshes caches them).
     auto trees = std::make_shared<std::function<std::size_t()>>();
     harness::with_bv_type(c.lib, [&]<class BV>() {
