@@ -53,12 +53,15 @@ struct BuildOptions {
   friend bool operator==(const BuildOptions&, const BuildOptions&) = default;
 };
 
+/// BvhNode::left of a node of a lazy hierarchy (bvh_lazy.h) that has children not made yet.
+inline constexpr std::int32_t kNotSplitYet = -2;
+
 template <class BV>
 struct BvhNode {
   BV bv;
   std::int32_t left = -1, right = -1;  // children (indices into Bvh::nodes), -1 for a leaf
   std::uint32_t first = 0, count = 0;  // the node's triangles: slots [first, first + count)
-  bool leaf() const { return left < 0; }
+  bool leaf() const { return left == -1; }
 };
 
 /// Points kept per node to re-fit an Aabb or a k-DOP after a rotation: `range[node]` is a

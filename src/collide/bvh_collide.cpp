@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "collide/bvh_lazy.h"
 #include "collide/kdop_support.h"
 #include "collide/triangle_triangle.h"
 
@@ -183,13 +184,16 @@ class VolumeMover {
   std::array<double, kSlabs> offset_{}, width_{};
 };
 
+// The walk over two hierarchies, eager ones (lazy_a and lazy_b null) or lazy ones, whose nodes
+// are split when the walk first descends into them (their node arrays then grow: nodes are read
+// by index, not kept by reference, across a split).
 template <class BV>
 class Traversal {
  public:
   Traversal(const Bvh<BV>& a, const RigidTransform& pose_a, const Bvh<BV>& b, const RigidTransform& pose_b,
-            const CollideOptions& options)
+            const CollideOptions& options, LazyBvh<BV>* lazy_a = nullptr, LazyBvh<BV>* lazy_b = nullptr)
       : a_(a), b_(b), t_(relative(pose_a, pose_b)), options_(options), mover_(b, t_, options.update),
-        volume_slot_(b.nodes.size(), -1), triangle_slot_(b.faces.size(), -1) {
+        lazy_a_(lazy_a), lazy_b_(lazy_b), volume_slot_(b.nodes.size(), -1), triangle_slot_(b.faces.size(), -1) {
     volumes_.reserve(b.nodes.size());
   }
 
@@ -205,18 +209,20 @@ class Traversal {
     };
     for (push(0, 0); size > 0;) {
       const auto [na, nb] = stack[--size];
+      ++result_.counters.bv_tests;
+      if (!BoundingVolume<BV>::overlap(a_.nodes[na].bv, volume_of(nb))) continue;
       const BvhNode<BV>& x = a_.nodes[na];
       const BvhNode<BV>& y = b_.nodes[nb];
-      ++result_.counters.bv_tests;
-      if (!BoundingVolume<BV>::overlap(x.bv, volume_of(nb))) continue;
       if (x.leaf() && y.leaf()) {
         if (test_leaves(x, y)) break;
       } else if (descend_b(x, y)) {
-        push(na, y.right);
-        push(na, y.left);
+        if (lazy_b_ != nullptr) lazy_b_->split(nb);  // (x and y are not read after this)
+        push(na, b_.nodes[nb].right);
+        push(na, b_.nodes[nb].left);
       } else {
-        push(x.right, nb);
-        push(x.left, nb);
+        if (lazy_a_ != nullptr) lazy_a_->split(na);
+        push(a_.nodes[na].right, nb);
+        push(a_.nodes[na].left, nb);
       }
     }
     std::sort(result_.pairs.begin(), result_.pairs.end());
@@ -233,6 +239,7 @@ class Traversal {
   // b's volume in a's frame, computed once per node and query (a's descent tests the same node
   // of b against many of a's). Moving an OBB or a ball is not an update (n_u counts refits only).
   const BV& volume_of(std::int32_t nb) {
+    if (static_cast<std::size_t>(nb) >= volume_slot_.size()) volume_slot_.resize(b_.nodes.size(), -1);  // lazy b grew
     std::int32_t& slot = volume_slot_[nb];
     if (slot < 0) {
       slot = static_cast<std::int32_t>(volumes_.size());
@@ -276,6 +283,8 @@ class Traversal {
   RigidTransform t_;
   CollideOptions options_;
   VolumeMover<BV> mover_;
+  LazyBvh<BV>* lazy_a_;
+  LazyBvh<BV>* lazy_b_;
   std::vector<std::int32_t> volume_slot_, triangle_slot_;  // index into volumes_, triangles_; -1 until moved
   std::vector<BV> volumes_;
   std::vector<MovedTriangle> triangles_;
@@ -288,6 +297,12 @@ template <class BV>
 CollisionResult collide(const Bvh<BV>& a, const RigidTransform& pose_a, const Bvh<BV>& b, const RigidTransform& pose_b,
                         const CollideOptions& options) {
   return Traversal<BV>(a, pose_a, b, pose_b, options).run();
+}
+
+template <class BV>
+CollisionResult collide(LazyBvh<BV>& a, const RigidTransform& pose_a, LazyBvh<BV>& b, const RigidTransform& pose_b,
+                        const CollideOptions& options) {
+  return Traversal<BV>(a.tree(), pose_a, b.tree(), pose_b, options, &a, &b).run();
 }
 
 template <class BV>
@@ -312,6 +327,8 @@ std::vector<std::pair<std::uint32_t, std::uint32_t>> collide_brute_force(const M
 
 #define CC_INSTANTIATE(BV)                                                                                \
   template CollisionResult collide<BV>(const Bvh<BV>&, const RigidTransform&, const Bvh<BV>&, const RigidTransform&, \
+                                       const CollideOptions&);                                          \
+  template CollisionResult collide<BV>(LazyBvh<BV>&, const RigidTransform&, LazyBvh<BV>&, const RigidTransform&, \
                                        const CollideOptions&);                                          \
   template BV moved_volume<BV>(const Bvh<BV>&, std::size_t, const RigidTransform&, BvUpdate);
 CC_FOR_EACH_BOUNDING_VOLUME(CC_INSTANTIATE)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "collide/bvh.h"
+#include "collide/bvh_lazy.h"
 #include "collide/rigid_transform.h"
 
 namespace cc {
@@ -68,6 +69,14 @@ struct CollisionResult {
 ///    magnitude at most 2^300.
 template <class BV>
 CollisionResult collide(const Bvh<BV>& a, const RigidTransform& pose_a, const Bvh<BV>& b, const RigidTransform& pose_b,
+                        const CollideOptions& options);
+
+/// The same on lazy hierarchies (bvh_lazy.h), splitting their nodes as the walk descends into
+/// them; the answer is collide()'s on the eager top-down trees for Aabb and k-DOP trees, and
+/// differs at most by pairs within the leaf test's band for Obb and sphere trees. a and b must
+/// be different trees (a mesh against itself: two LazyBvh).
+template <class BV>
+CollisionResult collide(LazyBvh<BV>& a, const RigidTransform& pose_a, LazyBvh<BV>& b, const RigidTransform& pose_b,
                         const CollideOptions& options);
 
 /// The volume of b's node in a's frame as collide() tests it, for b moved by t (relative to a):

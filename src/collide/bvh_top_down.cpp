@@ -37,10 +37,12 @@ struct Extent {
   }
 };
 
+}  // namespace
+
 template <class BV>
-class TopDown {
+class TopDownImpl {
  public:
-  TopDown(const Mesh& mesh, const BuildOptions& options) : mesh_(mesh), options_(options) {
+  TopDownImpl(const Mesh& mesh, const BuildOptions& options) : mesh_(mesh), options_(options) {
     items_.reserve(mesh.size());
     for (std::uint32_t f = 0; f < mesh.size(); ++f) {
       const Triangle t = mesh.triangle(f);
@@ -74,6 +76,12 @@ class TopDown {
     for (const Item& item : items_) t.order.push_back(item.face);
     return t;
   }
+
+  std::uint32_t split_range(std::uint32_t first, std::uint32_t count) {
+    return split_node(std::span(items_).subspan(first, count));
+  }
+  std::uint32_t face(std::uint32_t slot) const { return items_[slot].face; }
+  std::uint32_t size() const { return static_cast<std::uint32_t>(items_.size()); }
 
  private:
   using Items = std::span<Item>;
@@ -203,14 +211,32 @@ class TopDown {
   std::vector<Item> items_;
 };
 
-}  // namespace
-
 template <class BV>
 Topology top_down_topology(const Mesh& mesh, const BuildOptions& options) {
-  return TopDown<BV>(mesh, options).build();
+  return TopDownImpl<BV>(mesh, options).build();
 }
 
-#define CC_INSTANTIATE(BV) template Topology top_down_topology<BV>(const Mesh&, const BuildOptions&);
+template <class BV>
+TopDownSplitter<BV>::TopDownSplitter(const Mesh& mesh, const BuildOptions& options)
+    : impl_(std::make_unique<TopDownImpl<BV>>(mesh, options)) {}
+template <class BV>
+TopDownSplitter<BV>::~TopDownSplitter() = default;
+template <class BV>
+std::uint32_t TopDownSplitter<BV>::split(std::uint32_t first, std::uint32_t count) {
+  return impl_->split_range(first, count);
+}
+template <class BV>
+std::uint32_t TopDownSplitter<BV>::face(std::uint32_t slot) const {
+  return impl_->face(slot);
+}
+template <class BV>
+std::uint32_t TopDownSplitter<BV>::size() const {
+  return impl_->size();
+}
+
+#define CC_INSTANTIATE(BV)                                                            \
+  template Topology top_down_topology<BV>(const Mesh&, const BuildOptions&);         \
+  template class TopDownSplitter<BV>;
 CC_FOR_EACH_BOUNDING_VOLUME(CC_INSTANTIATE)
 #undef CC_INSTANTIATE
 

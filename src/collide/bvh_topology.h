@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "collide/bvh.h"
@@ -40,6 +41,28 @@ std::array<Vec3, 3> face_points(const Mesh& mesh, std::uint32_t face);
 
 template <class BV>
 Topology top_down_topology(const Mesh& mesh, const BuildOptions& options);
+
+template <class BV>
+class TopDownImpl;
+
+/// Top-down splitting, one node at a time (what top_down_topology does for every node): the
+/// mesh's triangles in an array of slots, in face order at first; split() partitions a node's
+/// range of it in place as the eager build does, so the same ranges split the same way.
+template <class BV>
+class TopDownSplitter {
+ public:
+  TopDownSplitter(const Mesh& mesh, const BuildOptions& options);
+  ~TopDownSplitter();
+  /// Reorders slots [first, first + count), count >= 2, so that the first `returned` of them
+  /// go to the left child; the return value lies in (0, count).
+  std::uint32_t split(std::uint32_t first, std::uint32_t count);
+  /// The mesh face in a slot.
+  std::uint32_t face(std::uint32_t slot) const;
+  std::uint32_t size() const;
+
+ private:
+  std::unique_ptr<TopDownImpl<BV>> impl_;
+};
 template <class BV>
 LinkedTree bottom_up_tree(const Mesh& mesh);
 template <class BV>

@@ -37,7 +37,7 @@ Mesh square(double z) {  // the unit square [0, 1]^2 at height z, two triangles
 
 template <class BV>
 class BvhCollideTest : public ::testing::Test {};
-using VolumeTypes = ::testing::Types<Aabb, Obb, Kdop<6>, Kdop<14>, Kdop<16>, Kdop<18>, Kdop<24>, Kdop<26>>;
+using VolumeTypes = ::testing::Types<Aabb, Obb, Kdop<6>, Kdop<14>, Kdop<16>, Kdop<18>, Kdop<24>, Kdop<26>, Sphere>;
 TYPED_TEST_SUITE(BvhCollideTest, VolumeTypes);
 
 const std::vector<RigidTransform> kPoses = {

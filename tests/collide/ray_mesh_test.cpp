@@ -18,7 +18,7 @@ using Shape = ProceduralMesh::Shape;
 
 template <class BV>
 class RayMeshTest : public ::testing::Test {};
-using VolumeTypes = ::testing::Types<Aabb, Obb, Kdop<6>, Kdop<14>, Kdop<16>, Kdop<18>, Kdop<24>, Kdop<26>>;
+using VolumeTypes = ::testing::Types<Aabb, Obb, Kdop<6>, Kdop<14>, Kdop<16>, Kdop<18>, Kdop<24>, Kdop<26>, Sphere>;
 TYPED_TEST_SUITE(RayMeshTest, VolumeTypes);
 
 const std::vector<BuildOptions> kBuilds = {
