@@ -13,6 +13,7 @@ std::string_view to_string(BuildStrategy s) {
     case BuildStrategy::top_down: return "top_down";
     case BuildStrategy::bottom_up: return "bottom_up";
     case BuildStrategy::incremental: return "incremental";
+    case BuildStrategy::lazy_top_down: return "lazy_top_down";
   }
   return "?";
 }
@@ -243,7 +244,8 @@ Bvh<BV> fit(const Mesh& mesh, detail::Topology t, const BuildOptions& options) {
 template <class BV>
 Bvh<BV> build_bvh(const Mesh& mesh, const BuildOptions& options) {
   switch (options.strategy) {
-    case BuildStrategy::top_down: return fit<BV>(mesh, detail::top_down_topology<BV>(mesh, options), options);
+    case BuildStrategy::top_down:
+    case BuildStrategy::lazy_top_down: return fit<BV>(mesh, detail::top_down_topology<BV>(mesh, options), options);
     case BuildStrategy::bottom_up: return fit<BV>(mesh, detail::layout(detail::bottom_up_tree<BV>(mesh)), options);
     case BuildStrategy::incremental:
       return fit<BV>(mesh, detail::layout(detail::incremental_tree<BV>(mesh)), options);

@@ -15,9 +15,11 @@
 namespace cc {
 
 enum class BuildStrategy {
-  top_down,     // split the triangles recursively (split axis and point below)
-  bottom_up,    // merge neighbouring nodes, level by level, pairing those whose merge is smallest
-  incremental,  // insert triangles one at a time where the total volume grows least
+  top_down,       // split the triangles recursively (split axis and point below)
+  bottom_up,      // merge neighbouring nodes, level by level, pairing those whose merge is smallest
+  incremental,    // insert triangles one at a time where the total volume grows least
+  lazy_top_down,  // top-down, a node split on first visit (LazyBvh, bvh_lazy.h); build_bvh makes
+                  // the whole tree at once: the top-down tree
 };
 
 /// Top-down: which axis of the node's frame (BoundingVolume<BV>::axes) to split along.

@@ -38,7 +38,8 @@ const double kBand = library_band(QueryKind::mesh_mesh).width;
 std::vector<LibraryBvh> hierarchies() {
   std::vector<LibraryBvh> out;
   for (BvType bv : kAllBvTypes) {
-    for (BuildStrategy s : {BuildStrategy::top_down, BuildStrategy::bottom_up, BuildStrategy::incremental}) {
+    for (BuildStrategy s : {BuildStrategy::top_down, BuildStrategy::bottom_up, BuildStrategy::incremental,
+                            BuildStrategy::lazy_top_down}) {
       LibraryBvh l;
       l.bv = bv, l.build.strategy = s;
       l.update = s == BuildStrategy::bottom_up ? BvUpdate::exact : BvUpdate::approximate;
@@ -100,6 +101,38 @@ TEST(BvhProperties, ThePairsAreBruteForcesWhateverTheHierarchy) {
       MeshPair with = m;
       with.library = l;
       expect_brute_force_up_to_band(library_collide(with, CollisionMode::all_pairs).pairs, all, v, describe(l));
+    }
+  });
+  EXPECT_TRUE(passed);
+  expect_met_the_boundary(property, QueryKind::mesh_mesh, met);
+}
+
+TEST(BvhProperties, LazyTreesAnswerAsTheEagerOnes) {
+  Met met;
+  const std::string property = "a lazy top-down tree answers as the eager one";
+  const bool passed = check_property(property, QueryKind::mesh_mesh, 0, 40, met, [&](const Input& input) {
+    const ExactVerdict v = judged(input, met);
+    const MeshPair& m = *meshes_of(input);
+    for (BvType bv : kAllBvTypes) {
+      for (BvUpdate update : {BvUpdate::approximate, BvUpdate::exact}) {
+        MeshPair eager = m, lazy = m;
+        eager.library = m.library, eager.library.bv = bv, eager.library.update = update;
+        eager.library.build.strategy = BuildStrategy::top_down;
+        lazy.library = eager.library;
+        lazy.library.build.strategy = BuildStrategy::lazy_top_down;
+        for (CollisionMode mode : {CollisionMode::all_pairs, CollisionMode::first_hit}) {
+          const CollisionResult e = library_collide(eager, mode), l = library_collide(lazy, mode);
+          if (!moved_whole(bv)) {  // Aabb and k-DOP trees: the same nodes, the same walk
+            RC_ASSERT(l.pairs == e.pairs);
+            RC_ASSERT(l.counters == e.counters);
+          } else if (mode == CollisionMode::all_pairs) {  // lazily fitted volumes: up to the band
+            Pairs differ;
+            std::set_symmetric_difference(e.pairs.begin(), e.pairs.end(), l.pairs.begin(), l.pairs.end(),
+                                          std::back_inserter(differ));
+            for (const auto& p : differ) RC_ASSERT(std::fabs(v.margin_of({p.first, p.second})) < kBand);
+          }
+        }
+      }
     }
   });
   EXPECT_TRUE(passed);

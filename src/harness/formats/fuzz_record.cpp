@@ -108,7 +108,7 @@ void write(Writer& w, const MeshRef& m, Plain) {
 void read(Reader& r, MeshRef& m, Plain) { m = read_soup(r, 1 + r.byte() % kMaxSoup); }
 
 // The library's hierarchy: a byte (bits 0-2 the volume among the first eight of kAllBvTypes, 3-4
-// the build strategy % 3, 5 the exact update, 6 the larger-first descent, 7 a sphere tree, bits
+// the build strategy, 5 the exact update, 6 the larger-first descent, 7 a sphere tree, bits
 // 0-2 then unused); the other build options are the defaults.
 void write(Writer& w, const LibraryBvh& l, Plain) {
   std::size_t bits = l.bv == BvType::sphere ? 0x80 : 0;
@@ -122,7 +122,7 @@ void read(Reader& r, LibraryBvh& l, Plain) {
   const std::uint8_t bits = r.byte();
   l = {};
   l.bv = (bits & 0x80) ? BvType::sphere : kAllBvTypes[bits & 7];
-  l.build.strategy = static_cast<BuildStrategy>(((bits >> 3) & 3) % 3);
+  l.build.strategy = static_cast<BuildStrategy>((bits >> 3) & 3);
   l.update = (bits & 0x20) ? BvUpdate::exact : BvUpdate::approximate;
   l.descent = (bits & 0x40) ? Descent::larger : Descent::first_model;
 }

@@ -228,7 +228,7 @@ void read(const Json& j, const std::string& p, MeshRef& out, Plain, const Contex
 void read(const Json& j, const std::string& p, LibraryBvh& l, Plain, const Context&) {
   const Members r(j, p);
   static constexpr BuildStrategy kStrategies[] = {BuildStrategy::top_down, BuildStrategy::bottom_up,
-                                                  BuildStrategy::incremental};
+                                                  BuildStrategy::incremental, BuildStrategy::lazy_top_down};
   static constexpr SplitAxis kAxes[] = {SplitAxis::longest_side, SplitAxis::splatter, SplitAxis::min_sum,
                                         SplitAxis::min_max};
   static constexpr SplitPoint kPoints[] = {SplitPoint::midpoint, SplitPoint::mean, SplitPoint::median};

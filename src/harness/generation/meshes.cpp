@@ -12,7 +12,7 @@ namespace cc::harness {
 LibraryBvh draw_library(Choices& c, bool few) {
   LibraryBvh l;
   l.bv = kAllBvTypes[c.draw(std::size(kAllBvTypes))];
-  l.build.strategy = static_cast<BuildStrategy>(c.draw(3));
+  l.build.strategy = static_cast<BuildStrategy>(c.draw(4));
   if (few) {
     constexpr std::pair<SplitAxis, SplitPoint> kRules[] = {{SplitAxis::longest_side, SplitPoint::midpoint},
                                                            {SplitAxis::splatter, SplitPoint::mean},

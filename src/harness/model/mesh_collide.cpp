@@ -43,6 +43,10 @@ BuildOptions build_options(const LibraryBvh& library) {
 CollisionResult library_collide(const MeshPair& m, CollisionMode mode) {
   const CollideOptions options{mode, m.library.update, m.library.descent};
   return with_bv_type(m.library.bv, [&]<class BV>() {
+    if (m.library.build.strategy == BuildStrategy::lazy_top_down) {  // made anew: a query makes its nodes
+      LazyBvh<BV> a(*m.a.mesh, build_options(m.library)), b(*m.b.mesh, build_options(m.library));
+      return collide(a, m.pose_a, b, m.pose_b, options);
+    }
     const auto a = cached_bvh<BV>(m.a.mesh, build_options(m.library));
     const auto b = cached_bvh<BV>(m.b.mesh, build_options(m.library));
     return collide(*a, m.pose_a, *b, m.pose_b, options);

@@ -19,10 +19,12 @@ std::shared_ptr<const Bvh<BV>> cached_bvh(const std::shared_ptr<const Mesh>& mes
 BuildOptions build_options(const LibraryBvh& library);
 
 /// The library's answer to a mesh query, with its counters: both meshes' hierarchies of the
-/// case's type and build, walked with its update and descent options.
+/// case's type and build, walked with its update and descent options (lazy_top_down: two lazy
+/// trees made anew, so the counters are those of a first query).
 CollisionResult library_collide(const MeshPair& meshes, CollisionMode mode);
 /// The library's answer to a ray against a mesh through the mesh's hierarchy of the given type and
-/// build: the closest hit, or (any_hit) the first one found.
+/// build: the closest hit, or (any_hit) the first one found (lazy_top_down: through the whole
+/// top-down tree, which the rays take eager).
 RayMeshHit library_ray_mesh(const std::shared_ptr<const Mesh>& mesh, const LibraryBvh& library, const Ray& ray,
                             bool any_hit);
 
