@@ -9,6 +9,10 @@ namespace cc::exact {
 using harness::ExactVerdict;
 
 ExactVerdict verdict_of(const SatResult& r, double magnitude) {
+  return verdict_of(TriangleSatVerdict{r.hit, r.rank, r.margin}, magnitude);
+}
+
+ExactVerdict verdict_of(const TriangleSatVerdict& r, double magnitude) {
   ExactVerdict v;
   v.answer.hit = r.hit;
   v.margin = r.margin / scale_of(magnitude);

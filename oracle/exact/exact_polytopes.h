@@ -10,6 +10,7 @@
 #include "collide/obb.h"
 #include "collide/triangle.h"
 #include "oracle/exact/convex_sat.h"
+#include "oracle/exact/triangle_sat.h"
 #include "harness/model/oracle.h"
 
 namespace cc::exact {
@@ -20,6 +21,7 @@ constexpr int kTriangleMinExponent = -300, kTriangleMaxExponent = 300;
 
 /// The verdict of an exact separating-axis test on inputs of that magnitude.
 harness::ExactVerdict verdict_of(const SatResult& r, double magnitude);
+harness::ExactVerdict verdict_of(const TriangleSatVerdict& r, double magnitude);
 
 /// The largest absolute coordinate of a shape.
 double magnitude_of(const Triangle& t);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <limits>
 
+#include "oracle/exact/convex_sat.h"
 #include "oracle/exact/rational.h"
 
 namespace cc::exact {
@@ -307,6 +308,21 @@ std::optional<TriangleSatVerdict> TriangleSat::operator()(const std::array<const
   verdict.hit = !separated;
   verdict.margin = verdict.hit ? (verdict.rank == 3 ? worst_overlap : 0) : -best_separation;
   return verdict;
+}
+
+}  // namespace cc::exact
+
+namespace cc::exact {
+
+DyadicPoint dyadic(const Vec3& v) { return placed_dyadic(RigidTransform{Mat3::identity(), {0, 0, 0}}, v); }
+
+TriangleSatVerdict triangle_pair_sat(const Triangle& a, const Triangle& b) {
+  thread_local TriangleSat sat;
+  const std::array<DyadicPoint, 6> p = {dyadic(a.v[0]), dyadic(a.v[1]), dyadic(a.v[2]),
+                                        dyadic(b.v[0]), dyadic(b.v[1]), dyadic(b.v[2])};
+  if (const std::optional<TriangleSatVerdict> r = sat({&p[0], &p[1], &p[2]}, {&p[3], &p[4], &p[5]})) return *r;
+  const SatResult q = exact_sat(triangle_shape(a.v[0], a.v[1], a.v[2], "A"), triangle_shape(b.v[0], b.v[1], b.v[2], "B"));
+  return {q.hit, q.rank, q.margin};
 }
 
 }  // namespace cc::exact

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "collide/rigid_transform.h"
+#include "collide/triangle.h"
 
 namespace cc::exact {
 
@@ -20,6 +21,8 @@ struct DyadicPoint {
 
 /// R v + t, exactly (pose and vertex finite).
 DyadicPoint placed_dyadic(const RigidTransform& pose, const Vec3& v);
+/// v itself (finite).
+DyadicPoint dyadic(const Vec3& v);
 
 /// What judge_meshes takes of exact_sat's result.
 struct TriangleSatVerdict {
@@ -34,6 +37,13 @@ struct TriangleSatVerdict {
 /// (collinear or coincident vertices in both triangles), whose candidate axes involve the
 /// triangles' centroids, thirds that are not dyadic: use exact_sat there. One object per thread;
 /// it keeps its integers from pair to pair.
+class TriangleSat;
+
+/// exact_sat(triangle_shape(a...), triangle_shape(b...)) for two triangles of finite doubles:
+/// in integer arithmetic by a TriangleSat of this thread where it takes them, else in rationals;
+/// the same hit, rank and margin either way.
+TriangleSatVerdict triangle_pair_sat(const Triangle& a, const Triangle& b);
+
 class TriangleSat {
  public:
   std::optional<TriangleSatVerdict> operator()(const std::array<const DyadicPoint*, 3>& a,
