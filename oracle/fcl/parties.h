@@ -30,7 +30,8 @@ Opinion fcl_collide_models(Volume volume, const harness::MeshPair& m, bool first
 
 /// The BVHModel parties on two placed meshes, asked for every contact, by name (for the
 /// commands and benchmarks that compare hierarchies; defined with those parties): their names, and
-/// the opinion of one, with its name and band. Throws std::out_of_range for another name.
+/// the opinion of one, with its name and band, whatever the library's hierarchy (those asked of
+/// sphere trees only in cases answer here too). Throws std::out_of_range for another name.
 std::vector<std::string> fcl_mesh_parties();
 Opinion fcl_collide_meshes(const std::string& party, const harness::MeshPair& m);
 

@@ -14,14 +14,15 @@ const std::vector<Party<harness::MeshMeshInput>>& fcl_parties() {
 
 std::vector<std::string> fcl_mesh_parties() {
   std::vector<std::string> names;
-  for (const auto& p : fcl_parties<harness::MeshMeshInput>()) names.push_back(p.name);
+  for (const ModelParty& p : model_parties()) names.push_back(p.name);
   return names;
 }
 
+// Every model, whatever the library's hierarchy: the commands compare hierarchies.
 Opinion fcl_collide_meshes(const std::string& party, const harness::MeshPair& m) {
-  for (const auto& p : fcl_parties<harness::MeshMeshInput>()) {
+  for (const ModelParty& p : model_parties()) {
     if (p.name != party) continue;
-    Opinion o = p.ask(harness::MeshMeshInput{m});
+    Opinion o = fcl_collide_models(p.volume, m, false);
     o.party = p.name;
     o.band = p.band;
     return o;
