@@ -54,7 +54,7 @@ void expect_same(const std::vector<ObjectContact>& x, const std::vector<ObjectCo
 }
 
 TEST(CollisionWorld, FindsTheContactsOfTestingEveryPairWithEitherBounds) {
-  for (RotationBounds bounds : {RotationBounds::refit, RotationBounds::bounding_cube}) {
+  for (RotationBounds bounds : {RotationBounds::refit, RotationBounds::bounding_cube, RotationBounds::bounding_sphere}) {
     Scene s = random_scene(4, 40);
     std::vector<std::shared_ptr<const Bvh<Obb>>> bvh;
     for (const auto& m : s.meshes) bvh.push_back(std::make_shared<const Bvh<Obb>>(build_bvh<Obb>(*m, {})));
@@ -83,6 +83,37 @@ TEST(CollisionWorld, RefitBoxesLeaveNoMoreCandidatesThanCubes) {
   CollisionWorld<Obb> cube(RotationBounds::bounding_cube), refit(RotationBounds::refit);
   for (std::size_t i = 0; i < s.meshes.size(); ++i) cube.add(s.meshes[i], bvh[i], s.poses[i]), refit.add(s.meshes[i], bvh[i], s.poses[i]);
   EXPECT_LE(refit.broad_phase().size(), cube.broad_phase().size());
+}
+
+// Meshes whose vertices lie far from their own origin: their balls in their own frames are apart
+// when placed together, and together when placed apart; the first level must take the placed ones.
+TEST(CollisionWorld, BallsAreTestedWherePosesPlaceThem) {
+  Mesh off = make_mesh({ProceduralMesh::Shape::sphere, 1, 5, 1.0});
+  for (Vec3& v : off.vertices) v.x += 50;
+  Mesh back = off;
+  for (Vec3& v : back.vertices) v.x -= 100;
+  const auto a = std::make_shared<const Mesh>(off), b = std::make_shared<const Mesh>(back);
+  const auto ta = std::make_shared<const Bvh<Obb>>(build_bvh<Obb>(*a, {}));
+  const auto tb = std::make_shared<const Bvh<Obb>>(build_bvh<Obb>(*b, {}));
+  const Mat3 turn = Mat3::from_columns({0, 1, 0}, {-1, 0, 0}, {0, 0, 1});
+  {  // placed together: a's ball moved to the origin, b's to (0.5, 0, 0)
+    CollisionWorld<Obb> world(RotationBounds::bounding_sphere);
+    world.add(a, ta, {turn, {0, -50, 0}});
+    world.add(b, tb, {Mat3::identity(), {50.5, 0, 0}});
+    ASSERT_EQ(world.broad_phase().size(), 1u);
+    EXPECT_FALSE(world.narrow_phase().empty());
+  }
+  {  // placed apart, diagonally (their cubes overlap, their balls of radius 1 do not), though in
+     // their own frames they are the same ball
+    CollisionWorld<Obb> world(RotationBounds::bounding_sphere);
+    world.add(a, ta, {Mat3::identity(), {0, 0, 0}});
+    world.add(a, ta, {Mat3::identity(), {1.75, 1.75, 0}});
+    EXPECT_TRUE(world.broad_phase().empty());
+    CollisionWorld<Obb> cubes(RotationBounds::bounding_cube);
+    cubes.add(a, ta, {Mat3::identity(), {0, 0, 0}});
+    cubes.add(a, ta, {Mat3::identity(), {1.75, 1.75, 0}});
+    EXPECT_EQ(cubes.broad_phase().size(), 1u);  // (the cubes around the meshes' origins meet)
+  }
 }
 
 TEST(CollisionWorld, ARemovedObjectCollidesNoMore) {
