@@ -1,9 +1,6 @@
 // disc_walls in exact arithmetic: every wall on its own (exact_disc_walls.h): the squared distance
-// from the disc's centre to the segment against the squared radius. A wall's margin is
-// r - |c - wall| over that wall's scale (the library's: the largest |coordinate| of the centre and
-// the wall, or the radius), computed as (r^2 - |c - wall|^2) / (r + |c - wall|) with exponents
-// kept apart and the exact sign, so that it is 0 only for a wall the disc touches. The case's
-// margin is the wall's nearest 0.
+// from the disc's centre to the segment against the squared radius, and the wall's margin with
+// its exact sign. The case's margin is the wall's nearest 0.
 #include <algorithm>
 #include <cmath>
 #include <string>
@@ -19,38 +16,7 @@ namespace {
 
 constexpr int kMaxExponent = 500;  // the library's domain: magnitudes up to 2^500
 
-// a + b for a, b >= 0, normalised.
-Magnitude sum(Magnitude a, Magnitude b) {
-  if (a.m == 0) return b;
-  if (b.m == 0) return a;
-  const long e = std::max(a.e, b.e);
-  const double m = std::ldexp(a.m, static_cast<int>(std::max(a.e - e, -2000L))) +
-                   std::ldexp(b.m, static_cast<int>(std::max(b.e - e, -2000L)));
-  return Magnitude{m, e} * Magnitude{1, 0};
-}
-
-// The square root of a >= 0.
-Magnitude root(Magnitude a) {
-  if (a.m == 0) return a;
-  if (a.e % 2 != 0) a.m *= 2, a.e -= 1;
-  return Magnitude{std::sqrt(a.m), a.e / 2} * Magnitude{1, 0};
-}
-
 bool finite(const Wall& w) { return all_finite({w.a.x, w.a.y, w.b.x, w.b.y}); }
-
-// r^2 - |c - wall|^2: > 0 overlapping, 0 touching, < 0 apart.
-Rational slack_of(const ExactDiscWall& e, double radius) {
-  const Rational r = rational(radius);
-  return r * r - e.distance2;
-}
-
-double wall_margin(const ExactDiscWall& e, double radius) {
-  const Rational slack = slack_of(e, radius);
-  if (sgn(slack) == 0) return 0;
-  const Magnitude reach = sum(Magnitude::of(rational(radius)), root(Magnitude::of(e.distance2)));
-  const Magnitude scale = Magnitude::of(rational(scale_of(e.scale)));
-  return signed_margin((Magnitude::of(slack) / reach / scale).to_double(), sgn(slack));
-}
 
 std::string point(const Vec2& p) {
   std::string s = "(";
@@ -91,7 +57,7 @@ ExactVerdict judge(const harness::DiscWallsInput& in) {
     }
     magnitude = std::max(magnitude, max_magnitude({w.a.x, w.a.y, w.b.x, w.b.y}));
     const ExactDiscWall e = exact_disc_wall(disc, w);
-    const double margin = wall_margin(e, disc.radius);
+    const double margin = e.margin;
     if (e.touches) v.answer.pairs.push_back(pair);
     v.pair_margins.push_back({pair, margin});
     if (std::fabs(margin) < std::fabs(v.margin)) v.margin = margin;
@@ -122,7 +88,7 @@ harness::Explanation explain(const harness::DiscWallsInput& in) {
       continue;
     }
     const ExactDiscWall x = exact_disc_wall(in.disc, w);
-    const Rational slack = slack_of(x, in.disc.radius);
+    const Rational& slack = x.slack;
     e.rows.push_back({std::to_string(i), point(w.a), point(w.b), nearest_part(in.disc, w), num(slack),
                       x.touches ? "yes" : "no", num(margin)});
     if (deciding < 0 && margin == v.margin) {
