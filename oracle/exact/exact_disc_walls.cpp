@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "oracle/exact/domain.h"
+
 namespace cc::exact {
 namespace {
 
@@ -12,6 +14,33 @@ struct QVec2 {
 
 QVec2 rational(const Vec2& v) { return {exact::rational(v.x), exact::rational(v.y)}; }
 Rational dot(const QVec2& a, const QVec2& b) { return a.x * b.x + a.y * b.y; }
+
+// a + b for a, b >= 0, normalised.
+Magnitude sum(Magnitude a, Magnitude b) {
+  if (a.m == 0) return b;
+  if (b.m == 0) return a;
+  const long e = std::max(a.e, b.e);
+  const double m = std::ldexp(a.m, static_cast<int>(std::max(a.e - e, -2000L))) +
+                   std::ldexp(b.m, static_cast<int>(std::max(b.e - e, -2000L)));
+  return Magnitude{m, e} * Magnitude{1, 0};
+}
+
+// The square root of a >= 0.
+Magnitude root(Magnitude a) {
+  if (a.m == 0) return a;
+  if (a.e % 2 != 0) a.m *= 2, a.e -= 1;
+  return Magnitude{std::sqrt(a.m), a.e / 2} * Magnitude{1, 0};
+}
+
+// r - |c - wall| over the scale, computed as (r^2 - |c - wall|^2) / (r + |c - wall|) with
+// exponents kept apart and the exact sign, so that it is 0 only for a wall the disc touches.
+double wall_margin(const ExactDiscWall& e, double radius) {
+  const Rational& slack = e.slack;
+  if (sgn(slack) == 0) return 0;
+  const Magnitude reach = sum(Magnitude::of(exact::rational(radius)), root(Magnitude::of(e.distance2)));
+  const Magnitude scale = Magnitude::of(exact::rational(scale_of(e.scale)));
+  return signed_margin((Magnitude::of(slack) / reach / scale).to_double(), sgn(slack));
+}
 
 }  // namespace
 
@@ -25,9 +54,10 @@ ExactDiscWall exact_disc_wall(const Disc& disc, const Wall& wall) {
   ExactDiscWall e;
   e.distance2 = dot(gap, gap);
   const Rational r = exact::rational(disc.radius);
-  e.touches = e.distance2 <= r * r;
+  e.slack = r * r - e.distance2;
+  e.touches = sgn(e.slack) >= 0;
   e.scale = max_magnitude({disc.center.x, disc.center.y, wall.a.x, wall.a.y, wall.b.x, wall.b.y, disc.radius});
-  if (e.scale > 0) e.margin = (disc.radius - std::sqrt(to_double(e.distance2))) / e.scale;
+  e.margin = wall_margin(e, disc.radius);
   return e;
 }
 

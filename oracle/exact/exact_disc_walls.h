@@ -10,8 +10,10 @@ namespace cc::exact {
 struct ExactDiscWall {
   bool touches = false;    // |centre - segment| <= radius
   Rational distance2;      // |centre - segment|^2
+  Rational slack;          // radius^2 - distance2: > 0 overlapping, 0 touching, < 0 apart
   double scale = 0;        // the largest |coordinate| of the centre and the wall, or the radius
-  /// (radius - distance) / scale, rounded (> 0 overlapping, 0 touching, < 0 apart).
+  /// (radius - distance) / scale, rounded, with the exact sign (> 0 overlapping, 0 touching,
+  /// < 0 apart; a scale of 0 counts as 1).
   double margin = 0;
 };
 

@@ -63,13 +63,15 @@ bool between_ends(const Vec2& d, const Vec2& e, const Vec2& w) {
          dot(e, w) <= 8 * u * abs_dot(e, w) + fp::subnormal_slack;
 }
 
-// The line through the wall within r of the centre: cross(w, d)^2 <= r^2 (w . w); the cross
-// product errs by 4u P (P = |w_x d_y| + |w_y d_x|), the difference of squares by 12u (P^2 + r^2 w . w).
-bool line_within_squared(const Vec2& d, const Vec2& w, double r) {
-  const double cross = w.x * d.y - w.y * d.x;
+// The line through the wall within r of the centre: |cross(w, d)| <= r |w|, compared as lengths
+// (as squares the bound would have to cover the cross product's error squared, which lets a
+// small disc reach a line sqrt(u) of the scale away). With P = |w_x d_y| + |w_y d_x|, the cross
+// product of the rounded differences errs by at most 5u P, and r |w| by 4u of it.
+bool line_within(const Vec2& d, const Vec2& w, double r) {
+  const double cross = std::fabs(w.x * d.y - w.y * d.x);
   const double p = std::fabs(w.x * d.y) + std::fabs(w.y * d.x);
-  const double rhs = (r * r) * dot(w, w);
-  return cross * cross - rhs <= 16 * u * (p * p + rhs) + fp::subnormal_slack;
+  const double reach = r * std::sqrt(dot(w, w));
+  return cross - reach <= 16 * u * (p + reach) + fp::subnormal_slack;
 }
 
 // |v| <= r by a square root: sqrt(v . v) errs by 3u of it, and by 2^-537 when v . v underflows.
@@ -93,7 +95,7 @@ bool within_band(const Vec2& d, const Vec2& e, const Vec2& w, double r) {
 bool test_disc_wall(const Disc& disc, const Wall& wall) {
   const Frame f = frame(disc.center, disc.radius, wall);
   const bool hit = within_squared(f.d, f.r) || within_squared(f.e, f.r) ||
-                   (!f.point_wall && between_ends(f.d, f.e, f.w) && line_within_squared(f.d, f.w, f.r));
+                   (!f.point_wall && between_ends(f.d, f.e, f.w) && line_within(f.d, f.w, f.r));
   return hit && in_contract(disc.center, disc.radius, wall);  // out of contract: false
 }
 

@@ -37,8 +37,8 @@ struct Wall {
 };
 
 /// True when the disc and the wall share a point, by the disc's distance to the segment
-/// (compared as squares: the nearest end, or the line when the centre projects between the
-/// ends). Conservative as above; symmetric in the wall's ends bit for bit.
+/// (the nearest end, compared as squares, or the line, |cross(b - a, c - a)| against r |b - a|,
+/// when the centre projects between the ends). Conservative as above; symmetric in the wall's ends bit for bit.
 ///  - Domain: finite inputs of magnitude at most 2^500, radius >= 0.
 ///  - NaN or infinite input, or a negative radius: false.
 bool test_disc_wall(const Disc& disc, const Wall& wall);

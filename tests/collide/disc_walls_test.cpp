@@ -39,6 +39,15 @@ TEST(DiscWalls, AnUlpApartFromTheSideIsNotAContactAtUnitScale) {
   EXPECT_FALSE(touches({{2, 0.75}, 0.5}, kWall));
 }
 
+TEST(DiscWalls, APointBesideADiagonalWallIsApartByItsDistance) {
+  // A point near (2^-16, 2^-16), 9.1e-13 (2^-40) from the line y = x, the scale being 1 (the
+  // wall's end): apart beyond the band (the line test once compared squares and let it touch).
+  const Disc point{{1.525877385519498e-05, 1.5258775141413494e-05}, 0};
+  EXPECT_FALSE(test_disc_wall(point, {{0, 0}, {1, 1}}));
+  EXPECT_FALSE(test_point_grown_wall(point.center, 0, {{0, 0}, {1, 1}}));
+  EXPECT_TRUE(test_disc_wall({point.center, 1e-12}, {{0, 0}, {1, 1}}));  // a disc reaching it
+}
+
 TEST(DiscWalls, TouchingAnEndAlongA345DirectionIsAContact) {
   // (4 + 3/16, 4/16) is 5/16 from the end (4, 0).
   EXPECT_TRUE(touches({{4 + 0.1875, 0.25}, 0.3125}, kWall));

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <random>
 
@@ -94,6 +95,37 @@ TEST(DiscWallsExact, NeverMissesATouchAndStaysWithinTheBand) {
   EXPECT_GT(exact_touches, 500);
   std::printf("disc walls: %d contacts (%d exactly touching), %d apart, %d touches reported within the band\n", contacts,
               exact_touches, apart, reported_apart_within_band);
+}
+
+// A point or a small disc beside a long wall, apart from its line by 2^-26 to 2^-47 of the
+// scale: the line test must measure the distance, not its square (as squares, the cross
+// product's rounding let a point 2^-25 of the scale away count as touching).
+TEST(DiscWallsExact, ASmallDiscBesideALongWallIsJudgedByItsDistance) {
+  Random random(20261127);
+  int apart_beyond_band = 0, touching = 0;
+  for (int i = 0; i < 20000; ++i) {
+    const double scale = std::ldexp(1.0, random.below(200) - 100);
+    const Vec2 a = scale * Vec2{random.between(-1, 1), random.between(-1, 1)};
+    const Vec2 w = scale * Vec2{random.between(-1, 1), random.between(-1, 1)};
+    const Wall wall{a, a + w};
+    const double length = std::sqrt(w.x * w.x + w.y * w.y);
+    if (length == 0) continue;
+    const double gap = scale * std::ldexp(1 + random.unit(), -26 - random.below(22));
+    const Vec2 n{-w.y / length, w.x / length};
+    const Vec2 centre = a + random.between(0.1, 0.9) * w + (random.below(2) ? gap : -gap) * n;
+    const double radius = std::array{0.0, gap * 0x1p-20, gap * (1 - 0x1p-10), gap * (1 + 0x1p-10)}[random.below(4)];
+    const Disc disc{centre, radius};
+    const exact::ExactDiscWall e = exact::exact_disc_wall(disc, wall);
+    for (const bool says : {test_disc_wall(disc, wall), test_point_grown_wall(centre, radius, wall)}) {
+      ASSERT_TRUE(exact::disc_wall_answer_right(e, disc, says, 0x1p-44))
+          << (says ? "touch" : "miss") << " for disc (" << centre.x << ", " << centre.y << ") r " << radius << ", wall ("
+          << wall.a.x << ", " << wall.a.y << ")-(" << wall.b.x << ", " << wall.b.y << "), margin " << e.margin;
+    }
+    apart_beyond_band += !e.touches && e.margin < -0x1p-43;
+    touching += e.touches;
+  }
+  EXPECT_GT(apart_beyond_band, 5000);  // the cases the squared test got wrong
+  EXPECT_GT(touching, 2000);
 }
 
 }  // namespace

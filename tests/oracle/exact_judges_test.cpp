@@ -167,5 +167,76 @@ TEST(JudgeTriangles, DomainsAndAnswers) {
   EXPECT_FALSE(judge(harness::TriAabbInput{t, {{0.6, 0.6, 0}, {0.6, 0.6, 0}}}).answer.hit);
 }
 
+harness::DiscWallsInput disc_walls(Disc disc, std::vector<Wall> walls) { return {disc, std::move(walls)}; }
+const Wall kFloor{{0, 0}, {2, 0}};  // scale 2 with a disc near it
+
+// Every wall on its own: touched at its side, at an end (3-4-5), as a pillar; the margin is the
+// gap over that wall's scale, the case's the wall's nearest 0.
+TEST(JudgeDiscWalls, EachWallTouchedOrApartAtItsOwnMargin) {
+  const ExactVerdict side = judge(disc_walls({{1, 0.5}, 0.5}, {kFloor}));
+  EXPECT_EQ(side.contract, Contract::in);
+  EXPECT_EQ(side.answer.pairs, (std::vector<harness::FacePair>{{0, 0}}));
+  EXPECT_TRUE(side.answer.hit);
+  EXPECT_EQ(side.margin, 0);
+  const ExactVerdict end = judge(disc_walls({{-3, 4}, 5}, {{{0, 0}, {8, 0}}}));  // nearest point: the end a
+  EXPECT_TRUE(end.answer.hit);
+  EXPECT_EQ(end.margin, 0);
+  EXPECT_EQ(judge(disc_walls({{0, 0}, 5}, {{{3, 4}, {3, 4}}})).margin, 0);  // a pillar
+  // 1.5 apart over the scale 2; the far wall (scale 2^20) is apart by more.
+  const ExactVerdict apart = judge(disc_walls({{1, 2}, 0.5}, {kFloor, {{0x1p20, 0}, {0x1p20, 1}}}));
+  EXPECT_FALSE(apart.answer.hit);
+  EXPECT_TRUE(apart.answer.pairs.empty());
+  EXPECT_DOUBLE_EQ(apart.margin, -0.75);
+  EXPECT_DOUBLE_EQ(apart.margin_of({0, 0}), -0.75);
+  EXPECT_NEAR(apart.margin_of({1, 0}), -(0x1p20 - 1.5) / 0x1p20, 1e-9);
+  // Overlapping by 0.25 (scale 2), and the other wall touching: the case's margin is 0.
+  const ExactVerdict two = judge(disc_walls({{1, 0.25}, 0.5}, {kFloor, {{0, 0.75}, {2, 0.75}}}));
+  EXPECT_EQ(two.answer.pairs, (std::vector<harness::FacePair>{{0, 0}, {1, 0}}));
+  EXPECT_DOUBLE_EQ(two.margin_of({0, 0}), 0.125);
+  EXPECT_EQ(two.margin, 0);
+}
+
+// One ulp apart or overlapping, and by a subnormal: never margin 0.
+TEST(JudgeDiscWalls, AMarginIsZeroOnlyForATouch) {
+  const ExactVerdict ulp = judge(disc_walls({{1, std::nextafter(0.5, 1.0)}, 0.5}, {kFloor}));
+  EXPECT_FALSE(ulp.answer.hit);
+  EXPECT_LT(ulp.margin, 0);
+  EXPECT_GT(ulp.margin, -0x1p-50);
+  const double tiny = std::numeric_limits<double>::denorm_min();
+  const ExactVerdict apart = judge(disc_walls({{0, 2 * tiny}, tiny}, {{{-1, 0}, {1, 0}}}));
+  EXPECT_FALSE(apart.answer.hit);
+  EXPECT_LT(apart.margin, 0);
+  const ExactVerdict overlapping = judge(disc_walls({{0, tiny}, 2 * tiny}, {{{-1, 0}, {1, 0}}}));
+  EXPECT_TRUE(overlapping.answer.hit);
+  EXPECT_GT(overlapping.margin, 0);
+  // A tiny scale: every value below 2^-1000, the margin still the gap over the scale.
+  const ExactVerdict small = judge(disc_walls({{0x1p-1010, 0x1p-1010}, 0}, {{{0, 0}, {0x1p-1009, 0}}}));
+  EXPECT_FALSE(small.answer.hit);
+  EXPECT_DOUBLE_EQ(small.margin, -0.5);
+}
+
+// A disc out of the domain has the documented answer; a wall with a NaN or infinite end is never
+// touched (margin -inf) while the others are judged; beyond 2^500 the verdict stands, unspecified.
+TEST(JudgeDiscWalls, ContractAndDocumentedAnswers) {
+  for (const Disc& d : {Disc{{kNan, 0}, 1}, Disc{{0, INFINITY}, 1}, Disc{{0, 0}, kNan}, Disc{{0, 0}, -1}}) {
+    const ExactVerdict v = judge(disc_walls(d, {kFloor}));
+    EXPECT_EQ(v.contract, Contract::documented);
+    EXPECT_FALSE(v.answer.hit);
+  }
+  const ExactVerdict nan_wall = judge(disc_walls({{1, 0}, 0}, {{{kNan, 0}, {2, 0}}, kFloor}));
+  EXPECT_EQ(nan_wall.contract, Contract::in);
+  EXPECT_EQ(nan_wall.answer.pairs, (std::vector<harness::FacePair>{{1, 0}}));
+  EXPECT_EQ(nan_wall.margin_of({0, 0}), -INFINITY);
+  EXPECT_EQ(nan_wall.margin, 0);
+  const ExactVerdict huge = judge(disc_walls({{0, 0}, 0x1p501}, {kFloor}));
+  EXPECT_EQ(huge.contract, Contract::unspecified);
+  EXPECT_TRUE(huge.decided);
+  EXPECT_TRUE(huge.answer.hit);
+  const ExactVerdict none = judge(disc_walls({{0, 0}, 1}, {}));
+  EXPECT_EQ(none.contract, Contract::in);
+  EXPECT_FALSE(none.answer.hit);
+  EXPECT_EQ(none.margin, -INFINITY);
+}
+
 }  // namespace
 }  // namespace cc::exact

@@ -1,21 +1,27 @@
 // Metamorphic relations, no oracle needed where they are exact in floating point: swapping the
 // two shapes, permuting the axes, flipping the sign of an axis and scaling by a power of two give
 // the library's answer bit for bit (ray parameters included), and so do the reorderings of what
-// the generators keep in order: a k-DOP's points, a scene's objects (pairs renamed), a mesh's
-// faces (pairs renamed; the leaf tests see the same triangles). Where a relation does not apply
+// the generators keep in order: a k-DOP's points, a scene's objects and a maze's walls (pairs
+// renamed), a wall's ends, a mesh's faces (pairs renamed; the leaf tests see the same
+// triangles). Where a relation does not apply
 // (no second shape; a k-DOP direction set not closed under it: 16 under both, 24 under flips)
 // it is skipped. Scaling is checked on inputs whose values lie in [2^-250, 2^250] (others flushed
 // to 0), where no intermediate result of the library underflows or overflows.
 //
-// Four relations hold only as "equal, or another right answer", and the property checks that
+// Five relations hold only as "equal, or another right answer", and the property checks that
 // much, so a real asymmetry still fails it:
 //  - reordering a triangle's vertices changes which edges the tests compute and so their
 //    rounding (a tri_tri 9 ulps apart is a hit one way, a miss the other): the answers must be
-//    equal, or both right within the library's band by the exact reference;
+//    equal, or both right within the library's band by the exact reference (a wall's ends, the
+//    same relation for disc_walls, are exact);
 //  - permuting the axes, for sphere_sphere, obb_obb, tri_tri and the mesh queries (whose leaf
 //    test is tri_tri and whose OBB trees test their nodes with test_obb_obb): those tests sum three
 //    terms left to right (plain floating-point arithmetic), and a permutation changes that order
 //    and so the rounding, within the certified bound: equal, or both right within the band;
+//  - exchanging x and y, or a mirror, for disc_walls: the disc tests take a wall's ends in
+//    lexicographic order (so that swapping the ends is exact, and it is checked bit for bit), and
+//    these may reverse it, and with it the end the rounded differences start from: equal, or both
+//    right within the band;
 //  - a first hit under reordered faces may be another pair: the same hit, and a pair of all
 //    the pairs of the reordered meshes;
 //  - the closest hit of a ray under reordered faces: the same hit and t, and the face renamed,
@@ -67,7 +73,12 @@ bool another_right_answer(const Input& input, const Input& transformed, const An
   const QueryKind kind = kind_of(input);
   const bool sums_in_order = kind == QueryKind::sphere_sphere || kind == QueryKind::obb_obb || kind == QueryKind::tri_tri ||
                              kind == QueryKind::mesh_mesh || kind == QueryKind::mesh_mesh_first;
-  if (relation == Relation::permute_vertices || (relation == Relation::permute_axes && sums_in_order)) {
+  // A wall's ends are taken in lexicographic order, so swapping them is exact; a mirror or
+  // exchanging x and y may reverse that order, and the end the test measures from.
+  const bool ends_in_order = kind == QueryKind::disc_walls;
+  if ((relation == Relation::permute_vertices && !ends_in_order) ||
+      ((relation == Relation::permute_axes || relation == Relation::flip_axis) && ends_in_order) ||
+      (relation == Relation::permute_axes && sums_in_order)) {
     return library_right(input, exact) && library_right(transformed, exact);
   }
   if (relation != Relation::permute_faces || before.hit != after.hit) return false;

@@ -56,6 +56,25 @@ struct Draw {
     ++shape;
   }
   void at(const Ray& r, Plain) { out.rays.push_back({r, shape++}); }
+  // A disc and walls lie in the plane z = 0: a wall by its segment and its ends (a pillar stays
+  // visible), every part of a list as one shape.
+  void at(const Disc& d, Plain) { out.circles.push_back({{d.center.x, d.center.y, 0}, d.radius, shape++}); }
+  void wall(const Wall& w, int s) {
+    const Vec3 a{w.a.x, w.a.y, 0}, b{w.b.x, w.b.y, 0};
+    out.segments.push_back({a, b, s});
+    out.points.push_back({a, s});
+    out.points.push_back({b, s});
+  }
+  void at(const Wall& w, Plain) { wall(w, shape++); }
+  template <PartList L>
+  void at(const L& parts, Plain) {
+    const int s = shape;
+    for (const auto& part : parts) {
+      shape = s;
+      at(part, Plain{});
+    }
+    shape = s + 1;
+  }
   void at(const MovingObb& m, Plain) {  // at the start and the end of the step
     obb(m.box, shape);
     obb({m.box.center + m.velocity, m.box.half, m.box.axes}, shape);

@@ -39,7 +39,8 @@ struct Drawing {
 /// (a circle in each view), a triangle by its edges and vertices (a degenerate one stays
 /// visible), a point set by its points, a ray from its origin, a moving box at the start and the
 /// end of its step, a mesh by its first 400 faces, two placed meshes by their first 200 faces
-/// each, boxes over frames by the last frame's boxes.
+/// each, boxes over frames by the last frame's boxes, a disc by its outline and walls by their
+/// segments and ends, in the plane z = 0 (the walls one shape).
 Drawing drawing_of(const Input& input);
 
 /// The rays as segments: each clipped to [tmin, tmax] and to twice the distance (in the largest

@@ -13,7 +13,7 @@ namespace {
 
 constexpr int kKs[] = {6, 14, 16, 18, 24, 26};
 constexpr std::uint8_t kTminInfinite = 0x10, kTmaxInfinite = 0x20;
-constexpr std::size_t kMaxPoints = 8, kMaxSoup = 4, kMaxBoxes = 8, kMaxFrames = 4;
+constexpr std::size_t kMaxPoints = 8, kMaxSoup = 4, kMaxBoxes = 8, kMaxFrames = 4, kMaxParts = 8;
 
 // A record being written: the tag's flags, the header bytes, the values.
 struct Writer {
@@ -56,6 +56,11 @@ void write(Writer& w, const Vec3& v, Plain) { w.number(v.x), w.number(v.y), w.nu
 void read(Reader& r, Vec3& v, Plain) {
   const double x = r.number(), y = r.number(), z = r.number();
   v = {x, y, z};
+}
+void write(Writer& w, const Vec2& v, Plain) { w.number(v.x), w.number(v.y); }
+void read(Reader& r, Vec2& v, Plain) {
+  const double x = r.number(), y = r.number();
+  v = {x, y};
 }
 void write(Writer& w, const Mat3& m, AsFrame) { write(w, m.col[0], Plain{}), write(w, m.col[1], Plain{}), write(w, m.col[2], Plain{}); }
 void read(Reader& r, Mat3& m, AsFrame) {
@@ -202,6 +207,26 @@ void read(Reader& r, BoxFrames& frames, Plain) {
 // --- parts made of fields, in the order of their fields ------------------------------------
 
 template <HasFields T>
+void write(Writer& w, const T& value, Plain);
+template <HasFields T>
+void read(Reader& r, T& value, Plain);
+
+// A list of parts: a byte (1 + b % 8 parts), then each part's values (the first 8 of a longer
+// list; an empty list is written as one default part). A part of a list has no header bytes.
+template <PartList L>
+void write(Writer& w, const L& parts, Plain) {
+  static_assert(header_bytes<typename L::value_type>() == 0, "a part of a list has no header bytes");
+  const std::size_t n = std::clamp<std::size_t>(parts.size(), 1, kMaxParts);
+  w.byte(n - 1);
+  for (std::size_t i = 0; i < n; ++i) write(w, i < parts.size() ? parts[i] : typename L::value_type{}, Plain{});
+}
+template <PartList L>
+void read(Reader& r, L& parts, Plain) {
+  parts.resize(1 + r.byte() % kMaxParts);
+  for (auto& part : parts) read(r, part, Plain{});
+}
+
+template <HasFields T>
 void write(Writer& w, const T& value, Plain) {
   for_each_field<T>([&](const auto& f) {
     using F = std::decay_t<decltype(f)>;
@@ -223,7 +248,7 @@ constexpr std::size_t header_bytes() {
   } else if constexpr (std::is_same_v<T, BoxFrames>) {
     return 2 + kMaxFrames;
   } else if constexpr (std::is_same_v<T, std::vector<Vec3>> || std::is_same_v<T, MeshRef> ||
-                       std::is_same_v<T, LibraryBvh> || std::is_same_v<As, AsKdopK>) {
+                       std::is_same_v<T, LibraryBvh> || std::is_same_v<As, AsKdopK> || PartList<T>) {
     return 1;
   } else if constexpr (HasFields<T>) {
     std::size_t n = 0;

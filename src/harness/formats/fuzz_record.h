@@ -6,13 +6,15 @@
 //   then        little-endian IEEE doubles: the values of its fields, in the same order
 //
 // The kind's fields (Fields<its input>, in its unit) decide the order; each part contributes:
-//   a double, a point, a triangle    1, 3, 9 values; a box's axes 9 values, by columns
-//   a box, a sphere, a moving box    its fields' values (lo, hi; center, radius; center, half,
-//                                    axes, velocity)
+//   a double, a point, a triangle    1, 3, 9 values; a box's axes 9 values, by columns; a point
+//                                    of the plane 2 values
+//   a box, a sphere, a moving box,   its fields' values (lo, hi; center, radius; center, half,
+//   a disc, a wall                   axes, velocity; center, radius; a, b)
 //   a ray                            origin, dir, tmin, tmax; flags: bit 4 tmin = -inf, bit 5
 //                                    tmax = +inf
 //   k of a k-DOP                     a header byte: an index into 6 14 16 18 24 26 (modulo 6)
 //   a point set                      a header byte (1 + b % 8 points), then the points
+//   a list of parts (walls)          a header byte (1 + b % 8 parts), then each part's values
 //   a mesh                           a header byte (a soup of 1 + b % 4 triangles), then their vertices
 //   the library's hierarchy          a header byte: bits 0-2 the volume type, 3-4 the build
 //                                    strategy % 3, 5 the exact update, 6 larger-first descent

@@ -32,6 +32,7 @@ Json to_json(const Mat3& m, AsFrame) {
 Json to_json(const Mat3& m, AsRotation) {
   return Json::array({to_json(m.row(0), Plain{}), to_json(m.row(1), Plain{}), to_json(m.row(2), Plain{})});
 }
+Json to_json(const Vec2& v, Plain) { return Json::array({number_to_json(v.x), number_to_json(v.y)}); }
 Json to_json(int k, AsKdopK) { return k; }
 Json to_json(const Triangle& t, Plain) {
   return Json::array({to_json(t.v[0], Plain{}), to_json(t.v[1], Plain{}), to_json(t.v[2], Plain{})});
@@ -79,6 +80,17 @@ Json to_json(const BoxFrames& frames, Plain) {
 }
 
 template <HasFields T>
+Json to_json(const T& value, Plain);
+
+// A list of parts: an array of their objects.
+template <PartList L>
+Json to_json(const L& parts, Plain) {
+  Json a = Json::array();
+  for (const auto& part : parts) a.push_back(to_json(part, Plain{}));
+  return a;
+}
+
+template <HasFields T>
 Json to_json(const T& value, Plain) {
   Json j = Json::object();
   for_each_field<T>([&](const auto& f) {
@@ -104,6 +116,10 @@ void read(const Json& j, const std::string& p, double& x, Plain, const Context&)
 void read(const Json& j, const std::string& p, Vec3& v, Plain, const Context&) {
   if (!j.is_array() || j.size() != 3) throw FormatError(p, "expected an array of 3 numbers");
   v = {number_from_json(j[0], p + "/0"), number_from_json(j[1], p + "/1"), number_from_json(j[2], p + "/2")};
+}
+void read(const Json& j, const std::string& p, Vec2& v, Plain, const Context&) {
+  if (!j.is_array() || j.size() != 2) throw FormatError(p, "expected an array of 2 numbers");
+  v = {number_from_json(j[0], p + "/0"), number_from_json(j[1], p + "/1")};
 }
 void read(const Json& j, const std::string& p, std::vector<Vec3>& points, Plain, const Context& c) {
   if (!j.is_array()) throw FormatError(p, "expected an array of points");
@@ -267,6 +283,17 @@ void read(const Json& list, const std::string& p, BoxFrames& out, Plain, const C
       frame.emplace_back(b);
     }
   }
+}
+
+template <HasFields T>
+void read(const Json& j, const std::string& p, T& value, Plain, const Context& c);
+
+// A list of parts: each from its object in the array.
+template <PartList L>
+void read(const Json& j, const std::string& p, L& parts, Plain, const Context& c) {
+  if (!j.is_array()) throw FormatError(p, "expected an array of objects");
+  parts.clear();
+  for (std::size_t i = 0; i < j.size(); ++i) read(j[i], p + "/" + std::to_string(i), parts.emplace_back(), Plain{}, c);
 }
 
 // A part whose fields are members of the object `j` at `p` (an inline part's, of its owner's).

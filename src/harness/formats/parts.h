@@ -1,12 +1,15 @@
 // The fields of the parts query inputs are made of (see fields.h): boxes, spheres, rays, moving
-// boxes, poses and pairs of placed meshes. Their order is the order of the case file's members
-// and of the fuzz record's values.
+// boxes, poses, pairs of placed meshes, discs and walls. Their order is the order of the case
+// file's members and of the fuzz record's values. A std::vector of a part made of fields is a
+// list of parts (a maze's walls): each format handles it element by element.
 #pragma once
 
 #include <optional>
+#include <type_traits>
 #include <vector>
 
 #include "collide/aabb.h"
+#include "collide/disc_walls.h"
 #include "collide/moving_box.h"
 #include "collide/obb.h"
 #include "collide/ray_aabb.h"
@@ -37,6 +40,23 @@ template <>
 struct Fields<Sphere> {
   static constexpr auto list = std::tuple{field<&Sphere::center>("center"), field<&Sphere::radius>("radius")};
 };
+
+/// A disc in the plane: its centre (a 2-D point, a leaf: ["x", "y"]) and radius.
+template <>
+struct Fields<Disc> {
+  static constexpr auto list = std::tuple{field<&Disc::center>("center"), field<&Disc::radius>("radius")};
+};
+
+/// A wall: the segment between its ends.
+template <>
+struct Fields<Wall> {
+  static constexpr auto list = std::tuple{field<&Wall::a>("a"), field<&Wall::b>("b")};
+};
+
+/// A list of parts made of fields, such as walls.
+template <class T>
+concept PartList = requires { typename T::value_type; } && std::is_same_v<T, std::vector<typename T::value_type>> &&
+                   HasFields<typename T::value_type>;
 
 template <>
 struct Fields<Ray> {

@@ -69,7 +69,7 @@ struct Map {
   Relation relation;
   int parameter;
   bool ok = true;
-  int triangles = 0, point_sets = 0, meshes = 0;
+  int triangles = 0, point_sets = 0, meshes = 0, walls = 0, lists = 0;
 
   double length(double x) {
     if (relation != Relation::scale || x == 0 || !std::isfinite(x)) return x;
@@ -92,6 +92,20 @@ struct Map {
       default: return p;  // swapping and reordering move no coordinate
     }
   }
+  // A point of the plane z = 0: x and y swapped when the permutation puts y before x, one of them
+  // negated (flipping z leaves the plane as it is).
+  Vec2 point(const Vec2& p) {
+    switch (relation) {
+      case Relation::permute_axes: {
+        const int* perm = kPermutations[parameter];
+        const auto place = [perm](int axis) { return std::find(perm, perm + 3, axis) - perm; };
+        return place(1) < place(0) ? Vec2{p.y, p.x} : p;
+      }
+      case Relation::flip_axis: return {parameter == 0 ? -p.x : p.x, parameter == 1 ? -p.y : p.y};
+      case Relation::scale: return {length(p.x), length(p.y)};
+      default: return p;
+    }
+  }
   // A direction that does not scale (rotation columns).
   Vec3 direction(const Vec3& d) { return relation == Relation::scale ? d : point(d); }
 
@@ -109,6 +123,17 @@ struct Map {
     b = r;
   }
   void map(Sphere& s, Plain) { s = {point(s.center), length(s.radius)}; }
+  void map(Vec2& p, Plain) { p = point(p); }
+  void map(Disc& d, Plain) { d = {point(d.center), length(d.radius)}; }
+  // Reordering a wall's ends: the i-th wall's swapped when its bit of the parameter's hash is set.
+  void map(Wall& w, Plain) {
+    const auto index = static_cast<std::uint64_t>(walls++);
+    if (relation == Relation::permute_vertices) {
+      if (mix_seed(static_cast<std::uint32_t>(parameter), kSaltA + index) & 1) std::swap(w.a, w.b);
+      return;
+    }
+    w = {point(w.a), point(w.b)};
+  }
   // A ray's direction scales with it: t stays the same.
   void map(Ray& r, Plain) { r.origin = point(r.origin), r.dir = point(r.dir); }
   // A pose: the world's axes permuted permute the rows of its rotation (as its columns' points).
@@ -152,13 +177,27 @@ struct Map {
   void map(int&, AsKdopK) {}
   void map(LibraryBvh&, Plain) {}
   template <HasFields T>
-  void map(T& value, Plain) {
-    for_each_field<T>([&](const auto& f) {
-      using F = std::decay_t<decltype(f)>;
-      map(F::of(value), typename F::As{});
-    });
+  void map(T& value, Plain);
+  // A list of parts (a maze's walls): reordered as objects are (the i-th list shuffled from salt
+  // kSaltA + i), or each part mapped.
+  template <PartList L>
+  void map(L& parts, Plain) {
+    const std::uint64_t salt = kSaltA + static_cast<std::uint64_t>(lists++);
+    if (relation == Relation::permute_objects) {
+      parts = shuffled(parts, parameter, salt);
+      return;
+    }
+    for (auto& part : parts) map(part, Plain{});
   }
 };
+
+template <HasFields T>
+void Map::map(T& value, Plain) {
+  for_each_field<T>([&](const auto& f) {
+    using F = std::decay_t<decltype(f)>;
+    map(F::of(value), typename F::As{});
+  });
+}
 
 // The input with its fields named a and b exchanged.
 template <class In>
@@ -181,6 +220,7 @@ double flush(double x) {
 struct Flush {
   void map(double& x, Plain) { x = flush(x); }
   void map(Vec3& v, Plain) { v = {flush(v.x), flush(v.y), flush(v.z)}; }
+  void map(Vec2& v, Plain) { v = {flush(v.x), flush(v.y)}; }
   void map(Mat3& m, AsFrame) {
     for (Vec3& c : m.col) map(c, Plain{});
   }
@@ -202,21 +242,29 @@ struct Flush {
   void map(LibraryBvh&, Plain) {}
   void map(int&, AsKdopK) {}
   template <HasFields T>
-  void map(T& value, Plain) {
-    for_each_field<T>([&](const auto& f) {
-      using F = std::decay_t<decltype(f)>;
-      map(F::of(value), typename F::As{});
-    });
+  void map(T& value, Plain);
+  template <PartList L>
+  void map(L& parts, Plain) {
+    for (auto& part : parts) map(part, Plain{});
   }
 };
 
+template <HasFields T>
+void Flush::map(T& value, Plain) {
+  for_each_field<T>([&](const auto& f) {
+    using F = std::decay_t<decltype(f)>;
+    map(F::of(value), typename F::As{});
+  });
+}
+
 // Where the reorderings move the answer's faces and slots: the i-th mesh renames the i-th face
-// of every pair; boxes over frames rename the slots of every frame's pairs.
+// of every pair; boxes over frames rename the slots of every frame's pairs; a list of parts (the
+// first) renames the first of every pair (a wall touched is (wall, 0)).
 struct Rename {
   Answer& out;
   Relation relation;
   int parameter;
-  int meshes = 0;
+  int meshes = 0, lists = 0;
 
   static void rename(std::vector<FacePair>& pairs, const auto& map) {
     for (FacePair& p : pairs) p = map(p);
@@ -236,6 +284,16 @@ struct Rename {
     if (relation != Relation::permute_objects) return;
     const auto place = shuffle_of(frames.empty() ? 0 : frames[0].size(), parameter, kSaltA);
     for (auto& frame : out.frames) rename(frame, [&](const FacePair& p) { return std::minmax(place[p.first], place[p.second]); });
+  }
+  template <PartList L>
+  void at(const L& parts, Plain) {
+    const int index = lists++;
+    if (relation != Relation::permute_objects || index > 0) return;
+    const auto place = shuffle_of(parts.size(), parameter, kSaltA + static_cast<std::uint64_t>(index));
+    rename(out.pairs, [&](FacePair p) {
+      p.first = place[p.first];
+      return p;
+    });
   }
   template <class T, class As>
   void at(const T& value, As) {

@@ -21,13 +21,16 @@ bool relation_applies(QueryKind kind, Relation relation);
 /// The relations act on the parts of the input by their types (formats/fields.h); swapping
 /// exchanges the fields a and b. A reordering follows the parameter (any int): the i-th
 /// triangle's vertex order is one of 6 by parameter / 6^i, face f of a mesh takes parameter + f;
-/// the i-th mesh or point set, and the slots of boxes over frames, are shuffled from it; a
-/// reordered mesh is given by its triangles.
+/// the i-th mesh or point set, the slots of boxes over frames and a list of parts (walls) are
+/// shuffled from it; the i-th wall's ends are swapped by a bit of its hash; a reordered mesh is
+/// given by its triangles. In the plane of a disc and walls, permuting the axes swaps x and y
+/// when the permutation puts y before x, and flipping z changes nothing.
 std::optional<Input> transform(const Input& input, Relation relation, int parameter);
 
 /// The answer the transformed query should get, from the answer to the original query: the same,
-/// with the faces (the i-th mesh's, in the i-th place of every pair) or the slots (of every
-/// frame's pairs) renamed by the reordering, pairs sorted again.
+/// with the faces (the i-th mesh's, in the i-th place of every pair), the slots (of every
+/// frame's pairs) or the parts of a list (walls, the first of every pair) renamed by the
+/// reordering, pairs sorted again.
 Answer mapped_answer(const Answer& answer, const Input& original, Relation relation, int parameter);
 
 /// The query with every finite nonzero value outside [2^-250, 2^250] in magnitude replaced by 0:

@@ -13,6 +13,7 @@
 
 #include "harness/kinds/aabb_aabb.h"
 #include "harness/kinds/broadphase.h"
+#include "harness/kinds/disc_walls.h"
 #include "harness/kinds/kdop_kdop.h"
 #include "harness/kinds/mesh_mesh.h"
 #include "harness/kinds/mesh_mesh_first.h"
@@ -41,4 +42,5 @@
   X(mesh_mesh_first, MeshMeshFirst)   \
   X(broadphase, Broadphase)           \
   X(ray_mesh, RayMesh)                \
-  X(moving_obb, MovingObb)
+  X(moving_obb, MovingObb)            \
+  X(disc_walls, DiscWalls)

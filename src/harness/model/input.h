@@ -102,22 +102,49 @@ concept FramesOfBoxesAlone = requires(In in) {
   requires std::same_as<decltype(In::frames), BoxFrames>;
   requires std::tuple_size_v<std::remove_cvref_t<decltype(Fields<In>::list)>> == 1;
 };
+template <class In>
+concept DiscAndWallsAlone = requires(In in) {
+  requires std::same_as<decltype(In::disc), Disc>;
+  requires std::same_as<decltype(In::walls), std::vector<Wall>>;
+  requires std::tuple_size_v<std::remove_cvref_t<decltype(Fields<In>::list)>> == 2;
+};
+
+// The input of the one kind whose input type satisfies Is, made by `make` (exactly one kind's
+// does, or this does not compile).
+template <template <class> class Is, class Make>
+Input the_input_where(Make&& make) {
+  return [&make]<std::size_t... I>(std::index_sequence<I...>) {
+    static_assert((std::size_t{Is<std::variant_alternative_t<I, Input>>::value} + ...) == 1,
+                  "exactly one kind has such an input");
+    Input out;
+    (
+        [&]<class In>(std::type_identity<In>) {
+          if constexpr (Is<In>::value) out = make(std::type_identity<In>{});
+        }(std::type_identity<std::variant_alternative_t<I, Input>>{}),
+        ...);
+    return out;
+  }(std::make_index_sequence<std::variant_size_v<Input>>{});
+}
+template <class In>
+struct IsFramesOfBoxesAlone : std::bool_constant<FramesOfBoxesAlone<In>> {};
+template <class In>
+struct IsDiscAndWallsAlone : std::bool_constant<DiscAndWallsAlone<In>> {};
 }  // namespace detail
 
 /// The input of the kind asked of a set of boxes over frames (the kind whose input is the frames
 /// alone; exactly one is, or this does not compile).
 inline Input box_frames_input(BoxFrames frames) {
-  return [&frames]<std::size_t... I>(std::index_sequence<I...>) {
-    static_assert((std::size_t{detail::FramesOfBoxesAlone<std::variant_alternative_t<I, Input>>} + ...) == 1,
-                  "exactly one kind is asked of boxes over frames alone");
-    Input out;
-    (
-        [&]<class In>(std::type_identity<In>) {
-          if constexpr (detail::FramesOfBoxesAlone<In>) out = In{std::move(frames)};
-        }(std::type_identity<std::variant_alternative_t<I, Input>>{}),
-        ...);
-    return out;
-  }(std::make_index_sequence<std::variant_size_v<Input>>{});
+  return detail::the_input_where<detail::IsFramesOfBoxesAlone>([&frames]<class In>(std::type_identity<In>) {
+    return In{std::move(frames)};
+  });
+}
+
+/// The input of the kind asked of a disc against walls (the kind whose input is the disc and the
+/// walls alone; exactly one is, or this does not compile).
+inline Input disc_and_walls_input(Disc disc, std::vector<Wall> walls) {
+  return detail::the_input_where<detail::IsDiscAndWallsAlone>([&disc, &walls]<class In>(std::type_identity<In>) {
+    return In{disc, std::move(walls)};
+  });
 }
 
 }  // namespace cc::harness

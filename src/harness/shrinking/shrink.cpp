@@ -35,7 +35,8 @@ int mantissa_bits(double x) {
 
 // What the shrinker can simplify besides single values, found by a walk over the input's fields:
 // frames (a box's axes, any orthonormal frame; a pose's rotation, a proper one), point sets to
-// thin out, and, before the values, meshes and boxes over frames to cut down.
+// thin out, and, before the values, meshes, boxes over frames and lists of parts (walls) to cut
+// down.
 struct Targets {
   struct Frame {
     std::string pointer;
@@ -46,6 +47,7 @@ struct Targets {
   std::vector<std::pair<std::string, const MeshPair*>> mesh_pairs;
   std::vector<std::pair<std::string, const MeshRef*>> meshes;
   std::vector<std::pair<std::string, const BoxFrames*>> box_frames;
+  std::vector<std::pair<std::string, std::size_t>> lists;  // lists of parts (walls), with their sizes
   bool first_hit = false;  // a query for the first colliding pair
 };
 
@@ -59,6 +61,8 @@ void collect(const T& value, const std::string& pointer, Targets& out) {
     out.meshes.emplace_back(pointer, &value);
   } else if constexpr (std::is_same_v<T, BoxFrames>) {
     out.box_frames.emplace_back(pointer, &value);
+  } else if constexpr (PartList<T>) {
+    out.lists.emplace_back(pointer, value.size());
   } else if constexpr (HasFields<T>) {
     if constexpr (std::is_same_v<T, MeshPair>) out.mesh_pairs.emplace_back(pointer, &value);
     for_each_field<T>([&](const auto& f) {
@@ -199,7 +203,8 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
     return true;
   };
 
-  // Structure before values: meshes lose faces, boxes over frames boxes and frames. A mesh written
+  // Structure before values: meshes lose faces, boxes over frames boxes and frames, lists their
+  // parts (a wall touched may be renamed: the signature does not name walls). A mesh written
   // out as triangles is kept only if it is small enough to read.
   const Targets targets = targets_of(input);
   const auto written_faces = [](const Input& in) {
@@ -215,6 +220,7 @@ ShrinkResult shrink(const Input& input, const Evaluation& start, const Evaluator
   for (const auto& [pointer, pair] : targets.mesh_pairs) dropped |= shrink_faces(current, pointer, *pair, targets.first_hit, start, attempt);
   for (const auto& [pointer, frames] : targets.box_frames) dropped |= shrink_box_frames(current, pointer, *frames, attempt);
   for (const auto& [pointer, mesh] : targets.meshes) dropped |= shrink_mesh_faces(current, pointer, *mesh, attempt);
+  for (const auto& [pointer, size] : targets.lists) shrink_list(current, pointer, size, attempt);
   if (dropped && written_faces(r.input) > kMaxWrittenFaces) {
     const int attempts = r.attempts;
     const bool out_of_time = r.out_of_time;

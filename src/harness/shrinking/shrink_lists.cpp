@@ -66,6 +66,19 @@ bool shrink_box_frames(const Json& current, const std::string& pointer, const Bo
   return fewer_boxes || fewer_frames;
 }
 
+bool shrink_list(const Json& current, const std::string& pointer, std::size_t size, const Attempt& attempt) {
+  const Json::json_pointer at(pointer);
+  const Json original = current.at(at);  // the indices kept are the original list's
+  std::vector<std::size_t> parts = indices(size);
+  return drop_elements(parts, [&](const std::vector<std::size_t>& kept) {
+    Json doc = current;
+    Json list = Json::array();
+    for (std::size_t i : kept) list.push_back(original[i]);
+    doc[at] = list;
+    return doc;
+  }, attempt);
+}
+
 bool shrink_mesh_faces(const Json& current, const std::string& pointer, const MeshRef& mesh, const Attempt& attempt) {
   std::vector<std::size_t> faces = indices(mesh.mesh->size());
   return drop_elements(faces, [&](const std::vector<std::size_t>& kept) {

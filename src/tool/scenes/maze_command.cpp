@@ -1,8 +1,11 @@
 // crosscheck maze: a disc walks through a generated maze; at every position (the walk, and
 // probes touching the walls of the cells it passes) each wall is tested by both of the library's
 // methods (the disc against the wall; the centre against the wall grown by the radius) and
-// judged in exact arithmetic. A miss of a wall the disc touches, or a hit of one apart by more
-// than the library's 2^-44 of the scale, is wrong: exit 1.
+// judged as the query kind of a disc against walls judges it (found in the registry): by its
+// exact reference, each wall on its own margin, against the kind's band. A miss of a wall the
+// disc touches, or a hit of one apart by more than the band (the library's 2^-44 of the scale),
+// is wrong: exit 1.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -10,17 +13,14 @@
 #include <stdexcept>
 
 #include "collide/disc_walls.h"
-#include "tool/scenes/maze.h"
-#include "oracle/exact/exact_disc_walls.h"
+#include "harness/judging/bands.h"
+#include "oracle/exact/exact_reference.h"
 #include "tool/commands.h"
 #include "tool/flag_checks.h"
+#include "tool/scenes/maze.h"
 
 namespace cc::tool {
 namespace {
-
-// The library's contract (collide/disc_walls.h): a touch is never missed, and no wall apart by
-// more than 2^-44 of the scale is reported touched.
-constexpr double kBand = 0x1p-44;
 
 constexpr std::array kMethods{DiscWallsMethod::disc_against_walls, DiscWallsMethod::point_against_grown_walls};
 constexpr const char* kMethodNames[] = {"disc against walls", "point against grown walls"};
@@ -66,16 +66,31 @@ int run(const MazeArgs& args) {
               args.size, args.size, static_cast<unsigned long long>(args.seed), args.radius, options.origin.x,
               options.origin.y, maze.walls.size(), maze.path.size());
 
+  // The kind asked of a disc against walls: its exact reference and its band.
+  const exact::ExactRationalReference reference;
+  const harness::Band band = harness::library_band(harness::kind_of(harness::disc_and_walls_input({}, {})));
   Tally tally[2];
   std::map<std::string, long> kinds;
   long differing = 0, wrong_steps = 0;
   for (const harness::MazeStep& step : maze.steps) {
     ++kinds[harness::to_string(step.kind)];
+    // The walls near the disc, judged as one case of the kind; the others are certainly apart.
+    std::vector<Wall> near;
+    std::vector<std::uint32_t> place(maze.walls.size());  // a near wall's index in the case
+    for (std::size_t w = 0; w < maze.walls.size(); ++w) {
+      if (certainly_apart(step.disc, maze.walls[w])) continue;
+      place[w] = static_cast<std::uint32_t>(near.size());
+      near.push_back(maze.walls[w]);
+    }
+    const harness::ExactVerdict verdict = reference.judge(harness::disc_and_walls_input(step.disc, near));
     bool step_wrong = false;
     for (std::size_t w = 0; w < maze.walls.size(); ++w) {
       const Wall& wall = maze.walls[w];
       const bool apart = certainly_apart(step.disc, wall);
-      const exact::ExactDiscWall e = apart ? exact::ExactDiscWall{} : exact::exact_disc_wall(step.disc, wall);
+      const harness::FacePair pair{place[w], 0};
+      const bool touches =
+          !apart && std::binary_search(verdict.answer.pairs.begin(), verdict.answer.pairs.end(), pair);
+      const double margin = apart ? -INFINITY : verdict.margin_of(pair);
       bool says[2];
       for (int m = 0; m < 2; ++m) {
         says[m] = kMethods[m] == DiscWallsMethod::disc_against_walls
@@ -83,17 +98,17 @@ int run(const MazeArgs& args) {
                       : test_point_grown_wall(step.disc.center, step.disc.radius, wall);
         Tally& t = tally[m];
         ++t.checks;
-        t.contacts += e.touches;
-        t.touching += e.touches && e.distance2 == exact::rational(step.disc.radius) * exact::rational(step.disc.radius);
-        const bool right = apart ? !says[m] : exact::disc_wall_answer_right(e, step.disc, says[m], kBand);
+        t.contacts += touches;
+        t.touching += touches && margin == 0;
+        const bool right = says[m] == touches || harness::within_band(band, says[m], margin);
         if (!right) {
           ++t.wrong;
           step_wrong = true;
           std::printf("WRONG (%s): %s step of cell %d, disc (%.17g, %.17g) r %.17g, wall (%.17g, %.17g)-(%.17g, %.17g): says %s, exact margin %.3g\n",
                       kMethodNames[m], harness::to_string(step.kind), maze.path[static_cast<std::size_t>(step.cell)],
                       step.disc.center.x, step.disc.center.y, step.disc.radius, wall.a.x, wall.a.y, wall.b.x, wall.b.y,
-                      says[m] ? "touch" : "miss", e.margin);
-        } else if (says[m] != e.touches) {
+                      says[m] ? "touch" : "miss", margin);
+        } else if (says[m] != touches) {
           ++t.within_band;
         } else {
           ++t.right;
@@ -119,8 +134,8 @@ int run(const MazeArgs& args) {
   row("wrong", &Tally::wrong);
   std::printf("\nthe two methods answer differently on %ld wall tests (each within the band: %s)\n", differing,
               tally[0].wrong + tally[1].wrong == 0 ? "yes" : "no");
-  std::printf("every step checked: %zu positions, %ld with a wrong answer (band 2^-44 of the scale, conservative)\n",
-              maze.steps.size(), wrong_steps);
+  std::printf("every step checked: %zu positions, %ld with a wrong answer (band 2^%d of the scale, %s)\n",
+              maze.steps.size(), wrong_steps, std::ilogb(band.width), std::string(harness::to_string(band.sides)).c_str());
   return wrong_steps ? kExitFound : 0;
 }
 

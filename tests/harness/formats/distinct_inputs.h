@@ -114,6 +114,9 @@ void for_each_value(harness::Input& input, F&& f) {
           }
         } else if constexpr (std::is_same_v<T, RayMeshInput>) {
           mesh(in.mesh), ray(in.ray);
+        } else if constexpr (std::is_same_v<T, DiscWallsInput>) {
+          f(in.disc.center.x), f(in.disc.center.y), f(in.disc.radius);
+          for (Wall& w : in.walls) f(w.a.x), f(w.a.y), f(w.b.x), f(w.b.y);
         } else {
           static_assert(std::is_same_v<T, MovingObbInput>);
           obb(in.a.box), vec(in.a.velocity), obb(in.b.box), vec(in.b.velocity);
@@ -137,7 +140,7 @@ inline std::vector<std::uint64_t> value_bits(harness::Input& input) {
 
 /// Where an input may lie: anywhere a case file can say, or within what a fuzz record holds (at
 /// most 8 points per k-DOP set, soups of 1 to 4 triangles, a's pose the identity and b's rotation
-/// from the table, the default build options, at most 8 boxes and 4 frames).
+/// from the table, the default build options, at most 8 boxes and 4 frames, 1 to 8 walls).
 enum class Reach { case_file, fuzz_record };
 
 /// An input of the kind with its shape drawn (k, counts, options, which boxes are present) and
@@ -213,6 +216,7 @@ inline harness::Input distinct_input(harness::QueryKind kind, DistinctValues& va
     }
     case QueryKind::ray_mesh: in = RayMeshInput{mesh(), {}, library()}; break;
     case QueryKind::moving_obb: in = MovingObbInput{}; break;
+    case QueryKind::disc_walls: in = DiscWallsInput{{}, std::vector<Wall>(count(record ? 8 : 10))}; break;
   }
   for_each_value(in, [&](double& x) { x = values.next(); });
   if (MeshPair* m = const_cast<MeshPair*>(meshes_of(in)); m != nullptr && record) {

@@ -46,6 +46,17 @@ TEST(FuzzRecord, ValuesComeInTheDocumentedOrder) {
   EXPECT_EQ(bytes[0], static_cast<std::uint8_t>(QueryKind::sphere_sphere));
   EXPECT_EQ(bytes[8], 0x3f);  // 1.0 = 0x3ff0000000000000, most significant byte last
   EXPECT_EQ(bytes[7], 0xf0);
+  // A disc (centre, radius), then the walls: a header byte (1 + b % 8 walls), each a, b.
+  const DiscWallsInput maze{{{1, 2}, 3}, {{{4, 5}, {6, 7}}, {{8, 9}, {10, 11}}}};
+  EXPECT_EQ(record_values(maze), (std::vector<double>{1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11}));
+  const std::vector<std::uint8_t> walls = encode_record(maze);
+  ASSERT_EQ(walls.size(), 2 + 8 * 11u);
+  EXPECT_EQ(walls[0], static_cast<std::uint8_t>(QueryKind::disc_walls));
+  EXPECT_EQ(walls[1], 1);  // two walls
+  EXPECT_EQ(std::get<DiscWallsInput>(decode_record(QueryKind::disc_walls, {walls.data(), 2})).walls.size(), 2u);
+  // Nine walls and more are recorded as their first eight.
+  const DiscWallsInput many{{}, std::vector<Wall>(9, Wall{{1, 1}, {2, 2}})};
+  EXPECT_EQ(std::get<DiscWallsInput>(decode_record(QueryKind::disc_walls, encode_record(many))).walls.size(), 8u);
 }
 
 }  // namespace

@@ -53,6 +53,12 @@ TEST(InputJson, ErrorsNameThePlace) {
   expect_error(QueryKind::kdop_kdop, R"({"k": 12, "a": [], "b": []})", "/inputs/k", "k must be one of");
   expect_error(QueryKind::tri_tri, R"({"a": [["0","0","0"]], "b": []})", "/inputs/a", "expected 3 vertices");
   expect_error(QueryKind::ray_aabb, R"([1, 2])", "/inputs", "expected an object");
+  expect_error(QueryKind::disc_walls, R"({"disc": {"center": ["0"], "radius": "1"}, "walls": []})", "/inputs/disc/center",
+               "expected an array of 2 numbers");
+  expect_error(QueryKind::disc_walls, R"({"disc": {"center": [0, 0], "radius": 1}, "walls": {"a": [0, 0]}})", "/inputs/walls",
+               "expected an array of objects");
+  expect_error(QueryKind::disc_walls, R"({"disc": {"center": [0, 0], "radius": 1}, "walls": [{"a": [0, 0]}]})",
+               "/inputs/walls/0", "missing field \"b\"");
 }
 
 TEST(InputJson, AcceptsPlainJsonNumbers) {

@@ -135,6 +135,61 @@ TEST(Transform, ReorderingsMoveThingsAndTheAnswerFollows) {
   EXPECT_FALSE(transform(RayAabbInput{}, Relation::permute_vertices, 1));
 }
 
+// In the plane of a disc and walls: a permutation of the axes that puts y before x swaps them,
+// the others leave the plane as it is; flipping x or y negates it, flipping z changes nothing;
+// scaling scales the radius too.
+TEST(Transform, APlaneSwapsXAndYAndIgnoresZ) {
+  const Input in = DiscWallsInput{{{1, 2}, 0.5}, {{{3, 4}, {5, 6}}}};
+  const auto walls_of = [](const Input& i) { return std::get<DiscWallsInput>(i); };
+  for (int p : {2, 3, 5}) {  // {1, 0, 2}, {1, 2, 0}, {2, 1, 0}: y before x
+    const DiscWallsInput t = walls_of(*transform(in, Relation::permute_axes, p));
+    EXPECT_EQ(t.disc, (Disc{{2, 1}, 0.5})) << p;
+    EXPECT_EQ(t.walls[0], (Wall{{4, 3}, {6, 5}})) << p;
+  }
+  for (int p : {0, 1, 4}) EXPECT_TRUE(*transform(in, Relation::permute_axes, p) == in) << p;
+  EXPECT_EQ(walls_of(*transform(in, Relation::flip_axis, 0)).walls[0], (Wall{{-3, 4}, {-5, 6}}));
+  EXPECT_EQ(walls_of(*transform(in, Relation::flip_axis, 1)).disc, (Disc{{1, -2}, 0.5}));
+  EXPECT_TRUE(*transform(in, Relation::flip_axis, 2) == in);
+  const DiscWallsInput scaled = walls_of(*transform(in, Relation::scale, 3));
+  EXPECT_EQ(scaled.disc, (Disc{{8, 16}, 4}));
+  EXPECT_EQ(scaled.walls[0], (Wall{{24, 32}, {40, 48}}));
+  EXPECT_FALSE(transform(in, Relation::swap_shapes, 0));
+  EXPECT_FALSE(transform(in, Relation::permute_faces, 1));
+}
+
+// Walls reordered: the same walls, some moved, and a wall touched (i, 0) renamed to where it
+// went; a wall's ends swapped for some walls and not others, the walls staying where they are.
+TEST(Transform, WallsAreReorderedAndTheirEndsSwapped) {
+  DiscWallsInput in{{{0, 0}, 1}, {}};
+  for (int i = 0; i < 9; ++i) in.walls.push_back({{static_cast<double>(i), 0}, {static_cast<double>(i), 1}});
+  for (int parameter : {1, 77, 123456}) {
+    const auto moved = std::get<DiscWallsInput>(*transform(in, Relation::permute_objects, parameter));
+    EXPECT_EQ(moved.disc, in.disc);
+    int displaced = 0;
+    for (std::uint32_t i = 0; i < 9; ++i) {
+      Answer one;
+      one.pairs = {{i, 0}};
+      const FacePair to = mapped_answer(one, in, Relation::permute_objects, parameter).pairs[0];
+      EXPECT_EQ(to.second, 0u);
+      EXPECT_EQ(moved.walls[to.first], in.walls[i]);
+      displaced += to.first != i;
+    }
+    EXPECT_GT(displaced, 0);
+    const auto swapped = std::get<DiscWallsInput>(*transform(in, Relation::permute_vertices, parameter));
+    int reversed = 0;
+    for (std::size_t i = 0; i < 9; ++i) {
+      const Wall& w = swapped.walls[i];
+      EXPECT_TRUE(w == in.walls[i] || (w.a == in.walls[i].b && w.b == in.walls[i].a)) << i;
+      reversed += w != in.walls[i];
+    }
+    EXPECT_GT(reversed, 0);
+    EXPECT_LT(reversed, 9);
+    Answer all = Answer::of(true);
+    all.pairs = {{2, 0}, {5, 0}};
+    EXPECT_EQ(mapped_answer(all, in, Relation::permute_vertices, parameter), all);  // no wall renamed
+  }
+}
+
 TEST(FlushExtremes, ZeroesTinyAndHugeValuesOnly) {
   const Input in = SphereSphereInput{{{0x1p-300, 0x1p260, 3}, 5e-324}, {{-0x1p-250, 0, 0}, 1}};
   const Input flushed = flush_extremes(in);

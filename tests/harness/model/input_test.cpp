@@ -1,5 +1,5 @@
 // The inputs of every kind: which kinds ask what of two placed meshes, and which is asked of boxes
-// over frames, found in the registry.
+// over frames or of a disc against walls, found in the registry.
 #include "harness/model/input.h"
 
 #include <gtest/gtest.h>
@@ -31,6 +31,14 @@ TEST(Input, BoxesOverFramesMakeTheInputOfTheirKind) {
   EXPECT_EQ(kind_of(in), QueryKind::broadphase);
   EXPECT_EQ(std::get<BroadphaseInput>(in).frames, frames);
   EXPECT_TRUE(std::get<BroadphaseInput>(box_frames_input({})).frames.empty());
+}
+
+TEST(Input, ADiscAndWallsMakeTheInputOfTheirKind) {
+  const Disc disc{{1, 2}, 0.5};
+  const std::vector<Wall> walls = {{{0, 0}, {3, 0}}, {{1, 1}, {1, 1}}};
+  const Input in = disc_and_walls_input(disc, walls);
+  EXPECT_EQ(kind_of(in), QueryKind::disc_walls);
+  EXPECT_TRUE((in == Input{DiscWallsInput{disc, walls}}));
 }
 
 }  // namespace

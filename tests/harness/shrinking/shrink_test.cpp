@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "harness/generation/generate.h"
 #include "harness/judging/evaluate.h"
 #include "harness/formats/input_json.h"
@@ -132,6 +134,25 @@ TEST(Shrink, KeepsEveryPartOfTheSignature) {
 TEST(Shrink, RespectsTheAttemptBudget) {
   const Input start = SphereSphereInput{{{0.1234567, -7.5e3, 3.3}, 0.9876}, {{11.11, 0.2, 9.87e5}, 0.33}};
   EXPECT_LE(shrink(start, planted(start), planted, 5).attempts, 5);
+}
+
+// A planted disagreement on walls: a "second opinion" that is wrong whenever a wall starts at
+// x = 7. The shrinker keeps that wall alone, and its x.
+Evaluation planted_walls(const Input& in) {
+  Evaluation e = base_evaluation();
+  const auto& walls = std::get<DiscWallsInput>(in).walls;
+  if (std::none_of(walls.begin(), walls.end(), [](const Wall& w) { return w.a.x == 7; })) e.verdict.cls = CaseClass::agree;
+  return e;
+}
+
+TEST(Shrink, ListsOfWallsLoseTheWallsThatDoNotMatter) {
+  DiscWallsInput start{{{0.3, 0.7}, 0.1}, {}};
+  for (int i = 0; i < 11; ++i) start.walls.push_back({{i == 6 ? 7.0 : 0.1 * i, 1.5}, {2.5, 0.1 * i}});
+  const ShrinkResult r = shrink(start, base_evaluation(), planted_walls);
+  const auto& walls = std::get<DiscWallsInput>(r.input).walls;
+  ASSERT_EQ(walls.size(), 1u);
+  EXPECT_EQ(walls[0].a.x, 7);
+  EXPECT_EQ(complex_values(r.input), 0);
 }
 
 // A planted mesh disagreement: a "second opinion" that lists the exact pairs except those whose

@@ -60,7 +60,7 @@ TEST(ExactAudit, AnswersTheKindsMadeOfTwoShapesItExpresses) {
     EXPECT_TRUE(answers(kind)) << name(kind);
   }
   for (QueryKind kind : {QueryKind::mesh_mesh, QueryKind::mesh_mesh_first, QueryKind::broadphase,
-                         QueryKind::moving_obb}) {
+                         QueryKind::moving_obb, QueryKind::disc_walls}) {
     EXPECT_FALSE(answers(kind)) << name(kind);
     EXPECT_FALSE(cgal_answer(with_kind(kind, []<class In>() { return Input(In{}); })).has_value()) << name(kind);
   }
