@@ -7,9 +7,13 @@
 // made of pieces meet iff some pair of their pieces does. A k-DOP's slab is the least and the
 // greatest scalar product (FT) of its direction with the set's points. A ray meets a mesh where
 // its parts meet a face's pieces: CGAL constructs each intersection (a point or a segment) and
-// the first t is the least parameter of their points, bracketed by doubles at the end.
+// the first t is the least parameter of their points, bracketed by doubles at the end. A disc
+// meets a wall where CGAL's squared distance from its centre (Point_2) to the wall (Segment_2 or
+// Point_2) is at most the squared radius.
 #include "oracle/cgal/cgal_audit.h"
 
+#include <CGAL/Distance_2/Point_2_Point_2.h>
+#include <CGAL/Distance_2/Point_2_Segment_2.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Intersections_3/Iso_cuboid_3_Iso_cuboid_3.h>
 #include <CGAL/Intersections_3/Iso_cuboid_3_Point_3.h>
@@ -317,6 +321,24 @@ CgalAnswer cgal_answer(const Ray& ray, const harness::MeshRef& mesh_ref, const h
   answer.hit = !faces.empty();
   answer.faces = std::move(faces);
   if (answer.hit) answer.first_t = origin_alone ? Bracket{ray.tmin, ray.tmin} : bracket(*first);
+  return answer;
+}
+
+CgalAnswer cgal_answer(const Disc& disc, const std::vector<Wall>& walls) {
+  require(std::isfinite(disc.center.x) && std::isfinite(disc.center.y) && std::isfinite(disc.radius), "a coordinate is NaN or infinite");
+  require(disc.radius >= 0, "negative radius");
+  const K::Point_2 centre(disc.center.x, disc.center.y);
+  const FT reach2 = FT(disc.radius) * FT(disc.radius);
+  std::vector<std::uint32_t> touched;
+  for (std::uint32_t i = 0; i < walls.size(); ++i) {
+    const Wall& w = walls[i];
+    if (!std::isfinite(w.a.x) || !std::isfinite(w.a.y) || !std::isfinite(w.b.x) || !std::isfinite(w.b.y)) continue;
+    const K::Point_2 a(w.a.x, w.a.y), b(w.b.x, w.b.y);
+    const FT distance2 = a == b ? CGAL::squared_distance(centre, a) : CGAL::squared_distance(centre, K::Segment_2(a, b));
+    if (distance2 <= reach2) touched.push_back(i);
+  }
+  CgalAnswer answer = hit_or_miss(!touched.empty());
+  answer.faces = std::move(touched);
   return answer;
 }
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "collide/aabb.h"
+#include "collide/disc_walls.h"
 #include "collide/obb.h"
 #include "collide/ray_aabb.h"
 #include "collide/sphere.h"
@@ -40,7 +41,8 @@ struct CgalAnswer {
   /// Two k-DOPs: the sign of each slab's overlap min(a_hi, b_hi) - max(a_lo, b_lo), in the order
   /// of kdop_directions(k) (> 0 overlapping, 0 touching, < 0 apart).
   std::vector<int> slab_signs;
-  /// A ray against a mesh: the faces the ray meets, ascending.
+  /// A ray against a mesh: the faces the ray meets, ascending; a disc against walls: the walls
+  /// it touches, ascending.
   std::optional<std::vector<std::uint32_t>> faces;
   /// A ray against a mesh, a hit: the first parameter t at which the ray meets the mesh (exact in FT, then
   /// bracketed).
@@ -78,5 +80,10 @@ CgalAnswer cgal_answer(int k, const std::vector<Vec3>& a, const std::vector<Vec3
 /// the origin alone, t = tmin (which may be -inf). The mesh must be valid (mesh_problem). The
 /// hierarchy the library is asked to use does not change the answer.
 CgalAnswer cgal_answer(const Ray& ray, const harness::MeshRef& mesh, const harness::LibraryBvh& library);
+/// The disc against each wall in the plane: the squared distance from its centre (Point_2) to
+/// the wall (Segment_2, or Point_2 when its ends are equal) against the squared radius; the walls
+/// touched in `faces`. A wall with a NaN or infinite end is never touched (the kind's contract).
+/// The disc must be finite with a radius >= 0.
+CgalAnswer cgal_answer(const Disc& disc, const std::vector<Wall>& walls);
 
 }  // namespace cc::cgal

@@ -305,6 +305,19 @@ TEST(CgalRayMesh, ATinyDirectionGivesAFirstTFarOut) {
   EXPECT_EQ(beyond.first_t->up, kInf);
 }
 
+TEST(CgalDiscWalls, TouchingASideOrAnEndIsAHitOneUlpApartAMiss) {
+  const std::vector<Wall> walls{{{0, 0}, {4, 0}}, {{5, 0}, {5, 0}}, {{NAN, 0}, {2, 0.5}}};
+  EXPECT_EQ(cgal_answer(Disc{{2, 0.5}, 0.5}, walls).faces, (std::vector<std::uint32_t>{0}));  // the side
+  EXPECT_EQ(cgal_answer(Disc{{2, std::nextafter(0.5, 1.0)}, 0.5}, walls).faces, std::vector<std::uint32_t>{});
+  // 3-4-5 from the end (4, 0): (4 + 3/16, 4/16) is 5/16 from it (and farther from the
+  // pillar (5, 0)); midway between the end and the pillar, 0.5 from each.
+  EXPECT_EQ(cgal_answer(Disc{{4.1875, 0.25}, 0.3125}, walls).faces, (std::vector<std::uint32_t>{0}));
+  EXPECT_EQ(cgal_answer(Disc{{4.1875, std::nextafter(0.25, 1.0)}, 0.3125}, walls).faces, std::vector<std::uint32_t>{});
+  EXPECT_EQ(cgal_answer(Disc{{4.5, 0}, 0.5}, walls).faces, (std::vector<std::uint32_t>{0, 1}));
+  EXPECT_EQ(cgal_answer(Disc{{5, 0}, 0}, walls).faces, (std::vector<std::uint32_t>{1}));  // a point on the pillar
+  EXPECT_FALSE(cgal_answer(Disc{{2, 0.5}, 0.5}, {{{NAN, 0}, {2, 0.5}}}).hit);             // a NaN end: never
+}
+
 TEST(CgalAnswer, InputsOutOfContractAreRefused) {
   EXPECT_THROW(answer(ray_on_mesh({{0, 0, 0}, {NAN, 0, 1}, 0, kInf})), std::invalid_argument);
   harness::RayMeshInput bad_face = ray_on_mesh({{1, 1, 0}, {0, 0, 1}, 0, kInf});
@@ -316,6 +329,8 @@ TEST(CgalAnswer, InputsOutOfContractAreRefused) {
   EXPECT_THROW(cgal_answer(18, kTetrahedron, {{0, NAN, 0}}), std::invalid_argument);
   EXPECT_THROW(cgal_answer(Sphere{{NAN, 0, 0}, 1}, Sphere{{0, 0, 0}, 1}), std::invalid_argument);
   EXPECT_THROW(cgal_answer(Sphere{{0, 0, 0}, -1}, Sphere{{0, 0, 0}, 1}), std::invalid_argument);
+  EXPECT_THROW(cgal_answer(Disc{{0, 0}, -1}, {{{0, 0}, {1, 0}}}), std::invalid_argument);
+  EXPECT_THROW(cgal_answer(Disc{{INFINITY, 0}, 1}, {{{0, 0}, {1, 0}}}), std::invalid_argument);
   EXPECT_THROW(cgal_answer(Aabb{{1, 0, 0}, {0, 1, 1}}, unit_box()), std::invalid_argument);
   EXPECT_THROW(cgal_answer(Ray{{0, 0, 0}, {1, 0, 0}, kInf, kInf}, unit_box()), std::invalid_argument);
   EXPECT_THROW(cgal_answer(obb({0, 0, 0}, {1, 1, 1}, Mat3::from_columns({1, 0, 0}, {1, 0, 0}, {0, 0, 1})),

@@ -56,11 +56,11 @@ RayMeshInput ray_on_two_faces(Ray ray) {
 TEST(ExactAudit, AnswersTheKindsMadeOfTwoShapesItExpresses) {
   for (QueryKind kind : {QueryKind::ray_aabb, QueryKind::sphere_sphere, QueryKind::aabb_aabb, QueryKind::tri_aabb,
                          QueryKind::tri_obb, QueryKind::tri_tri, QueryKind::obb_obb, QueryKind::kdop_kdop,
-                         QueryKind::ray_mesh}) {
+                         QueryKind::ray_mesh, QueryKind::disc_walls}) {
     EXPECT_TRUE(answers(kind)) << name(kind);
   }
   for (QueryKind kind : {QueryKind::mesh_mesh, QueryKind::mesh_mesh_first, QueryKind::broadphase,
-                         QueryKind::moving_obb, QueryKind::disc_walls}) {
+                         QueryKind::moving_obb}) {
     EXPECT_FALSE(answers(kind)) << name(kind);
     EXPECT_FALSE(cgal_answer(with_kind(kind, []<class In>() { return Input(In{}); })).has_value()) << name(kind);
   }
@@ -148,6 +148,22 @@ TEST(ExactAudit, ARayFirstTOneUlpOffOrAFaceLeftOutIsADisagreement) {
     EXPECT_FALSE(a.why.empty());
   }
   EXPECT_NE(audit_case(in, one_face).why.find("faces"), std::string::npos);
+}
+
+TEST(ExactAudit, ADiscAgainstWallsAgreesWallByWall) {
+  const exact::ExactRationalReference reference;
+  // Touching the side of wall 0 exactly, 3-4-5 from the end of wall 1 exactly, apart from the
+  // pillar 2; wall 3 has a NaN end (never touched).
+  const DiscWallsInput in{{{2, 0.3125}, 0.3125},
+                          {{{0, 0}, {4, 0}}, {{2.1875, 0.5625}, {9, 9}}, {{5, 5}, {5, 5}}, {{NAN, 0}, {2, 0.3125}}}};
+  const Audit a = audit_case(in, reference);
+  EXPECT_EQ(a.outcome, AuditOutcome::agree) << a.why;
+  EXPECT_TRUE(a.touching());
+  EXPECT_EQ(a.cgal.faces, (std::vector<std::uint32_t>{0, 1}));
+  const AlteredReference one_wall([](ExactVerdict& v) { v.answer.pairs.pop_back(); });
+  const Audit b = audit_case(in, one_wall);
+  EXPECT_EQ(b.outcome, AuditOutcome::disagree);
+  EXPECT_NE(b.why.find("faces"), std::string::npos) << b.why;
 }
 
 TEST(ExactAudit, AKindCgalDoesNotAnswerIsRefused) {
