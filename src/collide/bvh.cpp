@@ -5,6 +5,7 @@
 
 #include "collide/bvh_topology.h"
 #include "collide/convex_hull.h"
+#include "collide/large_arrays.h"
 
 namespace cc {
 
@@ -44,6 +45,7 @@ std::array<Vec3, 3> face_points(const Mesh& mesh, std::uint32_t face) { return m
 Topology layout(const LinkedTree& tree) {
   Topology t;
   if (tree.root < 0) return t;
+  reserve_large(t.nodes, tree.nodes.size());
   struct Pending {
     std::int32_t linked;  // node of the linked tree
     std::int32_t parent;  // its parent in t, -1 for the root
@@ -99,9 +101,11 @@ template <class BV>
 Bvh<BV> lay_out(const Mesh& mesh, detail::Topology t) {
   Bvh<BV> bvh;
   bvh.order = std::move(t.order);
-  bvh.vertices = mesh.vertices;
-  bvh.faces.reserve(bvh.order.size());
+  reserve_large(bvh.vertices, mesh.vertices.size());
+  bvh.vertices.assign(mesh.vertices.begin(), mesh.vertices.end());
+  reserve_large(bvh.faces, bvh.order.size());
   for (std::uint32_t f : bvh.order) bvh.faces.push_back(mesh.faces[f]);
+  reserve_large(bvh.nodes, t.nodes.size());
   bvh.nodes.resize(t.nodes.size());
   for (std::size_t i = 0; i < t.nodes.size(); ++i) {
     BvhNode<BV>& n = bvh.nodes[i];

@@ -10,6 +10,7 @@
 #include <span>
 
 #include "collide/bvh_topology.h"
+#include "collide/large_arrays.h"
 
 namespace cc::detail {
 namespace {
@@ -43,7 +44,7 @@ template <class BV>
 class TopDownImpl {
  public:
   TopDownImpl(const Mesh& mesh, const BuildOptions& options) : mesh_(mesh), options_(options) {
-    items_.reserve(mesh.size());
+    reserve_large(items_, mesh.size());
     for (std::uint32_t f = 0; f < mesh.size(); ++f) {
       const Triangle t = mesh.triangle(f);
       items_.push_back({(1.0 / 3) * (t.v[0] + t.v[1] + t.v[2]), f});
@@ -54,6 +55,7 @@ class TopDownImpl {
   // made next.
   Topology build() {
     Topology t;
+    reserve_large(t.nodes, 2 * items_.size());  // every split leaves both parts non-empty: at most 2n - 1 nodes
     struct Pending {
       std::uint32_t first, count;
       std::int32_t parent;
