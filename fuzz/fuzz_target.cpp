@@ -9,7 +9,7 @@
 #include "harness/formats/fuzz_record.h"
 #include "harness/formats/input_json.h"
 #include "oracle/exact/exact_reference.h"
-#include "oracle/fcl/fcl_oracle.h"
+#include "oracle/peers/peer_opinions.h"
 
 namespace cc::fuzz {
 namespace {
@@ -39,7 +39,7 @@ void keep(QueryKind kind, CaseClass cls, const std::uint8_t* data, std::size_t s
 
 int test_one_input(QueryKind kind, const std::uint8_t* data, std::size_t size) {
   static const exact::ExactRationalReference exact;
-  static const fcl_oracle::FclSecondOpinion second;
+  static const peers::PeerOpinions second;
   const Input input = decode_record(kind, {data, size});
   const Evaluation e = evaluate(input, exact, &second);
   switch (e.verdict.cls) {

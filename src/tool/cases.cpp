@@ -9,7 +9,7 @@
 #include "harness/model/library.h"
 #include "harness/formats/number_text.h"
 #include "oracle/exact/exact_reference.h"
-#include "oracle/fcl/fcl_oracle.h"
+#include "oracle/peers/peer_opinions.h"
 
 namespace cc::tool {
 
@@ -22,17 +22,17 @@ const exact::ExactRationalReference& exact_reference() {
   return reference;
 }
 
-const fcl_oracle::FclSecondOpinion& fcl_opinions() {
-  static const fcl_oracle::FclSecondOpinion opinions;
+const peers::PeerOpinions& peer_opinions() {
+  static const peers::PeerOpinions opinions;
   return opinions;
 }
 
 }  // namespace
 
-Evaluation evaluate_with_oracles(const Input& input) { return evaluate(input, exact_reference(), &fcl_opinions()); }
+Evaluation evaluate_with_oracles(const Input& input) { return evaluate(input, exact_reference(), &peer_opinions()); }
 
 Evaluation evaluate_surviving_crashes(const Input& input) {
-  if (auto e = evaluate_in_child(input, exact_reference(), fcl_opinions())) return *e;
+  if (auto e = evaluate_in_child(input, exact_reference(), peer_opinions())) return *e;
   Evaluation e;
   e.verdict.cls = CaseClass::oracle_crash;
   e.verdict.parties = {{"library", Standing::not_applicable, "an oracle crashed on this input (in a child process)"}};

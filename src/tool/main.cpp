@@ -5,6 +5,7 @@
 #include <exception>
 #include <iostream>
 
+#include "oracle/bullet/bullet_oracle.h"
 #include "oracle/fcl/fcl_oracle.h"
 #include "tool/commands.h"
 #include "tool/flag_checks.h"
@@ -31,7 +32,8 @@ int main(int argc, char** argv) {
   CLI::App app{"crosscheck: the collision library checked against FCL/libccd and exact rational arithmetic"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("crosscheck ") + CROSSCHECK_VERSION + " (commit " + CROSSCHECK_COMMIT +
-                                        "), FCL " + std::string(cc::fcl_oracle::fcl_version()));
+                                        "), FCL " + std::string(cc::fcl_oracle::fcl_version()) +
+                                        ", Bullet " + std::string(cc::bullet_oracle::bullet_version()));
   app.footer("Query kinds: " + cc::tool::query_kind_names() +
              "\nExit status: 0 done, 1 an impl_bug found (or a replayed case changed), 2 bad input.");
   int exit_code = 0;

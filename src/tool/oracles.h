@@ -1,4 +1,5 @@
-// The oracles the tool wires into the harness: the exact rational reference and FCL/libccd.
+// The oracles the tool wires into the harness: the exact rational reference and the peers
+// (FCL/libccd and Bullet).
 #pragma once
 
 #include "harness/processes/campaign.h"

@@ -1,0 +1,19 @@
+#include "oracle/peers/peer_opinions.h"
+
+namespace cc::peers {
+
+std::vector<harness::Opinion> PeerOpinions::opinions(const harness::Input& input) const {
+  std::vector<harness::Opinion> out = fcl_.opinions(input);
+  for (harness::Opinion& o : bullet_.opinions(input)) out.push_back(std::move(o));
+  return out;
+}
+
+std::vector<harness::PartyBand> PeerOpinions::parties(harness::QueryKind kind) const {
+  std::vector<harness::PartyBand> out = fcl_.parties(kind);
+  for (harness::PartyBand& p : bullet_.parties(kind)) out.push_back(std::move(p));
+  return out;
+}
+
+int PeerOpinions::abandoned_calls() const { return fcl_.abandoned_calls() + bullet_.abandoned_calls(); }
+
+}  // namespace cc::peers

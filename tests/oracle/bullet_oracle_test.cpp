@@ -1,0 +1,81 @@
+// The Bullet adapters: plain cases, touching, the ranges btRayAabb is asked of, and the two ways
+// its callers' stand-in for 1/0 (BT_LARGE_FLOAT, 1e30) makes btRayAabb2 wrong.
+#include "oracle/bullet/bullet_oracle.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <map>
+#include <string>
+
+namespace cc::bullet_oracle {
+namespace {
+
+using harness::Opinion;
+
+const Aabb kUnit{{0, 0, 0}, {1, 1, 1}};
+
+// Each party's opinion by name.
+std::map<std::string, Opinion> ask(const harness::Input& input) {
+  std::map<std::string, Opinion> out;
+  for (Opinion& o : BulletSecondOpinion().opinions(input)) out[o.party] = o;
+  return out;
+}
+
+bool hit(const Opinion& o) {
+  EXPECT_EQ(o.status, Opinion::Status::answered) << o.party << ": " << o.detail;
+  return o.answer.hit;
+}
+
+TEST(BulletSecondOpinion, BoxesOverlapWhenTheyTouch) {
+  EXPECT_TRUE(hit(ask(harness::AabbAabbInput{kUnit, {{1, 0, 0}, {2, 1, 1}}}).at("bullet.TestAabbAgainstAabb2")));
+  EXPECT_FALSE(hit(ask(harness::AabbAabbInput{kUnit, {{std::nextafter(1.0, 2.0), 0, 0}, {2, 1, 1}}})
+                       .at("bullet.TestAabbAgainstAabb2")));
+}
+
+TEST(BulletSecondOpinion, RaysThroughAndBesideABox) {
+  for (const auto& [name, o] : ask(harness::RayAabbInput{{{-1, 0.5, 0.5}, {1, 0, 0}, 0, 3}, kUnit})) EXPECT_TRUE(hit(o)) << name;
+  for (const auto& [name, o] : ask(harness::RayAabbInput{{{-1, 2.5, 0.5}, {1, 0, 0}, 0, 3}, kUnit})) EXPECT_FALSE(hit(o)) << name;
+}
+
+TEST(BulletSecondOpinion, TheSlabTestsRangeIsOpenTheSegmentTestsClosed) {
+  // The segment from x = -1 ending on the face x = 0: touching at t = tmax = 1.
+  const auto opinions = ask(harness::RayAabbInput{{{-1, 0.5, 0.5}, {1, 0, 0}, 0, 1}, kUnit});
+  EXPECT_FALSE(hit(opinions.at("bullet.btRayAabb2")));
+  EXPECT_TRUE(hit(opinions.at("bullet.btRayAabb")));
+}
+
+TEST(BulletSecondOpinion, TheSegmentTestIsAskedOfShortSegmentsOnly) {
+  const auto infinite = ask(harness::RayAabbInput{{{-1, 0.5, 0.5}, {1, 0, 0}, 0, INFINITY}, kUnit});
+  EXPECT_EQ(infinite.at("bullet.btRayAabb").status, Opinion::Status::not_applicable);
+  EXPECT_TRUE(hit(infinite.at("bullet.btRayAabb2")));
+  const auto far = ask(harness::RayAabbInput{{{-1, 0.5, 0.5}, {1, 0, 0}, 0, 100}, kUnit});  // ends 99 scales away
+  EXPECT_EQ(far.at("bullet.btRayAabb").status, Opinion::Status::not_applicable);
+}
+
+TEST(BulletSecondOpinion, TheStandInForOneOverZeroCapsHitsAt1e30AndMovesPoints) {
+  // Parallel to x (inside its slab), entering the box at t = 3.57e165: Bullet misses it.
+  EXPECT_FALSE(hit(ask(harness::RayAabbInput{{{1, -62, -32}, {0, 1.7365302730352168e-164, 8.682651365176084e-165}, 0, INFINITY},
+                                              {{0, 0, -1}, {2, 1, 0}}})
+                       .at("bullet.btRayAabb2")));
+  // A point below the box, with tmax = inf: Bullet's point moves at speed 1e-30 and reaches it.
+  EXPECT_TRUE(hit(ask(harness::RayAabbInput{{{0, 0, 0}, {0, 0, 0}, 0, INFINITY}, {{0, 0, 1}, {1, 1, 1}}})
+                      .at("bullet.btRayAabb2")));
+}
+
+TEST(BulletSecondOpinion, PartiesMatchTheOpinionsOfEveryKind) {
+  const BulletSecondOpinion bullet;
+  for (harness::QueryKind kind : harness::kAllQueryKinds) {
+    const auto opinions = bullet.opinions(harness::with_kind(kind, []<class In>() { return harness::Input(In{}); }));
+    const auto parties = bullet.parties(kind);
+    ASSERT_EQ(opinions.size(), parties.size()) << name(kind);
+    for (std::size_t i = 0; i < parties.size(); ++i) EXPECT_EQ(opinions[i].party, parties[i].party);
+  }
+  EXPECT_EQ(bullet.parties(harness::QueryKind::ray_aabb).size(), 2u);
+  EXPECT_EQ(bullet.parties(harness::QueryKind::aabb_aabb).size(), 1u);
+}
+
+TEST(BulletSecondOpinion, ItsVersionIsTheHeadersOne) { EXPECT_EQ(bullet_version(), "3.24"); }
+
+}  // namespace
+}  // namespace cc::bullet_oracle
