@@ -5,6 +5,7 @@
 #include <fcl/math/bv/OBB.h>
 
 #include "collide/obb.h"
+#include "collide/proper_frame.h"
 
 namespace cc::fcl_oracle {
 
@@ -16,15 +17,6 @@ inline fcl::Matrix3d to_fcl(const Mat3& m) {
     for (int j = 0; j < 3; ++j) r(i, j) = m(i, j);
   }
   return r;
-}
-
-/// The same box frame as a proper rotation: a box is symmetric, so negating one axis of a
-/// mirror-image frame (det < 0) leaves the box unchanged. FCL passes rotations to libccd as
-/// quaternions, which cannot represent a reflection.
-inline Mat3 proper_frame(const Mat3& axes) {
-  const double det = dot(axes.col[0], cross(axes.col[1], axes.col[2]));
-  if (!(det < 0)) return axes;
-  return Mat3::from_columns(axes.col[0], axes.col[1], -axes.col[2]);
 }
 
 /// The rigid transform x -> axes x + center of a box (FCL's default Transform3d is

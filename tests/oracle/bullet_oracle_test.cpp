@@ -1,5 +1,6 @@
-// The Bullet adapters: plain cases, touching, the ranges btRayAabb is asked of, and the two ways
-// its callers' stand-in for 1/0 (BT_LARGE_FLOAT, 1e30) makes btRayAabb2 wrong.
+// The Bullet adapters: plain cases, touching, the ranges btRayAabb is asked of, the two ways its
+// callers' stand-in for 1/0 (BT_LARGE_FLOAT, 1e30) makes btRayAabb2 wrong, spheres whose
+// difference's square underflows, boxes turned and mirrored.
 #include "oracle/bullet/bullet_oracle.h"
 
 #include <gtest/gtest.h>
@@ -63,6 +64,28 @@ TEST(BulletSecondOpinion, TheStandInForOneOverZeroCapsHitsAt1e30AndMovesPoints) 
                       .at("bullet.btRayAabb2")));
 }
 
+TEST(BulletSecondOpinion, SpheresTouchingMeetAndASquareThatUnderflowsMeetsTooSoon) {
+  const auto says = [](const harness::SphereSphereInput& in) { return hit(ask(in).at("bullet.btSphereSphereCollisionAlgorithm")); };
+  EXPECT_TRUE(says({{{0, 0, 0}, 1}, {{2, 0, 0}, 1}}));  // touching
+  EXPECT_FALSE(says({{{0, 0, 0}, 1}, {{std::nextafter(2.0, 3.0), 0, 0}, 1}}));
+  // Apart by 1e-170 with radii 1e-171: the difference's square underflows to 0, a contact.
+  EXPECT_TRUE(says({{{0, 0, 0}, 1e-171}, {{1e-170, 0, 0}, 1e-171}}));
+}
+
+TEST(BulletSecondOpinion, BoxesFaceToFaceAndTurned) {
+  const auto says = [](const harness::ObbObbInput& in) { return hit(ask(in).at("bullet.btBoxBoxDetector")); };
+  const Obb a{{0, 0, 0}, {1, 1, 1}, Mat3::identity()};
+  EXPECT_TRUE(says({a, {{2, 0, 0}, {1, 1, 1}, Mat3::identity()}}));  // sharing the face x = 1
+  EXPECT_TRUE(says({a, {{1.5, 0.5, 0}, {1, 1, 1}, Mat3::identity()}}));
+  EXPECT_FALSE(says({a, {{2.01, 0, 0}, {1, 1, 1}, Mat3::identity()}}));
+  const double c = std::sqrt(0.5);
+  const Mat3 turned = Mat3::from_columns({c, c, 0}, {-c, c, 0}, {0, 0, 1});  // 45 degrees about z
+  EXPECT_TRUE(says({a, {{2.3, 0, 0}, {1, 1, 1}, turned}}));   // its corner reaches x = 2.3 - sqrt 2
+  EXPECT_FALSE(says({a, {{2.5, 0, 0}, {1, 1, 1}, turned}}));  // x = 2.5 - sqrt 2 > 1
+  const Mat3 mirror = Mat3::from_columns({0, 1, 0}, {1, 0, 0}, {0, 0, 1});
+  EXPECT_TRUE(says({a, {{1.5, 0.5, 0}, {1, 1, 1}, mirror}}));  // a mirror-image frame, the same box
+}
+
 TEST(BulletSecondOpinion, PartiesMatchTheOpinionsOfEveryKind) {
   const BulletSecondOpinion bullet;
   for (harness::QueryKind kind : harness::kAllQueryKinds) {
@@ -73,6 +96,8 @@ TEST(BulletSecondOpinion, PartiesMatchTheOpinionsOfEveryKind) {
   }
   EXPECT_EQ(bullet.parties(harness::QueryKind::ray_aabb).size(), 2u);
   EXPECT_EQ(bullet.parties(harness::QueryKind::aabb_aabb).size(), 1u);
+  EXPECT_EQ(bullet.parties(harness::QueryKind::sphere_sphere).size(), 1u);
+  EXPECT_EQ(bullet.parties(harness::QueryKind::obb_obb).size(), 1u);
 }
 
 TEST(BulletSecondOpinion, ItsVersionIsTheHeadersOne) { EXPECT_EQ(bullet_version(), "3.24"); }

@@ -1,14 +1,69 @@
-// sphere_sphere's second opinions from Bullet: none wired yet. The counterpart is
-// btSphereSphereCollisionAlgorithm (the distance of the centres, a square root, against the sum of
-// the radii), reached through a collision world and its dispatcher; its band is to be read from
-// that code first.
+// sphere_sphere's second opinion from Bullet: btSphereSphereCollisionAlgorithm, the algorithm its
+// default collision configuration gives two btSphereShapes, run by btCollisionWorld::contactPairTest
+// (the two objects are not added to the world, nor paired by it). It reports a contact
+// unless len > r_a + r_b, len the square root of the rounded squares of the rounded difference of
+// the centres: within about 4u of the distance, and the sum of the radii within u, so a
+// misjudged case lies within 5u of (len + r_a + r_b), at most 2^-47 of the scale (the centres'
+// distance reaching 2 sqrt 3 scales); a difference whose squares underflow reads as 0 and is
+// beyond any band, a defect of Bullet's.
+#include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
+#include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
+#include <BulletCollision/CollisionDispatch/btCollisionWorld.h>
+#include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
+#include <BulletCollision/CollisionShapes/btSphereShape.h>
+
 #include "oracle/bullet/parties.h"
 
 namespace cc::bullet_oracle {
+namespace {
+
+// A collision world, made once per process: the configuration's algorithms and the dispatcher
+// that finds them.
+struct World {
+  btDefaultCollisionConfiguration configuration;
+  btCollisionDispatcher dispatcher{&configuration};
+  btDbvtBroadphase pairs;  // a world needs one; contactPairTest does not use it
+  btCollisionWorld world{&dispatcher, &pairs, &configuration};
+};
+
+btCollisionWorld& world() {
+  static World w;
+  return w.world;
+}
+
+struct AnyContact final : btCollisionWorld::ContactResultCallback {
+  bool any = false;
+  btScalar addSingleResult(btManifoldPoint&, const btCollisionObjectWrapper*, int, int, const btCollisionObjectWrapper*,
+                           int, int) override {
+    any = true;
+    return 0;
+  }
+};
+
+Opinion spheres(const harness::SphereSphereInput& in) {
+  btSphereShape shape_a(in.a.radius), shape_b(in.b.radius);
+  btCollisionObject a, b;
+  a.setCollisionShape(&shape_a), b.setCollisionShape(&shape_b);
+  btTransform place;
+  place.setIdentity();
+  place.setOrigin({in.a.center.x, in.a.center.y, in.a.center.z});
+  a.setWorldTransform(place);
+  place.setOrigin({in.b.center.x, in.b.center.y, in.b.center.z});
+  b.setWorldTransform(place);
+  AnyContact contact;
+  world().contactPairTest(&a, &b, contact);
+  return answered(contact.any);
+}
+
+}  // namespace
 
 template <>
 const std::vector<Party<harness::SphereSphereInput>>& bullet_parties() {
-  static const std::vector<Party<harness::SphereSphereInput>> parties;
+  static const std::vector<Party<harness::SphereSphereInput>> parties = {
+      {"bullet.btSphereSphereCollisionAlgorithm",
+       {0x1p-47, BandSides::two_sided, 0,
+        "the centres' distance as a square root of rounded squares (4u) against the rounded sum of the radii (u)"},
+       spheres}};
   return parties;
 }
 
