@@ -1,5 +1,6 @@
 # ctest's `library.installed_package_consumer`: installs the library alone from BUILD_DIR
-# (`cmake --install --component collide`) into WORK/prefix, checks that the package names
+# (`cmake --install --component collide`) into WORK/prefix, checks that it holds the library's
+# headers, archive and package files and the subject interface (crosscheck/subject.h), that the package names
 # nothing of FCL, libccd, GMP or the harness, then configures, builds and runs the consumer
 # project (this folder) against it. Arguments: -DBUILD_DIR=... -DWORK=... -DSOURCE=...
 foreach(var BUILD_DIR WORK SOURCE)
@@ -20,10 +21,13 @@ endfunction()
 run(${CMAKE_COMMAND} --install ${BUILD_DIR} --component collide --prefix ${WORK}/prefix)
 file(GLOB_RECURSE installed RELATIVE ${WORK}/prefix ${WORK}/prefix/*)
 foreach(f ${installed})
-  if(NOT f MATCHES "^include/crosscheck/collide/[a-z0-9_]+\\.h$|^lib[0-9]*/(x86_64-linux-gnu/)?(libcrosscheck_collide\\.a|cmake/crosscheck/crosscheck[A-Za-z-]*\\.cmake)$")
+  if(NOT f MATCHES "^include/crosscheck/collide/[a-z0-9_]+\\.h$|^include/crosscheck/subject\\.h$|^lib[0-9]*/(x86_64-linux-gnu/)?(libcrosscheck_collide\\.a|cmake/crosscheck/crosscheck[A-Za-z-]*\\.cmake)$")
     message(FATAL_ERROR "the library's install holds a file that is not the library's: ${f}")
   endif()
 endforeach()
+if(NOT EXISTS ${WORK}/prefix/include/crosscheck/subject.h)
+  message(FATAL_ERROR "the library's install lacks the subject interface, include/crosscheck/subject.h")
+endif()
 file(GLOB_RECURSE package_files ${WORK}/prefix/*.cmake)
 foreach(f ${package_files})
   file(READ ${f} text)

@@ -1,0 +1,106 @@
+// A crosscheck subject made of Bullet's own tests (include/crosscheck/subject.h): build it as a
+// shared library and run `crosscheck campaign --subject PATH/libcrosscheck_bullet_subject.so`.
+// Each function hands the shapes to Bullet as Bullet's own callers would and returns its answer.
+#include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
+#include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
+#include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
+#include <BulletCollision/CollisionDispatch/btCollisionWorld.h>
+#include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
+#include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletCollision/CollisionShapes/btSphereShape.h>
+#include <LinearMath/btAabbUtil2.h>
+#include <crosscheck/subject.h>
+
+namespace {
+
+btVector3 v(const cc_vec3& p) { return {p.x, p.y, p.z}; }
+
+struct AnyContact final : btDiscreteCollisionDetectorInterface::Result {
+  bool any = false;
+  void setShapeIdentifiersA(int, int) override {}
+  void setShapeIdentifiersB(int, int) override {}
+  void addContactPoint(const btVector3&, const btVector3&, btScalar) override { any = true; }
+};
+
+// A box as Bullet holds it: half extents with the default collision margin, a basis whose
+// columns are the box's axes.
+btTransform place(const cc_obb& b) {
+  btTransform t;
+  t.setBasis(btMatrix3x3(b.axis[0].x, b.axis[1].x, b.axis[2].x, b.axis[0].y, b.axis[1].y, b.axis[2].y, b.axis[0].z,
+                         b.axis[1].z, b.axis[2].z));
+  t.setOrigin(v(b.center));
+  return t;
+}
+
+// A collision world, made once, for its dispatcher's algorithms.
+struct World {
+  btDefaultCollisionConfiguration configuration;
+  btCollisionDispatcher dispatcher{&configuration};
+  btDbvtBroadphase pairs;
+  btCollisionWorld world{&dispatcher, &pairs, &configuration};
+};
+
+struct AnyWorldContact final : btCollisionWorld::ContactResultCallback {
+  bool any = false;
+  btScalar addSingleResult(btManifoldPoint&, const btCollisionObjectWrapper*, int, int, const btCollisionObjectWrapper*,
+                           int, int) override {
+    any = true;
+    return 0;
+  }
+};
+
+}  // namespace
+
+extern "C" {
+
+int crosscheck_subject_version(void) { return CROSSCHECK_SUBJECT_VERSION; }
+
+int crosscheck_aabb_aabb(const cc_aabb* a, const cc_aabb* b) {
+  return TestAabbAgainstAabb2(v(a->lo), v(a->hi), v(b->lo), v(b->hi)) ? 1 : 0;
+}
+
+// As btDbvt::rayTest casts a ray: reciprocals with BT_LARGE_FLOAT for 1/0.
+int crosscheck_ray_aabb(const cc_ray* ray, const cc_aabb* box) {
+  const btVector3 dir = v(ray->dir);
+  btVector3 inverse;
+  unsigned int sign[3];
+  for (int i = 0; i < 3; ++i) {
+    inverse[i] = dir[i] == btScalar(0) ? btScalar(BT_LARGE_FLOAT) : btScalar(1) / dir[i];
+    sign[i] = inverse[i] < btScalar(0);
+  }
+  const btVector3 bounds[2] = {v(box->lo), v(box->hi)};
+  btScalar t = 0;
+  return btRayAabb2(v(ray->origin), inverse, sign, bounds, t, ray->tmin, ray->tmax) ? 1 : 0;
+}
+
+// As btBoxBoxCollisionAlgorithm asks its detector.
+int crosscheck_obb_obb(const cc_obb* a, const cc_obb* b) {
+  btBoxShape box_a(v(a->half)), box_b(v(b->half));
+  btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+  input.m_maximumDistanceSquared = BT_LARGE_FLOAT;
+  input.m_transformA = place(*a);
+  input.m_transformB = place(*b);
+  AnyContact contact;
+  btBoxBoxDetector(&box_a, &box_b).getClosestPoints(input, contact, nullptr);
+  return contact.any ? 1 : 0;
+}
+
+// Two btSphereShape objects through the world's contact pair test.
+int crosscheck_sphere_sphere(const cc_sphere* a, const cc_sphere* b) {
+  static World w;
+  btSphereShape shape_a(a->radius), shape_b(b->radius);
+  btCollisionObject object_a, object_b;
+  object_a.setCollisionShape(&shape_a);
+  object_b.setCollisionShape(&shape_b);
+  btTransform t;
+  t.setIdentity();
+  t.setOrigin(v(a->center));
+  object_a.setWorldTransform(t);
+  t.setOrigin(v(b->center));
+  object_b.setWorldTransform(t);
+  AnyWorldContact contact;
+  w.world.contactPairTest(&object_a, &object_b, contact);
+  return contact.any ? 1 : 0;
+}
+
+}  // extern "C"

@@ -1,0 +1,55 @@
+/* crosscheck's subject interface: put your own collision code under test.
+ *
+ * A subject is a shared library exporting crosscheck_subject_version() and, for each query kind
+ * it answers, a function named crosscheck_<kind> taking the kind's two shapes as plain structs of
+ * doubles and returning 1 when they meet (touching counts) and 0 when they do not. Export only
+ * the kinds you have; crosscheck skips and lists the others. Then
+ *
+ *     crosscheck campaign --subject ./libmine.so
+ *
+ * judges every answer against exact rational arithmetic and keeps each wrong one, shrunk, as a
+ * case file. Inputs may be degenerate (zero extents, collinear triangles, zero directions),
+ * touching to the last bit, huge or tiny; they are within crosscheck's own contract unless the
+ * case says otherwise. A crash or a hang in a subject is a finding, not the end of a campaign.
+ * Plain C: no crosscheck type or library is needed to build a subject. */
+#ifndef CROSSCHECK_SUBJECT_H
+#define CROSSCHECK_SUBJECT_H
+
+/* The interface's version: crosscheck_subject_version() must return it. */
+#define CROSSCHECK_SUBJECT_VERSION 1
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct { double x, y, z; } cc_vec3;
+/* The closed box lo <= p <= hi. */
+typedef struct { cc_vec3 lo, hi; } cc_aabb;
+/* The closed ball of the radius around the center (radius 0: a point). */
+typedef struct { cc_vec3 center; double radius; } cc_sphere;
+/* The closed box center + a0 axis[0] + a1 axis[1] + a2 axis[2], |ai| <= half_i; the axes
+ * orthonormal to within 2^-48 (possibly a mirror-image frame), half extents >= 0. */
+typedef struct { cc_vec3 center, half; cc_vec3 axis[3]; } cc_obb;
+/* The closed triangle (possibly a segment or a point). */
+typedef struct { cc_vec3 v[3]; } cc_triangle;
+/* The points origin + t dir, tmin <= t <= tmax (tmax may be +infinity, tmin -infinity; dir may be
+ * zero: then the origin alone, for any tmin <= tmax). */
+typedef struct { cc_vec3 origin, dir; double tmin, tmax; } cc_ray;
+
+/* Returns CROSSCHECK_SUBJECT_VERSION. */
+int crosscheck_subject_version(void);
+
+/* Each returns 1 when the two shapes share a point, 0 otherwise. */
+int crosscheck_ray_aabb(const cc_ray* ray, const cc_aabb* box);
+int crosscheck_sphere_sphere(const cc_sphere* a, const cc_sphere* b);
+int crosscheck_aabb_aabb(const cc_aabb* a, const cc_aabb* b);
+int crosscheck_obb_obb(const cc_obb* a, const cc_obb* b);
+int crosscheck_tri_aabb(const cc_triangle* tri, const cc_aabb* box);
+int crosscheck_tri_obb(const cc_triangle* tri, const cc_obb* box);
+int crosscheck_tri_tri(const cc_triangle* a, const cc_triangle* b);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif /* CROSSCHECK_SUBJECT_H */
