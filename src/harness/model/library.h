@@ -9,11 +9,14 @@
 
 namespace cc::harness {
 
+/// The answer of the library under test: crosscheck's own, or the subject put under test
+/// (subject.h).
 Answer ask_library(const Input& input);
 
 /// The library's other ways to answer the same query, each a party named "library.<how>" with
 /// the kind's band, judged like the library itself (an exception is a failed opinion, and a
-/// wrong or failed one is an impl_bug); nothing for kinds that have none.
+/// wrong or failed one is an impl_bug); nothing for kinds that have none, or with a subject under
+/// test.
 std::vector<Opinion> library_alternatives(const Input& input);
 
 }  // namespace cc::harness

@@ -1,0 +1,113 @@
+// Subjects: loading one (the Bullet example), the ways a library is refused (missing, no version
+// symbol, another version, no kind), asking one through ask_library, and a subject that
+// crashes, hangs or answers neither 0 nor 1 in a campaign: findings, never the end of the run.
+#include "harness/model/subject.h"
+
+#include <gtest/gtest.h>
+
+#include <stdexcept>
+#include <string>
+
+#include "harness/model/library.h"
+#include "harness/processes/campaign.h"
+#include "oracle/exact/exact_reference.h"
+
+namespace cc::harness {
+namespace {
+
+std::string test_subject(const char* name) {
+  return std::string(CROSSCHECK_SUBJECTS_DIR) + "/libtest_subject_" + name + ".so";
+}
+
+// The message load() throws for the path.
+std::string refusal(const std::string& path) {
+  try {
+    Subject::load(path);
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+  return "(loaded)";
+}
+
+// No second opinion: the subject against the exact reference alone.
+class NoSecondOpinion final : public SecondOpinion {
+ public:
+  std::vector<Opinion> opinions(const Input&) const override { return {}; }
+  std::vector<PartyBand> parties(QueryKind) const override { return {}; }
+};
+
+// Puts a subject under test for the test's scope.
+struct UnderTest {
+  explicit UnderTest(std::shared_ptr<const Subject> s) { put_under_test(std::move(s)); }
+  ~UnderTest() { put_under_test(nullptr); }
+};
+
+TEST(Subject, TheBulletExampleAnswersTheKindsItExports) {
+  const auto bullet = Subject::load(CROSSCHECK_BULLET_SUBJECT);
+  for (QueryKind kind : {QueryKind::ray_aabb, QueryKind::sphere_sphere, QueryKind::aabb_aabb, QueryKind::obb_obb}) {
+    EXPECT_TRUE(bullet->answers(kind)) << name(kind);
+  }
+  for (QueryKind kind : {QueryKind::tri_tri, QueryKind::kdop_kdop, QueryKind::mesh_mesh, QueryKind::disc_walls}) {
+    EXPECT_FALSE(bullet->answers(kind)) << name(kind);
+  }
+  const Aabb unit{{0, 0, 0}, {1, 1, 1}};
+  EXPECT_TRUE(bullet->ask(AabbAabbInput{unit, {{1, 0, 0}, {2, 1, 1}}}).hit);
+  EXPECT_FALSE(bullet->ask(AabbAabbInput{unit, {{1.5, 0, 0}, {2, 1, 1}}}).hit);
+  EXPECT_TRUE(bullet->ask(SphereSphereInput{{{0, 0, 0}, 1}, {{1.5, 0, 0}, 1}}).hit);
+  EXPECT_FALSE(bullet->ask(RayAabbInput{{{-1, 2.5, 0.5}, {1, 0, 0}, 0, 3}, unit}).hit);
+  EXPECT_THROW(bullet->ask(TriTriInput{}), std::runtime_error);
+}
+
+TEST(Subject, AskLibraryAsksTheSubjectUnderTestAndNoAlternative) {
+  const Aabb unit{{0, 0, 0}, {1, 1, 1}};
+  const RayAabbInput touching_end{{{-1, 0.5, 0.5}, {1, 0, 0}, 0, 1}, unit};  // Bullet's open range: a miss
+  EXPECT_TRUE(ask_library(touching_end).hit);
+  EXPECT_FALSE(library_alternatives(touching_end).empty());
+  {
+    const UnderTest bullet(Subject::load(CROSSCHECK_BULLET_SUBJECT));
+    EXPECT_FALSE(ask_library(touching_end).hit);
+    EXPECT_TRUE(library_alternatives(touching_end).empty());
+  }
+  EXPECT_EQ(subject_under_test(), nullptr);
+  EXPECT_TRUE(ask_library(touching_end).hit);
+}
+
+TEST(Subject, ALibraryThatIsNoSubjectIsRefusedWithTheReason) {
+  EXPECT_NE(refusal("/nonexistent/libmine.so").find("cannot be loaded"), std::string::npos);
+  EXPECT_NE(refusal(test_subject("no_version")).find("exports no crosscheck_subject_version"), std::string::npos);
+  EXPECT_NE(refusal(test_subject("wrong_version")).find("interface version 2, this crosscheck takes version 1"),
+            std::string::npos);
+  EXPECT_NE(refusal(test_subject("no_kind")).find("exports no crosscheck_<kind>"), std::string::npos);
+  EXPECT_EQ(refusal(test_subject("misbehaving")), "(loaded)");
+}
+
+TEST(Subject, AnAnswerThatIsNeitherZeroNorOneThrows) {
+  const auto subject = Subject::load(test_subject("misbehaving"));
+  EXPECT_THROW(subject->ask(SphereSphereInput{{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}), std::runtime_error);
+}
+
+TEST(Subject, ACrashOrAHangInASubjectIsAFindingNotTheEndOfTheCampaign) {
+  const UnderTest misbehaving(Subject::load(test_subject("misbehaving")));
+  CampaignOptions options;
+  options.kinds = {QueryKind::aabb_aabb};
+  options.workers = 2;
+  options.seconds = 3;
+  options.case_timeout_seconds = 0.3;
+  const Oracles oracles{[] { return std::make_unique<exact::ExactRationalReference>(); },
+                        [] { return std::make_unique<NoSecondOpinion>(); }};
+  const CampaignResult r = run_campaign(options, oracles);
+  int crashes = 0, hangs = 0;
+  for (const Finding& f : r.findings) {
+    if (f.crash.empty()) continue;
+    EXPECT_EQ(f.evaluation.verdict.cls, CaseClass::impl_bug) << f.crash;
+    const double x = std::get<AabbAabbInput>(f.input).a.lo.x;
+    (f.crash.find("hung") != std::string::npos ? hangs : crashes) += 1;
+    EXPECT_TRUE(x == 0.25 || x == 0.75) << f.crash;
+  }
+  EXPECT_GT(crashes, 0);
+  EXPECT_GT(hangs, 0);
+  EXPECT_GT(r.tallies.at(QueryKind::aabb_aabb).cases, 1000u);
+}
+
+}  // namespace
+}  // namespace cc::harness
