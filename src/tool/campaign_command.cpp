@@ -31,6 +31,7 @@
 #include "tool/commands.h"
 #include "tool/flag_checks.h"
 #include "tool/oracles.h"
+#include "tool/subject_option.h"
 
 namespace cc::tool {
 namespace {
@@ -65,6 +66,7 @@ struct CampaignArgs {
   std::string out = "corpora/new";
   int max_new = 30;
   int per_key = 1;
+  std::string subject;
 };
 
 void print_table(const CampaignResult& r) {
@@ -398,6 +400,12 @@ int run(const CampaignArgs& args) {
     options.kinds.push_back(*kind);
   }
   if (options.kinds.empty()) options.kinds.assign(kAllQueryKinds.begin(), kAllQueryKinds.end());
+  put_subject_under_test(args.subject);
+  options.kinds = answered_kinds(options.kinds, "campaign");
+  if (options.kinds.empty()) {
+    std::fprintf(stderr, "crosscheck campaign: --subject: it answers none of the query kinds asked\n");
+    return kExitBadInput;
+  }
   // --seconds bounds the whole run: cases get their share, shrinking what they found the rest.
   options.seconds = args.max_new > 0 ? args.seconds * (1 - kShrinkShare) : args.seconds;
   options.seed = args.seed;
@@ -495,6 +503,7 @@ void add_campaign_command(CLI::App& app, int& exit_code) {
                   "Cases written per kind of finding (same class, parties, features and margin decade)")
       ->capture_default_str()
       ->check(whole_in(1, 1000000));
+  add_subject_option(cmd, args->subject);
   // --out is checked up front even when left at its default: findings go there after the budget.
   cmd->callback([args, &exit_code] {
     if (const std::string why = args->max_new > 0 ? unwritable_folder(args->out) : ""; !why.empty()) {

@@ -15,6 +15,7 @@
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
+#include "tool/subject_option.h"
 #include "tool/flag_checks.h"
 
 namespace cc::tool {
@@ -77,12 +78,18 @@ struct FuzzCaseArgs {
   std::string query;
   std::vector<std::string> files;
   std::string out = "corpora/new";
+  std::string subject;
 };
 
 int run_fuzz_case(const FuzzCaseArgs& args) {
   const auto kind = query_kind_named(args.query);
   if (!kind) {
     std::fprintf(stderr, "crosscheck fuzz-case: unknown query \"%s\"\n", args.query.c_str());
+    return kExitBadInput;
+  }
+  put_subject_under_test(args.subject);
+  if (!library_answers(*kind)) {
+    std::fprintf(stderr, "crosscheck fuzz-case: --subject: it does not answer %s\n", args.query.c_str());
     return kExitBadInput;
   }
   for (const std::string& file : args.files) {
@@ -156,6 +163,7 @@ void add_fuzz_commands(CLI::App& app, int& exit_code) {
   c->add_option("query", cases->query, "The query kind of the fuzz target")->required()->check(query_kind_name());
   c->add_option("files", cases->files, "Fuzz inputs (files)")->required()->check(CLI::ExistingFile);
   c->add_option("--out", cases->out, "Where the case files go")->capture_default_str()->check(writable_folder());
+  add_subject_option(c, cases->subject);
   c->callback([cases, &exit_code] { exit_code = run_fuzz_case(*cases); });
 }
 

@@ -7,6 +7,7 @@
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
+#include "tool/subject_option.h"
 
 namespace cc::tool {
 namespace {
@@ -17,6 +18,7 @@ struct ReplayArgs {
   std::vector<std::string> dirs;
   bool quiet = false;
   bool accept = false;
+  std::string subject;
 };
 
 int run(const ReplayArgs& args) {
@@ -27,6 +29,11 @@ int run(const ReplayArgs& args) {
       return kExitBadInput;
     }
   }
+  if (args.accept && !args.subject.empty()) {
+    std::fprintf(stderr, "crosscheck replay: --accept records crosscheck's own answers: not with --subject\n");
+    return kExitBadInput;
+  }
+  put_subject_under_test(args.subject);
   const exact::ExactRationalReference exact;
   const std::vector<std::filesystem::path> files = case_files_under(roots);
   if (files.empty()) {
@@ -35,11 +42,16 @@ int run(const ReplayArgs& args) {
     std::fprintf(stderr, "crosscheck replay: no case files (*.json) in %s\n", given.c_str());
     return kExitBadInput;
   }
-  int cases = 0, changed = 0, bad = 0;
+  int cases = 0, changed = 0, bad = 0, skipped = 0;
   for (const auto& file : files) {
     const auto c = read_case_or_report(file);
     if (!c) {
       ++bad;
+      continue;
+    }
+    if (!library_answers(kind_of(c->input))) {
+      ++skipped;
+      if (!args.quiet) std::printf("skipped  %s  (the subject does not answer %s)\n", file.string().c_str(), std::string(name(kind_of(c->input))).c_str());
       continue;
     }
     ++cases;
@@ -63,8 +75,9 @@ int run(const ReplayArgs& args) {
     for (const std::string& w : what) std::printf("  - %s\n", w.c_str());
     std::printf("%s\n", triage_text(file.string(), *c, now, exact.explain(c->input)).c_str());
   }
-  std::printf("%d cases replayed: %d unchanged, %d changed%s\n", cases, cases - changed, changed,
-              bad ? (", " + std::to_string(bad) + " unreadable").c_str() : "");
+  std::printf("%d cases replayed: %d unchanged, %d changed%s%s\n", cases, cases - changed, changed,
+              bad ? (", " + std::to_string(bad) + " unreadable").c_str() : "",
+              skipped ? (", " + std::to_string(skipped) + " skipped (kinds the subject does not answer)").c_str() : "");
   if (bad) return kExitBadInput;
   return changed ? kExitFound : 0;
 }
@@ -78,6 +91,7 @@ void add_replay_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("-q,--quiet", args->quiet, "Print only the cases that changed");
   cmd->add_flag("--accept", args->accept,
                 "Rewrite changed cases with today's answers (keeping note and provenance), unless the library is wrong");
+  add_subject_option(cmd, args->subject);
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

@@ -5,6 +5,7 @@
 #include "harness/shrinking/signature.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
+#include "tool/subject_option.h"
 #include "tool/flag_checks.h"
 
 namespace cc::tool {
@@ -15,11 +16,18 @@ struct ShrinkArgs {
   std::string out;
   int attempts = 4000;
   double seconds = 60;
+  std::string subject;
 };
 
 int run(const ShrinkArgs& args) {
+  put_subject_under_test(args.subject);
   const auto c = read_case_or_report(args.file);
   if (!c) return kExitBadInput;
+  if (!library_answers(harness::kind_of(c->input))) {
+    std::fprintf(stderr, "crosscheck shrink: %s: the subject does not answer %s\n", args.file.c_str(),
+                 std::string(name(harness::kind_of(c->input))).c_str());
+    return kExitBadInput;
+  }
   const harness::Evaluation start = evaluate_with_oracles(c->input);
   // Candidates run in a child first: one that crashes an oracle is rejected, not fatal.
   const harness::ShrinkResult r = harness::shrink(c->input, start, evaluate_surviving_crashes, args.attempts, args.seconds,
@@ -64,6 +72,7 @@ void add_shrink_command(CLI::App& app, int& exit_code) {
           "FILE or FOLDER/ (writable)"));
   cmd->add_option("--attempts", args->attempts, "Evaluations to try at most")->capture_default_str()->check(whole_in(1, 10000000));
   cmd->add_option("--seconds", args->seconds, "Time to spend at most")->capture_default_str()->check(finite_above(0, 1e6));
+  add_subject_option(cmd, args->subject);
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

@@ -9,6 +9,7 @@
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
+#include "tool/subject_option.h"
 #include "tool/flag_checks.h"
 
 namespace cc::tool {
@@ -36,6 +37,7 @@ void print_cost(const harness::Input& input) {
 struct TriageArgs {
   std::vector<std::string> files;
   std::string svg;
+  std::string subject;
 };
 
 int run(const TriageArgs& args) {
@@ -43,11 +45,18 @@ int run(const TriageArgs& args) {
     std::fprintf(stderr, "crosscheck triage: --svg draws one case; %zu files given\n", args.files.size());
     return kExitBadInput;
   }
+  put_subject_under_test(args.subject);
   const exact::ExactRationalReference exact;
   int status = 0;
   for (const std::string& file : args.files) {
     const auto c = read_case_or_report(file);
     if (!c) {
+      status = kExitBadInput;
+      continue;
+    }
+    if (!library_answers(harness::kind_of(c->input))) {
+      std::fprintf(stderr, "crosscheck triage: %s: the subject does not answer %s\n", file.c_str(),
+                   std::string(name(harness::kind_of(c->input))).c_str());
       status = kExitBadInput;
       continue;
     }
@@ -78,6 +87,7 @@ void add_triage_command(CLI::App& app, int& exit_code) {
   cmd->add_option("files", args->files, "Case files")->required();
   cmd->add_option("--svg", args->svg, "Draw the case (three views and the deciding axis) into this SVG file")
       ->check(writable_file());
+  add_subject_option(cmd, args->subject);
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 
