@@ -8,6 +8,7 @@
 #include "harness/judging/evaluate.h"
 #include "harness/formats/fuzz_record.h"
 #include "harness/formats/input_json.h"
+#include "harness/model/subject.h"
 #include "oracle/exact/exact_reference.h"
 #include "oracle/peers/peer_opinions.h"
 
@@ -37,7 +38,31 @@ void keep(QueryKind kind, CaseClass cls, const std::uint8_t* data, std::size_t s
 
 }  // namespace
 
+namespace {
+
+// The library under test: crosscheck's own, or the subject CROSSCHECK_SUBJECT names
+// (include/crosscheck/subject.h), loaded at the first input; a path that is no subject ends the
+// run (exit 2). Kinds the subject does not answer are not fuzzed (every input returns at once).
+bool library_answers(QueryKind kind) {
+  static const bool loaded = [] {
+    if (const char* path = std::getenv("CROSSCHECK_SUBJECT"); path != nullptr && *path != '\0') {
+      try {
+        put_under_test(Subject::load(path));
+      } catch (const std::exception& e) {
+        std::fprintf(stderr, "CROSSCHECK_SUBJECT: %s\n", e.what());
+        std::exit(2);
+      }
+    }
+    return true;
+  }();
+  const Subject* subject = subject_under_test();
+  return loaded && (subject == nullptr || subject->answers(kind));
+}
+
+}  // namespace
+
 int test_one_input(QueryKind kind, const std::uint8_t* data, std::size_t size) {
+  if (!library_answers(kind)) return 0;
   static const exact::ExactRationalReference exact;
   static const peers::PeerOpinions second;
   const Input input = decode_record(kind, {data, size});

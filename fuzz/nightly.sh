@@ -7,7 +7,10 @@
 # findings by class. Ctrl-C stops the fuzzers and still merges, converts and reports what was found.
 #
 #   fuzz/nightly.sh [--minutes 10] [--jobs 2] [--report build/fuzz-report] [--targets "KIND ..."]
-#                   [--max-shrink 5]
+#                   [--max-shrink 5] [--subject PATH.so]
+#
+# --subject fuzzes a shared library (include/crosscheck/subject.h) instead of crosscheck's own:
+# the targets load it (CROSSCHECK_SUBJECT), and only the kinds it answers are run.
 #
 # Every finding is classified; the first of each kind of finding (same class, parties, features
 # and margin decade), up to --max-shrink per target, is minimised into corpora/new/.
@@ -19,6 +22,7 @@ jobs=2
 report="$root/build/fuzz-report"
 targets=""  # default: every query kind (the fuzz build lists them in fuzz/targets.txt)
 max_shrink=5
+subject=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --minutes) minutes=$2; shift 2 ;;
@@ -26,7 +30,8 @@ while [ $# -gt 0 ]; do
     --report) report=$2; shift 2 ;;
     --targets) targets=$2; shift 2 ;;
     --max-shrink) max_shrink=$2; shift 2 ;;
-    *) echo "usage: $0 [--minutes M] [--jobs J] [--report DIR] [--targets \"Q ...\"] [--max-shrink N]" >&2; exit 2 ;;
+    --subject) subject=$(realpath "$2") || exit 2; shift 2 ;;
+    *) echo "usage: $0 [--minutes M] [--jobs J] [--report DIR] [--targets \"Q ...\"] [--max-shrink N] [--subject PATH.so]" >&2; exit 2 ;;
   esac
 done
 
@@ -34,6 +39,17 @@ cd "$root" || exit 2
 ./.ci/deps || exit 2
 cmake --preset fuzz > /dev/null || exit 2
 [ -n "$targets" ] || targets=$(cat "$root/build/fuzz/fuzz/targets.txt") || exit 2
+subject_flags=()
+if [ -n "$subject" ]; then
+  # The kinds the subject answers: those whose crosscheck_<kind> it exports.
+  answered=""
+  for t in $targets; do
+    nm -D --defined-only "$subject" 2>/dev/null | grep -q " crosscheck_$t\$" && answered="$answered $t"
+  done
+  [ -n "$answered" ] || { echo "nightly: --subject $subject answers none of: $targets" >&2; exit 2; }
+  targets=$answered
+  subject_flags=(--subject "$subject")
+fi
 cmake --build --preset fuzz --target $(printf 'fuzz_%s ' $targets) || exit 2
 cmake --preset release > /dev/null && cmake --build --preset release --target crosscheck || exit 2
 crosscheck="$root/build/release/crosscheck"
@@ -67,7 +83,7 @@ for t in $targets; do
     ran=true
     echo "fuzzing $t for ${budget}s with $jobs jobs"
     begin=$(date +%s)
-    ( cd "$logs" && CROSSCHECK_FUZZ_FINDINGS="$report/findings" "$bin/fuzz_$t" -max_total_time="$budget" \
+    ( cd "$logs" && CROSSCHECK_SUBJECT="$subject" CROSSCHECK_FUZZ_FINDINGS="$report/findings" "$bin/fuzz_$t" -max_total_time="$budget" \
         -jobs="$jobs" -workers="$jobs" -dict="$bin/$t.dict" -artifact_prefix="$artifacts/" \
         -print_final_stats=1 -timeout=10 "$work" "$seeds" > /dev/null 2>&1 )
     seconds=$(( $(date +%s) - begin ))
@@ -88,7 +104,7 @@ for t in $targets; do
   for f in "$artifacts"/* "$report/findings/$t"/*; do
     [ -f "$f" ] || continue
     # "<input> <class> <case file> <kind of finding...>"
-    line=$("$crosscheck" fuzz-case "$t" "$f" --out "$report/cases")
+    line=$("$crosscheck" fuzz-case "$t" "$f" --out "$report/cases" "${subject_flags[@]}")
     class=$(echo "$line" | awk '{print $2}')
     case_file=$(echo "$line" | awk '{print $3}')
     key=$(echo "$line" | cut -d' ' -f4-)
@@ -96,7 +112,7 @@ for t in $targets; do
     if [ -f "$case_file" ] && [ -z "${seen[$key]+x}" ] && [ "$shrunk" -lt "$max_shrink" ]; then
       seen[$key]=1
       shrunk=$(( shrunk + 1 ))
-      written=$("$crosscheck" shrink "$case_file" -o "$root/corpora/new/$t/" | sed -n 's/^  written to //p')
+      written=$("$crosscheck" shrink "$case_file" -o "$root/corpora/new/$t/" "${subject_flags[@]}" | sed -n 's/^  written to //p')
       # Already stored elsewhere under corpora/ (a known case): not a new one.
       if [ -n "$written" ] && find "$root/corpora" -path "$root/corpora/new" -prune -o -name "$(basename "$written")" -print | grep -q .; then
         rm -f "$written"
