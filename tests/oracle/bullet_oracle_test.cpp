@@ -9,6 +9,8 @@
 #include <map>
 #include <string>
 
+#include "harness/model/mesh_query.h"
+
 namespace cc::bullet_oracle {
 namespace {
 
@@ -86,6 +88,27 @@ TEST(BulletSecondOpinion, BoxesFaceToFaceAndTurned) {
   EXPECT_TRUE(says({a, {{1.5, 0.5, 0}, {1, 1, 1}, mirror}}));  // a mirror-image frame, the same box
 }
 
+// Two parallel right triangles, face 0 in the plane z = 2 and face 1 in z = 1, legs x, y in [0, 4].
+harness::RayMeshInput ray_on_two_faces(const Ray& ray) {
+  Mesh mesh;
+  mesh.vertices = {{0, 0, 2}, {4, 0, 2}, {0, 4, 2}, {0, 0, 1}, {4, 0, 1}, {0, 4, 1}};
+  mesh.faces = {{0, 1, 2}, {3, 4, 5}};
+  return {harness::triangles_mesh(mesh), ray, {}};
+}
+
+TEST(BulletSecondOpinion, ARaycastNamesTheNearestFaceAndMissesAtAPlanesEnd) {
+  const auto says = [](const Ray& ray) { return ask(ray_on_two_faces(ray)).at("bullet.btBvhTriangleMeshShape::performRaycast"); };
+  const Opinion up = says({{1, 1, 0}, {0, 0, 3}, 0, 1});  // through z = 1 at t = 1/3, then z = 2
+  ASSERT_TRUE(hit(up));
+  EXPECT_EQ(up.answer.pairs, (std::vector<harness::FacePair>{{1, 0}}));
+  const Opinion down = says({{1, 1, 3}, {0, 0, -3}, 0, 1});
+  ASSERT_TRUE(hit(down));
+  EXPECT_EQ(down.answer.pairs, (std::vector<harness::FacePair>{{0, 0}}));
+  EXPECT_FALSE(hit(says({{1, 1, 0}, {0, 0, 1}, 0, 1})));  // ends on face 1's plane: Bullet's miss
+  EXPECT_FALSE(hit(says({{5, 5, 0}, {0, 0, 3}, 0, 1})));  // beside both faces
+  EXPECT_EQ(says({{1, 1, 0}, {0, 0, 1}, 0, INFINITY}).status, Opinion::Status::not_applicable);
+}
+
 TEST(BulletSecondOpinion, PartiesMatchTheOpinionsOfEveryKind) {
   const BulletSecondOpinion bullet;
   for (harness::QueryKind kind : harness::kAllQueryKinds) {
@@ -98,6 +121,7 @@ TEST(BulletSecondOpinion, PartiesMatchTheOpinionsOfEveryKind) {
   EXPECT_EQ(bullet.parties(harness::QueryKind::aabb_aabb).size(), 1u);
   EXPECT_EQ(bullet.parties(harness::QueryKind::sphere_sphere).size(), 1u);
   EXPECT_EQ(bullet.parties(harness::QueryKind::obb_obb).size(), 1u);
+  EXPECT_EQ(bullet.parties(harness::QueryKind::ray_mesh).size(), 1u);
 }
 
 TEST(BulletSecondOpinion, ItsVersionIsTheHeadersOne) { EXPECT_EQ(bullet_version(), "3.24"); }
