@@ -109,6 +109,20 @@ TEST(BulletSecondOpinion, ARaycastNamesTheNearestFaceAndMissesAtAPlanesEnd) {
   EXPECT_EQ(says({{1, 1, 0}, {0, 0, 1}, 0, INFINITY}).status, Opinion::Status::not_applicable);
 }
 
+TEST(BulletSecondOpinion, BothBroadphasesFollowBoxesAddedMovedAndRemoved) {
+  const Aabb unit{{0, 0, 0}, {1, 1, 1}};
+  harness::BroadphaseInput in;
+  in.frames = {{unit, Aabb{{2, 0, 0}, {3, 1, 1}}},                            // apart
+               {unit, Aabb{{1, 0, 0}, {2, 1, 1}}, Aabb{{0.5, 0.5, 0.5}, {0.6, 0.6, 0.6}}},  // touching; a third inside
+               {std::nullopt, Aabb{{1, 0, 0}, {2, 1, 1}}, Aabb{{0.5, 0.5, 0.5}, {0.6, 0.6, 0.6}}}};  // the first gone
+  const std::vector<std::vector<harness::FacePair>> expected = {{}, {{0, 1}, {0, 2}}, {}};
+  for (const char* party : {"bullet.btAxisSweep3", "bullet.btDbvtBroadphase"}) {
+    const Opinion o = ask(in).at(party);
+    ASSERT_TRUE(hit(o)) << party;
+    EXPECT_EQ(o.answer.frames, expected) << party;
+  }
+}
+
 TEST(BulletSecondOpinion, PartiesMatchTheOpinionsOfEveryKind) {
   const BulletSecondOpinion bullet;
   for (harness::QueryKind kind : harness::kAllQueryKinds) {
@@ -122,6 +136,7 @@ TEST(BulletSecondOpinion, PartiesMatchTheOpinionsOfEveryKind) {
   EXPECT_EQ(bullet.parties(harness::QueryKind::sphere_sphere).size(), 1u);
   EXPECT_EQ(bullet.parties(harness::QueryKind::obb_obb).size(), 1u);
   EXPECT_EQ(bullet.parties(harness::QueryKind::ray_mesh).size(), 1u);
+  EXPECT_EQ(bullet.parties(harness::QueryKind::broadphase).size(), 2u);
 }
 
 TEST(BulletSecondOpinion, ItsVersionIsTheHeadersOne) { EXPECT_EQ(bullet_version(), "3.24"); }
