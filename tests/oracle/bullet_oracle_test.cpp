@@ -123,6 +123,18 @@ TEST(BulletSecondOpinion, BothBroadphasesFollowBoxesAddedMovedAndRemoved) {
   }
 }
 
+TEST(BulletSecondOpinion, GjkOnATriangleAndABox) {
+  const auto aabb = [](const harness::TriAabbInput& in) { return hit(ask(in).at("bullet.btGjkPairDetector")); };
+  const auto obb = [](const harness::TriObbInput& in) { return hit(ask(in).at("bullet.btGjkPairDetector")); };
+  const Triangle through{{Vec3{-1, 0.5, 0.5}, Vec3{2, 0.5, 0.5}, Vec3{0.5, 3, 0.5}}};
+  EXPECT_TRUE(aabb({through, kUnit}));
+  EXPECT_FALSE(aabb({{{Vec3{3, 3, 3}, Vec3{4, 3, 3}, Vec3{3, 4, 3}}}, kUnit}));
+  const double c = std::sqrt(0.5);
+  const Obb turned{{0, 0, 0}, {1, 1, 1}, Mat3::from_columns({c, c, 0}, {-c, c, 0}, {0, 0, 1})};
+  EXPECT_TRUE(obb({{{Vec3{1.3, 0, -1}, Vec3{1.3, 0, 1}, Vec3{3, 0, 0}}}, turned}));   // the corner reaches x = sqrt 2
+  EXPECT_FALSE(obb({{{Vec3{1.5, 0, -1}, Vec3{1.5, 0, 1}, Vec3{3, 0, 0}}}, turned}));
+}
+
 TEST(BulletSecondOpinion, PartiesMatchTheOpinionsOfEveryKind) {
   const BulletSecondOpinion bullet;
   for (harness::QueryKind kind : harness::kAllQueryKinds) {
@@ -137,6 +149,8 @@ TEST(BulletSecondOpinion, PartiesMatchTheOpinionsOfEveryKind) {
   EXPECT_EQ(bullet.parties(harness::QueryKind::obb_obb).size(), 1u);
   EXPECT_EQ(bullet.parties(harness::QueryKind::ray_mesh).size(), 1u);
   EXPECT_EQ(bullet.parties(harness::QueryKind::broadphase).size(), 2u);
+  EXPECT_EQ(bullet.parties(harness::QueryKind::tri_aabb).size(), 1u);
+  EXPECT_EQ(bullet.parties(harness::QueryKind::tri_obb).size(), 1u);
 }
 
 TEST(BulletSecondOpinion, ItsVersionIsTheHeadersOne) { EXPECT_EQ(bullet_version(), "3.24"); }

@@ -22,12 +22,11 @@
 #include <cstdint>
 #include <memory>
 
+#include "oracle/bullet/convert.h"
 #include "oracle/bullet/parties.h"
 
 namespace cc::bullet_oracle {
 namespace {
-
-btVector3 to_bullet(const Vec3& v) { return {v.x, v.y, v.z}; }
 
 enum class Broadphase { axis_sweep, dbvt };
 

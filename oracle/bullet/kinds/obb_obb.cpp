@@ -11,7 +11,7 @@
 #include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 
-#include "collide/proper_frame.h"
+#include "oracle/bullet/convert.h"
 #include "oracle/bullet/parties.h"
 
 namespace cc::bullet_oracle {
@@ -24,28 +24,13 @@ struct AnyContact final : btDiscreteCollisionDetectorInterface::Result {
   void addContactPoint(const btVector3&, const btVector3&, btScalar) override { any = true; }
 };
 
-// The box as a btBoxShape with exactly its half extents (margin 0).
-void set_box(btBoxShape& shape, const Obb& box) {
-  shape.setMargin(0);
-  shape.setImplicitShapeDimensions({box.half.x, box.half.y, box.half.z});
-}
-
-btTransform placement(const Obb& box) {
-  const Mat3 r = proper_frame(box.axes);  // columns: the box's axes in the world
-  btTransform t;
-  t.setBasis(btMatrix3x3(r.col[0].x, r.col[1].x, r.col[2].x, r.col[0].y, r.col[1].y, r.col[2].y, r.col[0].z, r.col[1].z,
-                         r.col[2].z));
-  t.setOrigin({box.center.x, box.center.y, box.center.z});
-  return t;
-}
-
 Opinion boxes(const harness::ObbObbInput& in) {
   btBoxShape shape_a({1, 1, 1}), shape_b({1, 1, 1});
-  set_box(shape_a, in.a), set_box(shape_b, in.b);
+  set_half_extents(shape_a, in.a.half), set_half_extents(shape_b, in.b.half);
   btDiscreteCollisionDetectorInterface::ClosestPointInput input;
   input.m_maximumDistanceSquared = BT_LARGE_FLOAT;
-  input.m_transformA = placement(in.a);
-  input.m_transformB = placement(in.b);
+  input.m_transformA = placement(in.a.axes, in.a.center);
+  input.m_transformB = placement(in.b.axes, in.b.center);
   AnyContact contact;
   btBoxBoxDetector(&shape_a, &shape_b).getClosestPoints(input, contact, nullptr);
   return answered(contact.any);

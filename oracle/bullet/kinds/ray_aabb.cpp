@@ -22,12 +22,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include "oracle/bullet/convert.h"
 #include "oracle/bullet/parties.h"
 
 namespace cc::bullet_oracle {
 namespace {
-
-btVector3 to_bullet(const Vec3& v) { return {v.x, v.y, v.z}; }
 
 Opinion ray_aabb2(const harness::RayAabbInput& in) {
   const Ray& r = in.ray;

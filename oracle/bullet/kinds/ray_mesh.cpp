@@ -15,12 +15,12 @@
 #include <algorithm>
 #include <cmath>
 
+#include "oracle/bullet/convert.h"
 #include "oracle/bullet/parties.h"
 
 namespace cc::bullet_oracle {
 namespace {
 
-btVector3 to_bullet(const Vec3& v) { return {v.x, v.y, v.z}; }
 double largest_magnitude(const Vec3& v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
 
 // Keeps the face of the closest hit (Bullet calls it for each nearer hit it finds).

@@ -1,13 +1,17 @@
-// tri_obb's second opinions from Bullet: none wired yet. The counterpart is GJK
-// (btGjkPairDetector) on a btTriangleShape and a rotated btBoxShape, whose collision margins and
-// tolerances set its band; they are to be read first.
+// tri_obb's second opinion from Bullet: GJK (btGjkPairDetector with EPA) on a btTriangleShape
+// and a btBoxShape placed by the box's frame (made proper) and centre, margins 0; a hit when it
+// reports a distance <= 0 (gjk.h; its band: absolute tolerances about 1e-3).
+#include "oracle/bullet/gjk.h"
 #include "oracle/bullet/parties.h"
 
 namespace cc::bullet_oracle {
 
 template <>
 const std::vector<Party<harness::TriObbInput>>& bullet_parties() {
-  static const std::vector<Party<harness::TriObbInput>> parties;
+  static const std::vector<Party<harness::TriObbInput>> parties = {
+      {"bullet.btGjkPairDetector", kGjkBand, [](const harness::TriObbInput& in) {
+         return gjk_triangle_box(in.tri, in.box.half, in.box.axes, in.box.center);
+       }}};
   return parties;
 }
 

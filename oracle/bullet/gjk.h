@@ -1,0 +1,22 @@
+// Bullet's GJK (btGjkPairDetector, with the EPA penetration solver as Bullet's collision
+// algorithms pair them) on a triangle and a box, for the kinds of a triangle and a box (internal
+// to oracle/bullet).
+#pragma once
+
+#include "collide/triangle.h"
+#include "collide/vec3.h"
+#include "harness/judging/party.h"
+
+namespace cc::bullet_oracle {
+
+/// A hit when GJK reports a distance <= 0 between the triangle (a btTriangleShape) and the box
+/// (a btBoxShape of these half extents placed by axes and centre), both with collision margin 0.
+harness::Opinion gjk_triangle_box(const Triangle& tri, const Vec3& half, const Mat3& axes, const Vec3& center);
+
+/// Its band: GJK's and EPA's tolerances are absolute (a separating axis shorter than 1e-3, a
+/// distance within 1e-3 of 0 with a degenerate simplex, go to the penetration solver): at unit
+/// scale, 2^-9.
+inline constexpr harness::Band kGjkBand{0x1p-9, harness::BandSides::two_sided, 0,
+                                         "GJK's and EPA's absolute tolerances (about 1e-3): the band they mean at unit scale"};
+
+}  // namespace cc::bullet_oracle
