@@ -1,6 +1,7 @@
 // A crosscheck subject made of Bullet's own tests (include/crosscheck/subject.h): build it as a
 // shared library and run `crosscheck campaign --subject PATH/libcrosscheck_bullet_subject.so`.
-// Each function hands the shapes to Bullet as Bullet's own callers would and returns its answer.
+// Each function hands the shapes to Bullet as Bullet's own callers would and returns its answer
+// (the triangle tests by GJK with collision margins 0, as an exact test would be asked).
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 #include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
@@ -8,6 +9,10 @@
 #include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
+#include <BulletCollision/CollisionShapes/btTriangleShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
+#include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 #include <LinearMath/btAabbUtil2.h>
 #include <crosscheck/subject.h>
 
@@ -30,6 +35,36 @@ btTransform place(const cc_obb& b) {
                          b.axis[1].z, b.axis[2].z));
   t.setOrigin(v(b.center));
   return t;
+}
+
+// GJK with EPA on a triangle and a box (margins 0): a hit when the distance it reports is <= 0.
+struct Distance final : btDiscreteCollisionDetectorInterface::Result {
+  bool reported = false;
+  btScalar distance = 0;
+  void setShapeIdentifiersA(int, int) override {}
+  void setShapeIdentifiersB(int, int) override {}
+  void addContactPoint(const btVector3&, const btVector3&, btScalar depth) override {
+    reported = true;
+    distance = depth;
+  }
+};
+
+int gjk(const cc_triangle& tri, const btVector3& half, const btTransform& box_place) {
+  btTriangleShape triangle(v(tri.v[0]), v(tri.v[1]), v(tri.v[2]));
+  triangle.setMargin(0);
+  btBoxShape box(half);
+  box.setMargin(0);
+  box.setImplicitShapeDimensions(half);
+  btVoronoiSimplexSolver simplex;
+  btGjkEpaPenetrationDepthSolver penetration;
+  btGjkPairDetector detector(&triangle, &box, &simplex, &penetration);
+  btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+  input.m_maximumDistanceSquared = BT_LARGE_FLOAT;
+  input.m_transformA.setIdentity();
+  input.m_transformB = box_place;
+  Distance result;
+  detector.getClosestPoints(input, result, nullptr);
+  return result.reported && result.distance <= 0 ? 1 : 0;
 }
 
 // A collision world, made once, for its dispatcher's algorithms.
@@ -102,5 +137,14 @@ int crosscheck_sphere_sphere(const cc_sphere* a, const cc_sphere* b) {
   w.world.contactPairTest(&object_a, &object_b, contact);
   return contact.any ? 1 : 0;
 }
+
+int crosscheck_tri_aabb(const cc_triangle* tri, const cc_aabb* box) {
+  btTransform t;
+  t.setIdentity();
+  t.setOrigin((v(box->lo) + v(box->hi)) * btScalar(0.5));
+  return gjk(*tri, (v(box->hi) - v(box->lo)) * btScalar(0.5), t);
+}
+
+int crosscheck_tri_obb(const cc_triangle* tri, const cc_obb* box) { return gjk(*tri, v(box->half), place(*box)); }
 
 }  // extern "C"
