@@ -9,6 +9,7 @@
 #include <map>
 #include <string>
 
+#include "collide/moving_box.h"
 #include "harness/model/mesh_query.h"
 
 namespace cc::bullet_oracle {
@@ -135,6 +136,16 @@ TEST(BulletSecondOpinion, GjkOnATriangleAndABox) {
   EXPECT_FALSE(obb({{{Vec3{1.5, 0, -1}, Vec3{1.5, 0, 1}, Vec3{3, 0, 0}}}, turned}));
 }
 
+TEST(BulletSecondOpinion, ACastFindsBoxesMeetingDuringTheStep) {
+  const auto says = [](const harness::MovingObbInput& in) { return hit(ask(in).at("bullet.btGjkConvexCast")); };
+  const Obb unit{{0, 0, 0}, {1, 1, 1}, Mat3::identity()};
+  const auto moving = [](const Obb& box, const Vec3& velocity) { return MovingObb{box, velocity}; };
+  EXPECT_TRUE(says({moving(unit, {0, 0, 0}), moving({{4, 0, 0}, {1, 1, 1}, Mat3::identity()}, {-3, 0, 0})}));  // meet at t = 2/3
+  EXPECT_FALSE(says({moving(unit, {0, 0, 0}), moving({{4, 0, 0}, {1, 1, 1}, Mat3::identity()}, {-1, 0, 0})}));  // stop 1 short
+  EXPECT_FALSE(says({moving(unit, {0, 0, 0}), moving({{0, 3, 0}, {1, 1, 1}, Mat3::identity()}, {5, 0, 0})}));   // pass beside
+  EXPECT_TRUE(says({moving(unit, {1, 0, 0}), moving({{0.5, 0, 0}, {1, 1, 1}, Mat3::identity()}, {1, 0, 0})}));  // overlapping at the start
+}
+
 TEST(BulletSecondOpinion, PartiesMatchTheOpinionsOfEveryKind) {
   const BulletSecondOpinion bullet;
   for (harness::QueryKind kind : harness::kAllQueryKinds) {
@@ -151,6 +162,7 @@ TEST(BulletSecondOpinion, PartiesMatchTheOpinionsOfEveryKind) {
   EXPECT_EQ(bullet.parties(harness::QueryKind::broadphase).size(), 2u);
   EXPECT_EQ(bullet.parties(harness::QueryKind::tri_aabb).size(), 1u);
   EXPECT_EQ(bullet.parties(harness::QueryKind::tri_obb).size(), 1u);
+  EXPECT_EQ(bullet.parties(harness::QueryKind::moving_obb).size(), 1u);
 }
 
 TEST(BulletSecondOpinion, ItsVersionIsTheHeadersOne) { EXPECT_EQ(bullet_version(), "3.24"); }
