@@ -146,6 +146,21 @@ TEST(BulletSecondOpinion, ACastFindsBoxesMeetingDuringTheStep) {
   EXPECT_TRUE(says({moving(unit, {1, 0, 0}), moving({{0.5, 0, 0}, {1, 1, 1}, Mat3::identity()}, {1, 0, 0})}));  // overlapping at the start
 }
 
+TEST(BulletSecondOpinion, GImpactFindsTheFacesOfTwoMeshesThatCross) {
+  Mesh a, b;
+  a.vertices = {{-2, -2, 0}, {2, -2, 0}, {0, 2, 0}, {10, 10, 10}, {11, 10, 10}, {10, 11, 10}};  // face 1 far away
+  a.faces = {{0, 1, 2}, {3, 4, 5}};
+  b.vertices = {{0, 0, -1}, {0, 0, 1}, {1, 0, 0}};  // through face 0 of a
+  b.faces = {{0, 1, 2}};
+  harness::MeshPair pair{harness::triangles_mesh(a), harness::triangles_mesh(b), {}, {}, {}};
+  const Opinion crossing = ask(harness::MeshMeshInput{pair}).at("bullet.btGImpactCollisionAlgorithm");
+  ASSERT_TRUE(hit(crossing));
+  EXPECT_EQ(crossing.answer.pairs, (std::vector<harness::FacePair>{{0, 0}}));
+  pair.pose_b.translation = {0, 0, 5};  // lifted clear
+  EXPECT_FALSE(hit(ask(harness::MeshMeshInput{pair}).at("bullet.btGImpactCollisionAlgorithm")));
+  EXPECT_FALSE(hit(ask(harness::MeshMeshFirstInput{pair}).at("bullet.btGImpactCollisionAlgorithm")));
+}
+
 TEST(BulletSecondOpinion, PartiesMatchTheOpinionsOfEveryKind) {
   const BulletSecondOpinion bullet;
   for (harness::QueryKind kind : harness::kAllQueryKinds) {
@@ -163,6 +178,8 @@ TEST(BulletSecondOpinion, PartiesMatchTheOpinionsOfEveryKind) {
   EXPECT_EQ(bullet.parties(harness::QueryKind::tri_aabb).size(), 1u);
   EXPECT_EQ(bullet.parties(harness::QueryKind::tri_obb).size(), 1u);
   EXPECT_EQ(bullet.parties(harness::QueryKind::moving_obb).size(), 1u);
+  EXPECT_EQ(bullet.parties(harness::QueryKind::mesh_mesh).size(), 1u);
+  EXPECT_EQ(bullet.parties(harness::QueryKind::mesh_mesh_first).size(), 1u);
 }
 
 TEST(BulletSecondOpinion, ItsVersionIsTheHeadersOne) { EXPECT_EQ(bullet_version(), "3.24"); }
