@@ -1,7 +1,9 @@
 // A crosscheck subject made of Bullet's own tests (include/crosscheck/subject.h): build it as a
 // shared library and run `crosscheck campaign --subject PATH/libcrosscheck_bullet_subject.so`.
 // Each function hands the shapes to Bullet as Bullet's own callers would and returns its answer
-// (the triangle tests by GJK with collision margins 0, as an exact test would be asked).
+// (the triangle tests by GJK with collision margins 0, as an exact test would be asked). It
+// stands alone, as a user's subject does: it shares no code with crosscheck's Bullet parties
+// (oracle/bullet), though it asks some of the same calls.
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
 #include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
@@ -10,6 +12,7 @@
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
 #include <BulletCollision/CollisionShapes/btTriangleShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkConvexCast.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
@@ -27,12 +30,13 @@ struct AnyContact final : btDiscreteCollisionDetectorInterface::Result {
   void addContactPoint(const btVector3&, const btVector3&, btScalar) override { any = true; }
 };
 
-// A box as Bullet holds it: half extents with the default collision margin, a basis whose
-// columns are the box's axes.
+// The box's placement: a basis whose columns are its axes, as a rotation (a mirror-image frame,
+// which the interface allows, has its third axis negated: the same box).
 btTransform place(const cc_obb& b) {
+  btVector3 x = v(b.axis[0]), y = v(b.axis[1]), z = v(b.axis[2]);
+  if (x.dot(y.cross(z)) < 0) z = -z;
   btTransform t;
-  t.setBasis(btMatrix3x3(b.axis[0].x, b.axis[1].x, b.axis[2].x, b.axis[0].y, b.axis[1].y, b.axis[2].y, b.axis[0].z,
-                         b.axis[1].z, b.axis[2].z));
+  t.setBasis(btMatrix3x3(x.x(), y.x(), z.x(), x.y(), y.y(), z.y(), x.z(), y.z(), z.z()));
   t.setOrigin(v(b.center));
   return t;
 }
@@ -146,5 +150,20 @@ int crosscheck_tri_aabb(const cc_triangle* tri, const cc_aabb* box) {
 }
 
 int crosscheck_tri_obb(const cc_triangle* tri, const cc_obb* box) { return gjk(*tri, v(box->half), place(*box)); }
+
+// As Bullet's continuous collision is used: the boxes (default margin) cast over the step by
+// btGjkConvexCast, after a discrete test at its start (btBoxBoxDetector).
+int crosscheck_moving_obb(const cc_moving_obb* a, const cc_moving_obb* b) {
+  if (crosscheck_obb_obb(&a->box, &b->box)) return 1;
+  btBoxShape box_a(v(a->box.half)), box_b(v(b->box.half));
+  btVoronoiSimplexSolver simplex;
+  btGjkConvexCast cast(&box_a, &box_b, &simplex);
+  const btTransform a0 = place(a->box), b0 = place(b->box);
+  btTransform a1 = a0, b1 = b0;
+  a1.setOrigin(a0.getOrigin() + v(a->velocity));
+  b1.setOrigin(b0.getOrigin() + v(b->velocity));
+  btConvexCast::CastResult result;
+  return cast.calcTimeOfImpact(a0, a1, b0, b1, result) && result.m_fraction <= 1 ? 1 : 0;
+}
 
 }  // extern "C"

@@ -10,7 +10,8 @@
  * judges every answer against exact rational arithmetic and keeps each wrong one, shrunk, as a
  * case file. Inputs may be degenerate (zero extents, collinear triangles, zero directions),
  * touching to the last bit, huge or tiny; they are within crosscheck's own contract unless the
- * case says otherwise. A crash or a hang in a subject is a finding, not the end of a campaign.
+ * case says otherwise. In a campaign (and the fuzz targets) a crash or a hang in a subject is a
+ * finding, not the end of the run; `replay`, `triage` and `shrink` ask it in their own process.
  * Plain C: no crosscheck type or library is needed to build a subject. */
 #ifndef CROSSCHECK_SUBJECT_H
 #define CROSSCHECK_SUBJECT_H
@@ -36,10 +37,15 @@ typedef struct { cc_vec3 v[3]; } cc_triangle;
  * zero: then the origin alone, for any tmin <= tmax). */
 typedef struct { cc_vec3 origin, dir; double tmin, tmax; } cc_ray;
 
+/* A box moving with constant velocity over a step: at time t in [0, 1], box translated by
+ * t velocity. */
+typedef struct { cc_obb box; cc_vec3 velocity; } cc_moving_obb;
+
 /* Returns CROSSCHECK_SUBJECT_VERSION. */
 int crosscheck_subject_version(void);
 
-/* Each returns 1 when the two shapes share a point, 0 otherwise. */
+/* Each returns 1 when the two shapes share a point (two moving boxes: at some time of the step),
+ * 0 otherwise. */
 int crosscheck_ray_aabb(const cc_ray* ray, const cc_aabb* box);
 int crosscheck_sphere_sphere(const cc_sphere* a, const cc_sphere* b);
 int crosscheck_aabb_aabb(const cc_aabb* a, const cc_aabb* b);
@@ -47,6 +53,7 @@ int crosscheck_obb_obb(const cc_obb* a, const cc_obb* b);
 int crosscheck_tri_aabb(const cc_triangle* tri, const cc_aabb* box);
 int crosscheck_tri_obb(const cc_triangle* tri, const cc_obb* box);
 int crosscheck_tri_tri(const cc_triangle* a, const cc_triangle* b);
+int crosscheck_moving_obb(const cc_moving_obb* a, const cc_moving_obb* b);
 
 #ifdef __cplusplus
 }

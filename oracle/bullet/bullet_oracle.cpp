@@ -11,7 +11,9 @@ static_assert(sizeof(btScalar) == sizeof(double), "Bullet must be built in doubl
 namespace cc::bullet_oracle {
 
 std::string_view bullet_version() {
-  static const std::string version = std::to_string(BT_BULLET_VERSION / 100) + "." + std::to_string(BT_BULLET_VERSION % 100);
+  const int minor = BT_BULLET_VERSION % 100;  // 324: 3.24, 305: 3.05
+  static const std::string version =
+      std::to_string(BT_BULLET_VERSION / 100) + "." + (minor < 10 ? "0" : "") + std::to_string(minor);
   return version;
 }
 

@@ -25,21 +25,30 @@ struct Distance final : btDiscreteCollisionDetectorInterface::Result {
 
 }  // namespace
 
+std::optional<double> gjk_distance(const btConvexShape& a, const btTransform& place_a, const btConvexShape& b,
+                                   const btTransform& place_b) {
+  btVoronoiSimplexSolver simplex;
+  btGjkEpaPenetrationDepthSolver penetration;
+  btGjkPairDetector gjk(&a, &b, &simplex, &penetration);
+  btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+  input.m_maximumDistanceSquared = BT_LARGE_FLOAT;
+  input.m_transformA = place_a;
+  input.m_transformB = place_b;
+  Distance result;
+  gjk.getClosestPoints(input, result, nullptr);
+  if (!result.reported) return std::nullopt;
+  return result.distance;
+}
+
 harness::Opinion gjk_triangle_box(const Triangle& tri, const Vec3& half, const Mat3& axes, const Vec3& center) {
   btTriangleShape triangle(to_bullet(tri.v[0]), to_bullet(tri.v[1]), to_bullet(tri.v[2]));
   triangle.setMargin(0);
   btBoxShape box({1, 1, 1});
   set_half_extents(box, half);
-  btVoronoiSimplexSolver simplex;
-  btGjkEpaPenetrationDepthSolver penetration;
-  btGjkPairDetector gjk(&triangle, &box, &simplex, &penetration);
-  btDiscreteCollisionDetectorInterface::ClosestPointInput input;
-  input.m_maximumDistanceSquared = BT_LARGE_FLOAT;
-  input.m_transformA.setIdentity();
-  input.m_transformB = placement(axes, center);
-  Distance result;
-  gjk.getClosestPoints(input, result, nullptr);
-  return harness::answered(result.reported && result.distance <= 0);
+  btTransform identity;
+  identity.setIdentity();
+  const std::optional<double> distance = gjk_distance(triangle, identity, box, placement(axes, center));
+  return harness::answered(distance && *distance <= 0);
 }
 
 }  // namespace cc::bullet_oracle

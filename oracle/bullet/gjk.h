@@ -3,11 +3,21 @@
 // to oracle/bullet).
 #pragma once
 
+#include <BulletCollision/CollisionShapes/btConvexShape.h>
+#include <LinearMath/btTransform.h>
+
+#include <optional>
+
 #include "collide/triangle.h"
 #include "collide/vec3.h"
 #include "harness/judging/party.h"
 
 namespace cc::bullet_oracle {
+
+/// The distance GJK (with EPA for penetration) reports between two placed convex shapes (< 0
+/// overlapping), or nothing when it reports none.
+std::optional<double> gjk_distance(const btConvexShape& a, const btTransform& place_a, const btConvexShape& b,
+                                   const btTransform& place_b);
 
 /// A hit when GJK reports a distance <= 0 between the triangle (a btTriangleShape) and the box
 /// (a btBoxShape of these half extents placed by axes and centre), both with collision margin 0.

@@ -62,9 +62,8 @@ std::string faces_text(const std::vector<std::uint32_t>& faces) {
 }
 
 // Where CGAL gives the faces a ray meets (or the walls a disc touches): those, every one; for a
-// ray's hit, the first t: the upper
-// end of the exact reference's range must be CGAL's smallest double >= t, and its t one of the
-// two doubles around t.
+// ray's hit, the first t: the upper end of the exact reference's range must be CGAL's smallest
+// double >= t, and its t one of the two doubles around t.
 std::string face_differences(const harness::ExactVerdict& exact, const CgalAnswer& cgal) {
   if (!cgal.faces) return {};
   std::vector<std::uint32_t> exact_faces;

@@ -26,6 +26,7 @@
 #include "harness/formats/input_json.h"
 #include "harness/shrinking/shrink.h"
 #include "harness/shrinking/signature.h"
+#include "harness/model/subject.h"
 #include "tool/cases.h"
 #include "tool/child_process.h"
 #include "tool/commands.h"
@@ -135,7 +136,10 @@ struct Stored {
 Case stored_case(const Finding& f, const Input& input, const Evaluation& e, const CampaignArgs& args,
                  std::string not_shrunk) {
   const Provenance provenance{"campaign", args.seed, f.case_index, "seed " + std::to_string(args.seed)};
-  Case c = case_of(input, e, provenance, "untriaged: " + signature_of(f.kind, e) + (f.crash.empty() ? "" : "; " + f.crash));
+  const harness::Subject* subject = harness::subject_under_test();
+  Case c = case_of(input, e, provenance,
+                   "untriaged: " + (subject != nullptr ? "subject " + subject->path() + ": " : std::string()) +
+                       signature_of(f.kind, e) + (f.crash.empty() ? "" : "; " + f.crash));
   c.not_shrunk = std::move(not_shrunk);
   return c;
 }
@@ -239,7 +243,9 @@ Stored store_findings(const CampaignResult& r, const CampaignArgs& args, double 
   s.of.resize(r.findings.size());
   std::map<std::string, std::size_t> first_of_key;
   const std::vector<std::size_t> chosen = chosen_findings(r, args, s, first_of_key);
-  std::vector<std::string> known = stored_case_names(args.corpora);
+  // A subject's findings are its own: the cases stored of crosscheck's library are not theirs.
+  std::vector<std::string> known =
+      harness::subject_under_test() == nullptr ? stored_case_names(args.corpora) : std::vector<std::string>{};
   const bool tty = isatty(STDERR_FILENO) != 0;
   for (std::size_t n = 0; n < chosen.size(); ++n) {
     const Finding& f = r.findings[chosen[n]];
@@ -477,7 +483,7 @@ int run(const CampaignArgs& args) {
 
 void add_campaign_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CampaignArgs>();
-  auto* cmd = app.add_subcommand("campaign", "Run a differential campaign: library vs FCL/libccd vs exact arithmetic");
+  auto* cmd = app.add_subcommand("campaign", "Run a differential campaign: the library (or a subject) vs FCL/libccd and Bullet vs exact arithmetic");
   cmd->add_option("--query", args->queries, "A query kind to run (repeatable; default: all)")->check(query_kind_name());
   cmd->add_option("--seconds", args->seconds, "Time budget in seconds")->capture_default_str()->check(finite_above(0, 1e6));
   cmd->add_option("--seed", args->seed, "Seed of the case generator")->capture_default_str()->check(seed_value());

@@ -14,7 +14,7 @@
 
 namespace cc::tool {
 
-/// The three answers to an input, from the library, the exact reference and FCL/libccd.
+/// The three answers to an input, from the library, the exact reference and the peers (FCL/libccd, Bullet).
 harness::Evaluation evaluate_with_oracles(const harness::Input& input);
 /// The same through harness::evaluate_in_child: an input on which a party crashes or is cut
 /// short (FCL's managers and libccd can) evaluates to an oracle_crash instead of ending or

@@ -13,6 +13,7 @@
 #include "harness/model/library.h"
 #include "harness/shrinking/signature.h"
 #include "oracle/exact/exact_reference.h"
+#include "harness/model/subject.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
 #include "tool/subject_option.h"
@@ -88,7 +89,7 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
     return kExitBadInput;
   }
   put_subject_under_test(args.subject);
-  if (!library_answers(*kind)) {
+  if (!harness::library_answers(*kind)) {
     std::fprintf(stderr, "crosscheck fuzz-case: --subject: it does not answer %s\n", args.query.c_str());
     return kExitBadInput;
   }
@@ -135,7 +136,7 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
         static const exact::ExactRationalReference exact;
         e.library = ask_library(input);
         e.exact = exact.judge(input);
-        e.opinions = {{"fcl/libccd", Opinion::Status::failed, {}, how}};
+        e.opinions = {{"peers (FCL/libccd, Bullet)", Opinion::Status::failed, {}, how}};
         e.verdict.cls = CaseClass::oracle_crash;
       }
       write_new_case_file(path, case_of(input, e, provenance, note + "; " + how));

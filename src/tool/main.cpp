@@ -29,7 +29,7 @@ bool is_subcommand(const CLI::App& app, const std::string& word) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"crosscheck: the collision library checked against FCL/libccd and exact rational arithmetic"};
+  CLI::App app{"crosscheck: the collision library (or a subject) checked against FCL/libccd, Bullet and exact rational arithmetic"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("crosscheck ") + CROSSCHECK_VERSION + " (commit " + CROSSCHECK_COMMIT +
                                         "), FCL " + std::string(cc::fcl_oracle::fcl_version()) +

@@ -5,6 +5,7 @@
 
 #include "harness/judging/replay.h"
 #include "oracle/exact/exact_reference.h"
+#include "harness/model/subject.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
 #include "tool/subject_option.h"

@@ -3,6 +3,7 @@
 
 #include "harness/shrinking/shrink.h"
 #include "harness/shrinking/signature.h"
+#include "harness/model/subject.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
 #include "tool/subject_option.h"
@@ -23,7 +24,7 @@ int run(const ShrinkArgs& args) {
   put_subject_under_test(args.subject);
   const auto c = read_case_or_report(args.file);
   if (!c) return kExitBadInput;
-  if (!library_answers(harness::kind_of(c->input))) {
+  if (!harness::library_answers(harness::kind_of(c->input))) {
     std::fprintf(stderr, "crosscheck shrink: %s: the subject does not answer %s\n", args.file.c_str(),
                  std::string(name(harness::kind_of(c->input))).c_str());
     return kExitBadInput;

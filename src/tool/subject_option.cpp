@@ -39,11 +39,6 @@ void put_subject_under_test(const std::string& path) {
   if (!path.empty()) harness::put_under_test(loaded(path));
 }
 
-bool library_answers(harness::QueryKind kind) {
-  const harness::Subject* subject = harness::subject_under_test();
-  return subject == nullptr || subject->answers(kind);
-}
-
 std::vector<harness::QueryKind> answered_kinds(const std::vector<harness::QueryKind>& kinds, const char* command) {
   const harness::Subject* subject = harness::subject_under_test();
   if (subject == nullptr) return kinds;

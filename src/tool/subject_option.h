@@ -18,9 +18,6 @@ void add_subject_option(CLI::App* cmd, std::string& path);
 /// Puts the subject at `path` under test (nothing for an empty path).
 void put_subject_under_test(const std::string& path);
 
-/// Whether the library under test answers the kind (crosscheck's own answers every kind).
-bool library_answers(harness::QueryKind kind);
-
 /// Of `kinds`, those the library under test answers (all of them without a subject); prints the
 /// others, skipped, on standard output, prefixed by the command's name.
 std::vector<harness::QueryKind> answered_kinds(const std::vector<harness::QueryKind>& kinds, const char* command);

@@ -7,6 +7,7 @@
 #include "harness/judging/query_cost.h"
 #include "harness/model/input.h"
 #include "oracle/exact/exact_reference.h"
+#include "harness/model/subject.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
 #include "tool/subject_option.h"
@@ -54,7 +55,7 @@ int run(const TriageArgs& args) {
       status = kExitBadInput;
       continue;
     }
-    if (!library_answers(harness::kind_of(c->input))) {
+    if (!harness::library_answers(harness::kind_of(c->input))) {
       std::fprintf(stderr, "crosscheck triage: %s: the subject does not answer %s\n", file.c_str(),
                    std::string(name(harness::kind_of(c->input))).c_str());
       status = kExitBadInput;

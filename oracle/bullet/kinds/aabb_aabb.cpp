@@ -3,6 +3,7 @@
 // the inputs only, closed (touching overlaps), so exact.
 #include <LinearMath/btAabbUtil2.h>
 
+#include "oracle/bullet/convert.h"
 #include "oracle/bullet/parties.h"
 
 namespace cc::bullet_oracle {
@@ -12,8 +13,7 @@ const std::vector<Party<harness::AabbAabbInput>>& bullet_parties() {
   static const std::vector<Party<harness::AabbAabbInput>> parties = {
       {"bullet.TestAabbAgainstAabb2", {0, BandSides::exact, 0, "comparisons of inputs only: exact"},
        [](const harness::AabbAabbInput& in) {
-         const auto v = [](const Vec3& p) { return btVector3(p.x, p.y, p.z); };
-         return answered(TestAabbAgainstAabb2(v(in.a.lo), v(in.a.hi), v(in.b.lo), v(in.b.hi)));
+         return answered(TestAabbAgainstAabb2(to_bullet(in.a.lo), to_bullet(in.a.hi), to_bullet(in.b.lo), to_bullet(in.b.hi)));
        }}};
   return parties;
 }

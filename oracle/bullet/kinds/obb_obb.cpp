@@ -24,7 +24,7 @@ struct AnyContact final : btDiscreteCollisionDetectorInterface::Result {
   void addContactPoint(const btVector3&, const btVector3&, btScalar) override { any = true; }
 };
 
-Opinion boxes(const harness::ObbObbInput& in) {
+Opinion box_box_detector(const harness::ObbObbInput& in) {
   btBoxShape shape_a({1, 1, 1}), shape_b({1, 1, 1});
   set_half_extents(shape_a, in.a.half), set_half_extents(shape_b, in.b.half);
   btDiscreteCollisionDetectorInterface::ClosestPointInput input;
@@ -43,7 +43,7 @@ const std::vector<Party<harness::ObbObbInput>>& bullet_parties() {
   static const std::vector<Party<harness::ObbObbInput>> parties = {
       {"bullet.btBoxBoxDetector",
        {0x1p-14, BandSides::two_sided, 0, "fudge2 = 1e-5 added to every |R_ij| before the edge axes: up to 4e-5 of the extents"},
-       boxes}};
+       box_box_detector}};
   return parties;
 }
 

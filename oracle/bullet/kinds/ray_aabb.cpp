@@ -41,15 +41,14 @@ Opinion ray_aabb2(const harness::RayAabbInput& in) {
   return answered(btRayAabb2(to_bullet(r.origin), inverse, sign, bounds, t_enter, r.tmin, r.tmax));
 }
 
-double largest_magnitude(const Vec3& v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
 
 Opinion ray_aabb(const harness::RayAabbInput& in) {
   const Ray& r = in.ray;
   if (!std::isfinite(r.tmin) || !std::isfinite(r.tmax)) return not_applicable("a ray of infinite length (btRayAabb takes segments)");
   if (!(r.tmin <= r.tmax)) return not_applicable("an empty parameter range (tmin > tmax)");
   const Vec3 from = r.tmin == 0 ? r.origin : r.origin + r.tmin * r.dir, to = r.origin + r.tmax * r.dir;
-  const double scale = std::max({largest_magnitude(in.box.lo), largest_magnitude(in.box.hi), largest_magnitude(r.origin)});
-  if (!(std::max(largest_magnitude(from), largest_magnitude(to)) <= 8 * scale)) {
+  const double scale = std::max({max_abs(in.box.lo), max_abs(in.box.hi), max_abs(r.origin)});
+  if (!(std::max(max_abs(from), max_abs(to)) <= 8 * scale)) {
     return not_applicable("the segment reaches beyond 8 times the scale of the box and the origin");
   }
   btScalar param = 1;

@@ -21,7 +21,6 @@
 namespace cc::bullet_oracle {
 namespace {
 
-double largest_magnitude(const Vec3& v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
 
 // Keeps the face of the closest hit (Bullet calls it for each nearer hit it finds).
 struct ClosestFace final : btTriangleRaycastCallback {
@@ -33,19 +32,21 @@ struct ClosestFace final : btTriangleRaycastCallback {
   }
 };
 
-Opinion raycast(const harness::RayMeshInput& in) {
+Opinion perform_raycast(const harness::RayMeshInput& in) {
   const Ray& r = in.ray;
   if (in.mesh.mesh == nullptr) return not_applicable("no mesh");
   if (!std::isfinite(r.tmin) || !std::isfinite(r.tmax)) return not_applicable("a ray of infinite length (Bullet casts segments)");
   if (!(r.tmin <= r.tmax)) return not_applicable("an empty parameter range (tmin > tmax)");
   const Mesh& mesh = *in.mesh.mesh;
-  double scale = largest_magnitude(r.origin);
-  for (const Vec3& p : mesh.vertices) scale = std::max(scale, largest_magnitude(p));
+  double scale = max_abs(r.origin);
+  for (const Vec3& p : mesh.vertices) scale = std::max(scale, max_abs(p));
   const Vec3 from = r.tmin == 0 ? r.origin : r.origin + r.tmin * r.dir, to = r.origin + r.tmax * r.dir;
-  if (!(std::max(largest_magnitude(from), largest_magnitude(to)) <= 8 * scale)) {
+  if (!(std::max(max_abs(from), max_abs(to)) <= 8 * scale)) {
     return not_applicable("the segment reaches beyond 8 times the scale of the mesh and the origin");
   }
   if (mesh.faces.empty()) return answered(false);
+  // The quantized BVH keeps 21 bits of a triangle's index (its part the other 10).
+  if (mesh.size() >= (1u << 21)) return not_applicable("more faces than the quantized BVH numbers (2^21)");
   btTriangleMesh triangles;  // 32-bit indices, vertices as btVector3 (doubles)
   for (std::uint32_t f = 0; f < mesh.size(); ++f) {
     const Triangle t = mesh.triangle(f);
@@ -69,7 +70,7 @@ const std::vector<Party<harness::RayMeshInput>>& bullet_parties() {
        {0x1p-12, BandSides::two_sided, 0,
         "a point within -1e-4 |n|^2 of a face's sub-triangle products is inside: about 1e-4 of the face's size; "
         "a segment touching a face's plane only at an end never hits"},
-       raycast}};
+       perform_raycast}};
   return parties;
 }
 

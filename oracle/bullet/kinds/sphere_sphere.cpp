@@ -12,6 +12,7 @@
 #include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
 
+#include "oracle/bullet/convert.h"
 #include "oracle/bullet/parties.h"
 
 namespace cc::bullet_oracle {
@@ -40,15 +41,15 @@ struct AnyContact final : btCollisionWorld::ContactResultCallback {
   }
 };
 
-Opinion spheres(const harness::SphereSphereInput& in) {
+Opinion contact_pair_test(const harness::SphereSphereInput& in) {
   btSphereShape shape_a(in.a.radius), shape_b(in.b.radius);
   btCollisionObject a, b;
   a.setCollisionShape(&shape_a), b.setCollisionShape(&shape_b);
   btTransform place;
   place.setIdentity();
-  place.setOrigin({in.a.center.x, in.a.center.y, in.a.center.z});
+  place.setOrigin(to_bullet(in.a.center));
   a.setWorldTransform(place);
-  place.setOrigin({in.b.center.x, in.b.center.y, in.b.center.z});
+  place.setOrigin(to_bullet(in.b.center));
   b.setWorldTransform(place);
   AnyContact contact;
   world().contactPairTest(&a, &b, contact);
@@ -63,7 +64,7 @@ const std::vector<Party<harness::SphereSphereInput>>& bullet_parties() {
       {"bullet.btSphereSphereCollisionAlgorithm",
        {0x1p-47, BandSides::two_sided, 0,
         "the centres' distance as a square root of rounded squares (4u) against the rounded sum of the radii (u)"},
-       spheres}};
+       contact_pair_test}};
   return parties;
 }
 

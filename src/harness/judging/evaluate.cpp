@@ -1,5 +1,6 @@
 #include "harness/judging/evaluate.h"
 
+#include <stdexcept>
 #include <string>
 #include <system_error>
 
@@ -11,13 +12,26 @@ namespace cc::harness {
 
 Evaluation evaluate(const Input& input, const ExactReference& exact, const SecondOpinion* second) {
   Evaluation e;
-  e.library = ask_library(input);
+  try {
+    e.library = ask_library(input);
+  } catch (const std::exception& ex) {  // a subject's answer that is no answer (subject.h)
+    e.library_failure = std::string("threw: ") + ex.what();
+  }
   e.exact = exact.judge(input);
   e.opinions = library_alternatives(input);
   if (second != nullptr) {
     for (Opinion& o : second->opinions(input)) e.opinions.push_back(std::move(o));
   }
   e.verdict = classify(kind_of(input), e.library, e.exact, e.opinions);
+  if (!e.library_failure.empty()) {
+    e.verdict.cls = CaseClass::impl_bug;
+    const PartyStanding failure{"library", Standing::failed, e.library_failure};
+    if (e.verdict.parties.empty()) {
+      e.verdict.parties.push_back(failure);
+    } else {
+      e.verdict.parties.front() = failure;
+    }
+  }
   return e;
 }
 

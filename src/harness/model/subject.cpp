@@ -19,6 +19,7 @@ cc_sphere to_c(const Sphere& s) { return {to_c(s.center), s.radius}; }
 cc_obb to_c(const Obb& b) { return {to_c(b.center), to_c(b.half), {to_c(b.axes.col[0]), to_c(b.axes.col[1]), to_c(b.axes.col[2])}}; }
 cc_triangle to_c(const Triangle& t) { return {{to_c(t.v[0]), to_c(t.v[1]), to_c(t.v[2])}}; }
 cc_ray to_c(const Ray& r) { return {to_c(r.origin), to_c(r.dir), r.tmin, r.tmax}; }
+cc_moving_obb to_c(const MovingObb& m) { return {to_c(m.box), to_c(m.velocity)}; }
 
 // The interface takes a kind whose input is two shapes it has a struct for, in the input's
 // order (found by the fields, as the kinds are made).
@@ -77,7 +78,7 @@ std::shared_ptr<const Subject> Subject::load(const std::string& path) {
 }
 
 Answer Subject::ask(const Input& input) const {
-  void* function = functions_[input.index()];
+  void* function = functions_[static_cast<std::size_t>(kind_of(input))];
   if (function == nullptr) {
     throw std::runtime_error("the subject " + path_ + " does not answer " + std::string(name(kind_of(input))));
   }
@@ -99,5 +100,10 @@ Answer Subject::ask(const Input& input) const {
 
 void put_under_test(std::shared_ptr<const Subject> subject) { under_test() = std::move(subject); }
 const Subject* subject_under_test() { return under_test().get(); }
+
+bool library_answers(QueryKind kind) {
+  const Subject* subject = subject_under_test();
+  return subject == nullptr || subject->answers(kind);
+}
 
 }  // namespace cc::harness

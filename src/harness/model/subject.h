@@ -38,4 +38,7 @@ class Subject {
 void put_under_test(std::shared_ptr<const Subject> subject);
 const Subject* subject_under_test();
 
+/// Whether the library under test answers the kind (crosscheck's own answers every kind).
+bool library_answers(QueryKind kind);
+
 }  // namespace cc::harness

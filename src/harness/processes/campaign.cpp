@@ -54,7 +54,7 @@ std::string_view phase_name(int phase) {
   switch (phase) {
     case in_library: return "the library";
     case in_exact: return "the exact reference";
-    case in_second_opinion: return "the second opinion (FCL/libccd)";
+    case in_second_opinion: return "the second opinions (FCL/libccd, Bullet)";
   }
   return "between cases";
 }
@@ -243,7 +243,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       if (auto e = evaluate_in_child(f.input, *exact, *second)) {
         f.evaluation = std::move(*e);
       } else {
-        f.crash = "the second opinion (FCL/libccd) failed when asked again in a child process";
+        f.crash = "the second opinions (FCL/libccd, Bullet) failed when asked again in a child process";
         phase = in_second_opinion;
       }
     }

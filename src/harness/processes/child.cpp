@@ -40,7 +40,12 @@ Child start_child(const std::function<int(int out)>& f) {
   }
   if (pid == 0) {
     ::close(fds[0]);
-    std::_Exit(f(fds[1]));
+    int status = kChildThrew;
+    try {
+      status = f(fds[1]);
+    } catch (...) {  // never unwinds into the parent's code: the child ends here
+    }
+    std::_Exit(status);
   }
   ::close(fds[1]);
   return {pid, fds[0]};

@@ -39,10 +39,13 @@ struct ChildEnd {
   std::string what() const;
 };
 
+/// The exit status of a child whose function threw (a C++ exception never leaves the child).
+inline constexpr int kChildThrew = 70;
+
 /// Forks a child that runs f(out), `out` being the write end of the pipe to the parent, and
 /// exits with f's return value by std::_Exit (no atexit handlers or static destructors run in
-/// the child). Buffered stdio output is flushed first, so nothing is written twice. Throws
-/// std::system_error when the pipe or the fork fails.
+/// the child), or with kChildThrew when f throws. Buffered stdio output is flushed first, so
+/// nothing is written twice. Throws std::system_error when the pipe or the fork fails.
 Child start_child(const std::function<int(int out)>& f);
 
 /// Waits for a child to end (reaps it) and says how. `out` is left to the caller.

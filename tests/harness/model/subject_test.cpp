@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "harness/judging/evaluate.h"
 #include "harness/model/library.h"
 #include "harness/processes/campaign.h"
 #include "oracle/exact/exact_reference.h"
@@ -81,9 +82,16 @@ TEST(Subject, ALibraryThatIsNoSubjectIsRefusedWithTheReason) {
   EXPECT_EQ(refusal(test_subject("misbehaving")), "(loaded)");
 }
 
-TEST(Subject, AnAnswerThatIsNeitherZeroNorOneThrows) {
+TEST(Subject, AnAnswerThatIsNeitherZeroNorOneThrowsAndIsAFailure) {
   const auto subject = Subject::load(test_subject("misbehaving"));
-  EXPECT_THROW(subject->ask(SphereSphereInput{{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}), std::runtime_error);
+  const SphereSphereInput spheres{{{0, 0, 0}, 1}, {{1, 0, 0}, 1}};
+  EXPECT_THROW(subject->ask(spheres), std::runtime_error);
+  const UnderTest misbehaving(subject);
+  const Evaluation e = evaluate(spheres, exact::ExactRationalReference(), nullptr);
+  EXPECT_EQ(e.verdict.cls, CaseClass::impl_bug);
+  ASSERT_FALSE(e.verdict.parties.empty());
+  EXPECT_EQ(e.verdict.parties[0].standing, Standing::failed);
+  EXPECT_NE(e.library_failure.find("returned 7"), std::string::npos) << e.library_failure;
 }
 
 TEST(Subject, ACrashOrAHangInASubjectIsAFindingNotTheEndOfTheCampaign) {
