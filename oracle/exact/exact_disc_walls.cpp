@@ -15,29 +15,12 @@ struct QVec2 {
 QVec2 rational(const Vec2& v) { return {exact::rational(v.x), exact::rational(v.y)}; }
 Rational dot(const QVec2& a, const QVec2& b) { return a.x * b.x + a.y * b.y; }
 
-// a + b for a, b >= 0, normalised.
-Magnitude sum(Magnitude a, Magnitude b) {
-  if (a.m == 0) return b;
-  if (b.m == 0) return a;
-  const long e = std::max(a.e, b.e);
-  const double m = std::ldexp(a.m, static_cast<int>(std::max(a.e - e, -2000L))) +
-                   std::ldexp(b.m, static_cast<int>(std::max(b.e - e, -2000L)));
-  return Magnitude{m, e} * Magnitude{1, 0};
-}
-
-// The square root of a >= 0.
-Magnitude root(Magnitude a) {
-  if (a.m == 0) return a;
-  if (a.e % 2 != 0) a.m *= 2, a.e -= 1;
-  return Magnitude{std::sqrt(a.m), a.e / 2} * Magnitude{1, 0};
-}
-
 // r - |c - wall| over the scale, computed as (r^2 - |c - wall|^2) / (r + |c - wall|) with
 // exponents kept apart and the exact sign, so that it is 0 only for a wall the disc touches.
 double wall_margin(const ExactDiscWall& e, double radius) {
   const Rational& slack = e.slack;
   if (sgn(slack) == 0) return 0;
-  const Magnitude reach = sum(Magnitude::of(exact::rational(radius)), root(Magnitude::of(e.distance2)));
+  const Magnitude reach = Magnitude::of(exact::rational(radius)) + sqrt(Magnitude::of(e.distance2));
   const Magnitude scale = Magnitude::of(exact::rational(scale_of(e.scale)));
   return signed_margin((Magnitude::of(slack) / reach / scale).to_double(), sgn(slack));
 }

@@ -104,6 +104,21 @@ double Magnitude::to_double() const {
 Magnitude operator*(Magnitude a, Magnitude b) { return normalised(a.m * b.m, a.e + b.e); }
 Magnitude operator/(Magnitude a, Magnitude b) { return normalised(a.m / b.m, a.e - b.e); }
 
+Magnitude operator+(Magnitude a, Magnitude b) {
+  if (a.m == 0) return b;
+  if (b.m == 0) return a;
+  const long e = std::max(a.e, b.e);
+  return normalised(std::ldexp(a.m, static_cast<int>(std::max(a.e - e, -2000L))) +
+                        std::ldexp(b.m, static_cast<int>(std::max(b.e - e, -2000L))),
+                    e);
+}
+
+Magnitude sqrt(Magnitude a) {
+  if (a.m == 0) return a;
+  if (a.e % 2 != 0) a.m *= 2, a.e -= 1;
+  return normalised(std::sqrt(a.m), a.e / 2);
+}
+
 Magnitude length(const QVec3& a) {
   long e = std::numeric_limits<long>::min();
   for (int i = 0; i < 3; ++i) {

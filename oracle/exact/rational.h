@@ -45,6 +45,10 @@ struct Magnitude {
 };
 Magnitude operator*(Magnitude a, Magnitude b);
 Magnitude operator/(Magnitude a, Magnitude b);
+/// a + b for a, b >= 0 (rounded).
+Magnitude operator+(Magnitude a, Magnitude b);
+/// The square root of a >= 0 (rounded).
+Magnitude sqrt(Magnitude a);
 
 /// Euclidean length (as a Magnitude, so it neither underflows nor overflows).
 Magnitude length(const QVec3& a);

@@ -10,20 +10,6 @@
 #include "oracle/exact/rational.h"
 
 namespace cc::exact {
-namespace {
-
-// a + b for a, b >= 0.
-Magnitude sum(Magnitude a, Magnitude b) {
-  if (a.m == 0) return b;
-  if (b.m == 0) return a;
-  const long e = std::max(a.e, b.e);
-  const double m = std::ldexp(a.m, static_cast<int>(std::max(a.e - e, -2000L))) +
-                   std::ldexp(b.m, static_cast<int>(std::max(b.e - e, -2000L)));
-  return Magnitude{m, e} * Magnitude{1, 0};  // normalised
-}
-
-}  // namespace
-
 template <>
 ExactVerdict judge(const harness::SphereSphereInput& in) {
   const Sphere &a = in.a, &b = in.b;
@@ -43,7 +29,7 @@ ExactVerdict judge(const harness::SphereSphereInput& in) {
     // Decided all the same, the same margin computed with exponents kept apart, so that it
     // neither underflows nor overflows.
     const Magnitude scale = Magnitude::of(rational(scale_of(magnitude)));
-    const Magnitude denominator = sum(Magnitude::of(reach), length(d));
+    const Magnitude denominator = Magnitude::of(reach) + length(d);
     v.margin = sgn(slack) == 0 ? 0.0 : (Magnitude::of(slack) / denominator / scale).to_double();
     return beyond_range(v, *why);
   }
