@@ -10,7 +10,12 @@
 #include <BulletCollision/CollisionDispatch/btCollisionWorld.h>
 #include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
+#include <BulletCollision/CollisionShapes/btBvhTriangleMeshShape.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
+#include <BulletCollision/CollisionShapes/btTriangleMesh.h>
+#include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
+#include <BulletCollision/Gimpact/btGImpactShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btRaycastCallback.h>
 #include <BulletCollision/CollisionShapes/btTriangleShape.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkConvexCast.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
@@ -18,6 +23,11 @@
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
 #include <LinearMath/btAabbUtil2.h>
 #include <crosscheck/subject.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <vector>
 
 namespace {
 
@@ -71,13 +81,71 @@ int gjk(const cc_triangle& tri, const btVector3& half, const btTransform& box_pl
   return result.reported && result.distance <= 0 ? 1 : 0;
 }
 
-// A collision world, made once, for its dispatcher's algorithms.
+// A collision world, made once, for its dispatcher's algorithms (GImpact registered for the
+// contact pair test's closest points too).
 struct World {
   btDefaultCollisionConfiguration configuration;
   btCollisionDispatcher dispatcher{&configuration};
   btDbvtBroadphase pairs;
   btCollisionWorld world{&dispatcher, &pairs, &configuration};
+  btGImpactCollisionAlgorithm::CreateFunc gimpact;
+  World() {
+    btGImpactCollisionAlgorithm::registerAlgorithm(&dispatcher);
+    for (int other = 0; other < MAX_BROADPHASE_COLLISION_TYPES; ++other) {
+      dispatcher.registerClosestPointsCreateFunc(GIMPACT_SHAPE_PROXYTYPE, other, &gimpact);
+      dispatcher.registerClosestPointsCreateFunc(other, GIMPACT_SHAPE_PROXYTYPE, &gimpact);
+    }
+  }
 };
+
+btCollisionWorld& world() {
+  static World w;
+  return w.world;
+}
+
+// A mesh's triangles in order (face f is Bullet's triangle f).
+std::unique_ptr<btTriangleMesh> triangles_of(const cc_mesh& m) {
+  auto t = std::make_unique<btTriangleMesh>();
+  for (unsigned f = 0; f < m.face_count; ++f) {
+    t->addTriangle(v(m.vertices[m.faces[f][0]]), v(m.vertices[m.faces[f][1]]), v(m.vertices[m.faces[f][2]]), false);
+  }
+  return t;
+}
+
+btTransform placed(const cc_pose& p) {
+  btTransform t;
+  t.setBasis(btMatrix3x3(p.rotation[0][0], p.rotation[0][1], p.rotation[0][2], p.rotation[1][0], p.rotation[1][1],
+                         p.rotation[1][2], p.rotation[2][0], p.rotation[2][1], p.rotation[2][2]));
+  t.setOrigin(v(p.translation));
+  return t;
+}
+
+// The face pairs of the contacts GImpact reports between the two placed meshes (margin 0).
+std::vector<cc_face_pair> gimpact_pairs(const cc_mesh& a, const cc_pose& pa, const cc_mesh& b, const cc_pose& pb) {
+  struct Pairs final : btCollisionWorld::ContactResultCallback {
+    std::vector<cc_face_pair> pairs;
+    btScalar addSingleResult(btManifoldPoint&, const btCollisionObjectWrapper*, int, int i, const btCollisionObjectWrapper*,
+                             int, int j) override {
+      pairs.push_back({static_cast<unsigned>(i), static_cast<unsigned>(j)});
+      return 0;
+    }
+  } contacts;
+  if (a.face_count == 0 || b.face_count == 0) return {};
+  const auto ta = triangles_of(a), tb = triangles_of(b);
+  btGImpactMeshShape shape_a(ta.get()), shape_b(tb.get());
+  shape_a.setMargin(0), shape_b.setMargin(0);
+  shape_a.updateBound(), shape_b.updateBound();
+  btCollisionObject object_a, object_b;
+  object_a.setCollisionShape(&shape_a), object_b.setCollisionShape(&shape_b);
+  object_a.setWorldTransform(placed(pa)), object_b.setWorldTransform(placed(pb));
+  world().contactPairTest(&object_a, &object_b, contacts);
+  std::sort(contacts.pairs.begin(), contacts.pairs.end(),
+            [](const cc_face_pair& x, const cc_face_pair& y) { return x.a != y.a ? x.a < y.a : x.b < y.b; });
+  contacts.pairs.erase(std::unique(contacts.pairs.begin(), contacts.pairs.end(),
+                                   [](const cc_face_pair& x, const cc_face_pair& y) { return x.a == y.a && x.b == y.b; }),
+                       contacts.pairs.end());
+  return contacts.pairs;
+}
 
 struct AnyWorldContact final : btCollisionWorld::ContactResultCallback {
   bool any = false;
@@ -126,7 +194,6 @@ int crosscheck_obb_obb(const cc_obb* a, const cc_obb* b) {
 
 // Two btSphereShape objects through the world's contact pair test.
 int crosscheck_sphere_sphere(const cc_sphere* a, const cc_sphere* b) {
-  static World w;
   btSphereShape shape_a(a->radius), shape_b(b->radius);
   btCollisionObject object_a, object_b;
   object_a.setCollisionShape(&shape_a);
@@ -138,7 +205,7 @@ int crosscheck_sphere_sphere(const cc_sphere* a, const cc_sphere* b) {
   t.setOrigin(v(b->center));
   object_b.setWorldTransform(t);
   AnyWorldContact contact;
-  w.world.contactPairTest(&object_a, &object_b, contact);
+  world().contactPairTest(&object_a, &object_b, contact);
   return contact.any ? 1 : 0;
 }
 
@@ -164,6 +231,50 @@ int crosscheck_moving_obb(const cc_moving_obb* a, const cc_moving_obb* b) {
   b1.setOrigin(b0.getOrigin() + v(b->velocity));
   btConvexCast::CastResult result;
   return cast.calcTimeOfImpact(a0, a1, b0, b1, result) && result.m_fraction <= 1 ? 1 : 0;
+}
+
+// As btCollisionWorld casts a ray at a static mesh: a segment (a ray of infinite range cut where
+// it has passed the whole mesh) through a BVH of the triangles; the face of the nearest hit.
+int crosscheck_ray_mesh(const cc_ray* ray, const cc_mesh* mesh, unsigned* face) {
+  if (mesh->face_count == 0) return 0;
+  const btVector3 origin = v(ray->origin), dir = v(ray->dir);
+  btScalar reach = 0;
+  for (unsigned i = 0; i < mesh->vertex_count; ++i) reach = std::max(reach, (v(mesh->vertices[i]) - origin).length());
+  const btScalar far = dir.length() > 0 ? 2 * reach / dir.length() + 1 : 0;
+  const btScalar t0 = std::isfinite(ray->tmin) ? ray->tmin : -far, t1 = std::isfinite(ray->tmax) ? ray->tmax : far;
+  if (!(t0 <= t1)) return 0;
+  struct Closest final : btTriangleRaycastCallback {
+    using btTriangleRaycastCallback::btTriangleRaycastCallback;
+    int face = -1;
+    btScalar reportHit(const btVector3&, btScalar fraction, int, int triangle) override {
+      face = triangle;
+      return fraction;
+    }
+  };
+  const auto triangles = triangles_of(*mesh);
+  btBvhTriangleMeshShape shape(triangles.get(), true);
+  const btVector3 from = origin + dir * t0, to = origin + dir * t1;
+  Closest closest(from, to, 0);
+  shape.performRaycast(&closest, from, to);
+  if (closest.face < 0) return 0;
+  *face = static_cast<unsigned>(closest.face);
+  return 1;
+}
+
+// GImpact on the two placed meshes, as a btCollisionWorld pairs two concave meshes.
+int crosscheck_mesh_mesh(const cc_mesh* a, const cc_pose* pose_a, const cc_mesh* b, const cc_pose* pose_b,
+                         cc_face_pair* pairs, unsigned capacity) {
+  const std::vector<cc_face_pair> found = gimpact_pairs(*a, *pose_a, *b, *pose_b);
+  std::copy_n(found.begin(), std::min<std::size_t>(found.size(), capacity), pairs);
+  return static_cast<int>(found.size());
+}
+
+int crosscheck_mesh_mesh_first(const cc_mesh* a, const cc_pose* pose_a, const cc_mesh* b, const cc_pose* pose_b,
+                               cc_face_pair* pair) {
+  const std::vector<cc_face_pair> found = gimpact_pairs(*a, *pose_a, *b, *pose_b);
+  if (found.empty()) return 0;
+  *pair = found.front();
+  return 1;
 }
 
 }  // extern "C"

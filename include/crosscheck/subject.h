@@ -1,8 +1,9 @@
 /* crosscheck's subject interface: put your own collision code under test.
  *
  * A subject is a shared library exporting crosscheck_subject_version() and, for each query kind
- * it answers, a function named crosscheck_<kind> taking the kind's two shapes as plain structs of
- * doubles and returning 1 when they meet (touching counts) and 0 when they do not. Export only
+ * it answers, a function named crosscheck_<kind> taking the kind's shapes as plain structs of
+ * doubles and returning 1 when they meet (touching counts) and 0 when they do not (the mesh
+ * kinds also name the faces that meet). Export only
  * the kinds you have; crosscheck skips and lists the others. Then
  *
  *     crosscheck campaign --subject ./libmine.so
@@ -41,6 +42,19 @@ typedef struct { cc_vec3 origin, dir; double tmin, tmax; } cc_ray;
  * t velocity. */
 typedef struct { cc_obb box; cc_vec3 velocity; } cc_moving_obb;
 
+/* A triangle mesh: vertex_count vertices, face_count faces, each three indices of vertices (a
+ * face may be degenerate: a segment or a point). */
+typedef struct {
+  const cc_vec3* vertices;
+  unsigned vertex_count;
+  const unsigned (*faces)[3];
+  unsigned face_count;
+} cc_mesh;
+/* A rigid placement p -> rotation p + translation (rotation row by row, a proper rotation). */
+typedef struct { double rotation[3][3]; cc_vec3 translation; } cc_pose;
+/* A face of mesh a and a face of mesh b. */
+typedef struct { unsigned a, b; } cc_face_pair;
+
 /* Returns CROSSCHECK_SUBJECT_VERSION. */
 int crosscheck_subject_version(void);
 
@@ -54,6 +68,18 @@ int crosscheck_tri_aabb(const cc_triangle* tri, const cc_aabb* box);
 int crosscheck_tri_obb(const cc_triangle* tri, const cc_obb* box);
 int crosscheck_tri_tri(const cc_triangle* a, const cc_triangle* b);
 int crosscheck_moving_obb(const cc_moving_obb* a, const cc_moving_obb* b);
+
+/* The ray against the mesh: 1 when it meets a face, *face then the face it meets first (at the
+ * least t); 0 when it meets none. */
+int crosscheck_ray_mesh(const cc_ray* ray, const cc_mesh* mesh, unsigned* face);
+/* The two placed meshes: every pair of faces that share a point, each once, in any order; at
+ * most `capacity` written to `pairs`. Returns how many pairs meet (more than capacity: the rest
+ * were not written, and crosscheck counts the answer as failed). */
+int crosscheck_mesh_mesh(const cc_mesh* a, const cc_pose* pose_a, const cc_mesh* b, const cc_pose* pose_b,
+                         cc_face_pair* pairs, unsigned capacity);
+/* The same asked for one pair: 1 and *pair when some pair of faces meets, 0 otherwise. */
+int crosscheck_mesh_mesh_first(const cc_mesh* a, const cc_pose* pose_a, const cc_mesh* b, const cc_pose* pose_b,
+                               cc_face_pair* pair);
 
 #ifdef __cplusplus
 }

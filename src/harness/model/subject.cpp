@@ -4,9 +4,14 @@
 
 #include <crosscheck/subject.h>
 
+#include <algorithm>
+#include <array>
+#include <concepts>
+#include <cstdint>
 #include <stdexcept>
 #include <tuple>
 #include <type_traits>
+#include <vector>
 
 #include "harness/formats/fields.h"
 
@@ -33,6 +38,15 @@ constexpr bool expressible() {
   }
 }
 
+// Its answer, 0 or 1 (anything else throws).
+bool hit_of(int said, QueryKind kind) {
+  if (said != 0 && said != 1) {
+    throw std::runtime_error("the subject's crosscheck_" + std::string(name(kind)) + " returned " + std::to_string(said) +
+                             ", neither 0 (miss) nor 1 (hit)");
+  }
+  return said == 1;
+}
+
 template <class In>
 int call(void* function, const In& in) {
   return std::apply(
@@ -42,6 +56,94 @@ int call(void* function, const In& in) {
         return std::apply([&](const auto&... s) { return reinterpret_cast<Fn>(function)(&s...); }, shapes);
       },
       Fields<In>::list);
+}
+
+// The kinds of a mesh, found by their inputs as the others are: a ray and a mesh; two placed
+// meshes, asked for every pair or one (their mode). Each has a signature of its own.
+static_assert(sizeof(Vec3) == sizeof(cc_vec3) && sizeof(std::array<std::uint32_t, 3>) == 3 * sizeof(unsigned),
+              "a mesh's arrays are handed to the subject as they are");
+
+template <class In>
+concept RayAndMesh = requires(const In& in) {
+  { in.ray } -> std::convertible_to<const Ray&>;
+  { in.mesh } -> std::convertible_to<const MeshRef&>;
+};
+
+template <class In>
+concept TwoPlacedMeshes = requires(const In& in) {
+  { in.meshes } -> std::convertible_to<const MeshPair&>;
+  { In::mode } -> std::convertible_to<CollisionMode>;
+};
+
+template <class In>
+constexpr bool has_mesh_signature = RayAndMesh<In> || TwoPlacedMeshes<In>;
+
+cc_mesh to_c(const MeshRef& ref) {
+  if (ref.mesh == nullptr) throw std::runtime_error("a case without its mesh");
+  const Mesh& m = *ref.mesh;
+  return {reinterpret_cast<const cc_vec3*>(m.vertices.data()), static_cast<unsigned>(m.vertices.size()),
+          reinterpret_cast<const unsigned(*)[3]>(m.faces.data()), static_cast<unsigned>(m.faces.size())};
+}
+
+cc_pose to_c(const RigidTransform& t) {
+  cc_pose p{};
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) p.rotation[r][c] = t.rotation(r, c);
+  }
+  p.translation = to_c(t.translation);
+  return p;
+}
+
+FacePair checked(const cc_face_pair& p, const MeshPair& m) {
+  if (p.a >= m.a.mesh->size() || p.b >= m.b.mesh->size()) {
+    throw std::runtime_error("the subject named a face pair (" + std::to_string(p.a) + ", " + std::to_string(p.b) +
+                             ") beyond the meshes' faces");
+  }
+  return {p.a, p.b};
+}
+
+template <class In>
+Answer ask_mesh_kind(void* function, const In& in, QueryKind kind) {
+  if constexpr (RayAndMesh<In>) {
+    const cc_ray ray = to_c(in.ray);
+    const cc_mesh mesh = to_c(in.mesh);
+    unsigned face = 0;
+    Answer a = Answer::of(
+        hit_of(reinterpret_cast<int (*)(const cc_ray*, const cc_mesh*, unsigned*)>(function)(&ray, &mesh, &face), kind));
+    if (!a.hit) return a;
+    if (face >= mesh.face_count) {
+      throw std::runtime_error("the subject named face " + std::to_string(face) + " of a mesh of " +
+                               std::to_string(mesh.face_count));
+    }
+    a.pairs = {{face, 0}};
+    return a;
+  } else {
+    const MeshPair& m = in.meshes;
+    const cc_mesh a = to_c(m.a), b = to_c(m.b);
+    const cc_pose pose_a = to_c(m.pose_a), pose_b = to_c(m.pose_b);
+    if constexpr (In::mode == CollisionMode::first_hit) {
+      cc_face_pair pair{};
+      using Fn = int (*)(const cc_mesh*, const cc_pose*, const cc_mesh*, const cc_pose*, cc_face_pair*);
+      Answer answer = Answer::of(hit_of(reinterpret_cast<Fn>(function)(&a, &pose_a, &b, &pose_b, &pair), kind));
+      if (answer.hit) answer.pairs = {checked(pair, m)};
+      return answer;
+    } else {
+      const auto capacity =
+          static_cast<unsigned>(std::min<std::uint64_t>(std::uint64_t{a.face_count} * b.face_count, 1u << 22));
+      std::vector<cc_face_pair> pairs(capacity);
+      using Fn = int (*)(const cc_mesh*, const cc_pose*, const cc_mesh*, const cc_pose*, cc_face_pair*, unsigned);
+      const int count = reinterpret_cast<Fn>(function)(&a, &pose_a, &b, &pose_b, pairs.data(), capacity);
+      if (count < 0 || static_cast<unsigned>(count) > capacity) {
+        throw std::runtime_error("the subject's crosscheck_" + std::string(name(kind)) + " returned " + std::to_string(count) +
+                                 " pairs, room for " + std::to_string(capacity));
+      }
+      Answer answer = Answer::of(count > 0);
+      for (int i = 0; i < count; ++i) answer.pairs.push_back(checked(pairs[static_cast<std::size_t>(i)], m));
+      std::sort(answer.pairs.begin(), answer.pairs.end());
+      answer.pairs.erase(std::unique(answer.pairs.begin(), answer.pairs.end()), answer.pairs.end());
+      return answer;
+    }
+  }
 }
 
 std::shared_ptr<const Subject>& under_test() {
@@ -66,7 +168,7 @@ std::shared_ptr<const Subject> Subject::load(const std::string& path) {
   bool any = false;
   for (QueryKind kind : kAllQueryKinds) {
     with_kind(kind, [&]<class In>() {
-      if constexpr (expressible<In>()) {
+      if constexpr (expressible<In>() || has_mesh_signature<In>) {
         void* f = dlsym(handle, ("crosscheck_" + std::string(name(kind))).c_str());
         subject->functions_[static_cast<std::size_t>(kind)] = f;
         any |= f != nullptr;
@@ -78,24 +180,20 @@ std::shared_ptr<const Subject> Subject::load(const std::string& path) {
 }
 
 Answer Subject::ask(const Input& input) const {
-  void* function = functions_[static_cast<std::size_t>(kind_of(input))];
-  if (function == nullptr) {
-    throw std::runtime_error("the subject " + path_ + " does not answer " + std::string(name(kind_of(input))));
-  }
-  const int said = std::visit(
-      [function]<class In>(const In& in) {
-        if constexpr (expressible<In>()) {
-          return call(function, in);
+  const QueryKind kind = kind_of(input);
+  void* function = functions_[static_cast<std::size_t>(kind)];
+  if (function == nullptr) throw std::runtime_error("the subject " + path_ + " does not answer " + std::string(name(kind)));
+  return std::visit(
+      [function, kind]<class In>(const In& in) -> Answer {
+        if constexpr (has_mesh_signature<In>) {
+          return ask_mesh_kind(function, in, kind);
+        } else if constexpr (expressible<In>()) {
+          return Answer::of(hit_of(call(function, in), kind));
         } else {
-          return -1;  // never: only expressible kinds have a function
+          throw std::logic_error("no function for this kind");  // never: answers() is false for it
         }
       },
       input);
-  if (said != 0 && said != 1) {
-    throw std::runtime_error("the subject's crosscheck_" + std::string(name(kind_of(input))) + " returned " +
-                             std::to_string(said) + ", neither 0 (miss) nor 1 (hit)");
-  }
-  return Answer::of(said == 1);
 }
 
 void put_under_test(std::shared_ptr<const Subject> subject) { under_test() = std::move(subject); }

@@ -23,8 +23,9 @@ class Subject {
   const std::string& path() const { return path_; }
   /// It exports crosscheck_<kind>, for a kind whose input the interface expresses.
   bool answers(QueryKind kind) const { return functions_[static_cast<std::size_t>(kind)] != nullptr; }
-  /// Its answer to the input: a hit or a miss, nothing more. Throws std::runtime_error when it
-  /// does not answer the kind or returns neither 0 nor 1.
+  /// Its answer to the input: a hit or a miss, and for the mesh kinds the faces that meet (no
+  /// ray parameter). Throws std::runtime_error when it does not answer the kind, returns neither
+  /// 0 nor 1, or names a face the meshes do not have.
   Answer ask(const Input& input) const;
 
  private:

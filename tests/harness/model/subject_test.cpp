@@ -5,11 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
 #include "harness/judging/evaluate.h"
 #include "harness/model/library.h"
+#include "harness/model/mesh_query.h"
 #include "harness/processes/campaign.h"
 #include "oracle/exact/exact_reference.h"
 
@@ -45,10 +47,12 @@ struct UnderTest {
 
 TEST(Subject, TheBulletExampleAnswersTheKindsItExports) {
   const auto bullet = Subject::load(CROSSCHECK_BULLET_SUBJECT);
-  for (QueryKind kind : {QueryKind::ray_aabb, QueryKind::sphere_sphere, QueryKind::aabb_aabb, QueryKind::obb_obb}) {
+  for (QueryKind kind : {QueryKind::ray_aabb, QueryKind::sphere_sphere, QueryKind::aabb_aabb, QueryKind::obb_obb,
+                         QueryKind::tri_aabb, QueryKind::tri_obb, QueryKind::moving_obb, QueryKind::ray_mesh,
+                         QueryKind::mesh_mesh, QueryKind::mesh_mesh_first}) {
     EXPECT_TRUE(bullet->answers(kind)) << name(kind);
   }
-  for (QueryKind kind : {QueryKind::tri_tri, QueryKind::kdop_kdop, QueryKind::mesh_mesh, QueryKind::disc_walls}) {
+  for (QueryKind kind : {QueryKind::tri_tri, QueryKind::kdop_kdop, QueryKind::broadphase, QueryKind::disc_walls}) {
     EXPECT_FALSE(bullet->answers(kind)) << name(kind);
   }
   const Aabb unit{{0, 0, 0}, {1, 1, 1}};
@@ -57,6 +61,25 @@ TEST(Subject, TheBulletExampleAnswersTheKindsItExports) {
   EXPECT_TRUE(bullet->ask(SphereSphereInput{{{0, 0, 0}, 1}, {{1.5, 0, 0}, 1}}).hit);
   EXPECT_FALSE(bullet->ask(RayAabbInput{{{-1, 2.5, 0.5}, {1, 0, 0}, 0, 3}, unit}).hit);
   EXPECT_THROW(bullet->ask(TriTriInput{}), std::runtime_error);
+}
+
+TEST(Subject, TheMeshKindsHandTheMeshesOverAndNameTheFaces) {
+  const auto bullet = Subject::load(CROSSCHECK_BULLET_SUBJECT);
+  Mesh two;  // face 0 in the plane z = 2, face 1 in z = 1, legs x, y in [0, 4]
+  two.vertices = {{0, 0, 2}, {4, 0, 2}, {0, 4, 2}, {0, 0, 1}, {4, 0, 1}, {0, 4, 1}};
+  two.faces = {{0, 1, 2}, {3, 4, 5}};
+  const Answer up = bullet->ask(RayMeshInput{triangles_mesh(two), {{1, 1, 0}, {0, 0, 1}, 0, INFINITY}, {}});
+  EXPECT_TRUE(up.hit);
+  EXPECT_EQ(up.pairs, (std::vector<FacePair>{{1, 0}}));  // the nearer face
+  EXPECT_FALSE(bullet->ask(RayMeshInput{triangles_mesh(two), {{5, 5, 0}, {0, 0, 1}, 0, INFINITY}, {}}).hit);
+  Mesh stick;  // a triangle standing through face 0 only
+  stick.vertices = {{1, 1, 1.5}, {1, 1, 3}, {1.5, 1, 3}};
+  stick.faces = {{0, 1, 2}};
+  MeshPair pair{triangles_mesh(two), triangles_mesh(stick), {}, {}, {}};
+  EXPECT_EQ(bullet->ask(MeshMeshInput{pair}).pairs, (std::vector<FacePair>{{0, 0}}));
+  EXPECT_EQ(bullet->ask(MeshMeshFirstInput{pair}).pairs, (std::vector<FacePair>{{0, 0}}));
+  pair.pose_b.translation = {0, 0, 5};
+  EXPECT_FALSE(bullet->ask(MeshMeshInput{pair}).hit);
 }
 
 TEST(Subject, AskLibraryAsksTheSubjectUnderTestAndNoAlternative) {
