@@ -5,6 +5,7 @@
 // stands alone, as a user's subject does: it shares no code with crosscheck's Bullet parties
 // (oracle/bullet), though it asks some of the same calls.
 #include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
+#include <BulletCollision/BroadphaseCollision/btOverlappingPairCache.h>
 #include <BulletCollision/CollisionDispatch/btBoxBoxDetector.h>
 #include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
 #include <BulletCollision/CollisionDispatch/btCollisionWorld.h>
@@ -26,6 +27,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -275,6 +277,46 @@ int crosscheck_mesh_mesh_first(const cc_mesh* a, const cc_pose* pose_a, const cc
   if (found.empty()) return 0;
   *pair = found.front();
   return 1;
+}
+
+// Bullet's dynamic AABB trees (its broad phase), driven as a collision world drives them: a proxy created
+// when a box appears, its AABB set every frame, destroyed when the box goes; each frame's
+// candidates kept where the boxes overlap (as a narrow phase's first step).
+int crosscheck_broadphase(const cc_box_frames* frames, cc_face_pair* pairs, unsigned capacity, unsigned* frame_ends) {
+  btDbvtBroadphase trees;
+  std::vector<btBroadphaseProxy*> proxies(frames->slots, nullptr);
+  unsigned count = 0;
+  for (unsigned f = 0; f < frames->frames; ++f) {
+    for (unsigned i = 0; i < frames->slots; ++i) {
+      const cc_aabb& box = frames->boxes[f * frames->slots + i];
+      const bool present = frames->present[f * frames->slots + i] != 0;
+      if (present && proxies[i] == nullptr) {
+        proxies[i] = trees.createProxy(v(box.lo), v(box.hi), 0, reinterpret_cast<void*>(static_cast<std::uintptr_t>(i)),
+                                            btBroadphaseProxy::DefaultFilter, btBroadphaseProxy::AllFilter, nullptr);
+      } else if (present) {
+        trees.setAabb(proxies[i], v(box.lo), v(box.hi), nullptr);
+      } else if (proxies[i] != nullptr) {
+        trees.destroyProxy(proxies[i], nullptr);
+        proxies[i] = nullptr;
+      }
+    }
+    trees.calculateOverlappingPairs(nullptr);
+    btBroadphasePairArray& candidates = trees.getOverlappingPairCache()->getOverlappingPairArray();
+    for (int p = 0; p < candidates.size(); ++p) {
+      const auto i = static_cast<unsigned>(reinterpret_cast<std::uintptr_t>(candidates[p].m_pProxy0->m_clientObject));
+      const auto j = static_cast<unsigned>(reinterpret_cast<std::uintptr_t>(candidates[p].m_pProxy1->m_clientObject));
+      const cc_aabb& a = frames->boxes[f * frames->slots + i];
+      const cc_aabb& b = frames->boxes[f * frames->slots + j];
+      if (!TestAabbAgainstAabb2(v(a.lo), v(a.hi), v(b.lo), v(b.hi))) continue;
+      if (count < capacity) pairs[count] = {i, j};
+      ++count;
+    }
+    frame_ends[f] = std::min(count, capacity);
+  }
+  for (btBroadphaseProxy* p : proxies) {
+    if (p != nullptr) trees.destroyProxy(p, nullptr);
+  }
+  return static_cast<int>(count);
 }
 
 }  // extern "C"

@@ -55,6 +55,15 @@ typedef struct { double rotation[3][3]; cc_vec3 translation; } cc_pose;
 /* A face of mesh a and a face of mesh b. */
 typedef struct { unsigned a, b; } cc_face_pair;
 
+/* Boxes frame by frame, for a sweep over many objects: frame f's box in slot i is boxes[f * slots + i] when
+ * present[f * slots + i] is 1; a box absent from a frame is removed (or not yet added), and a slot
+ * keeps its box's identity from frame to frame. */
+typedef struct {
+  const cc_aabb* boxes;
+  const unsigned char* present;
+  unsigned slots, frames;
+} cc_box_frames;
+
 /* Returns CROSSCHECK_SUBJECT_VERSION. */
 int crosscheck_subject_version(void);
 
@@ -80,6 +89,11 @@ int crosscheck_mesh_mesh(const cc_mesh* a, const cc_pose* pose_a, const cc_mesh*
 /* The same asked for one pair: 1 and *pair when some pair of faces meets, 0 otherwise. */
 int crosscheck_mesh_mesh_first(const cc_mesh* a, const cc_pose* pose_a, const cc_mesh* b, const cc_pose* pose_b,
                                cc_face_pair* pair);
+/* Many moving boxes, the frames driven through the subject's broad phase: the pairs of slots whose boxes overlap in each frame (a,
+ * b the two slots, each pair once), frame after frame into `pairs` (at most `capacity`), and
+ * frame_ends[f] the number written up to the end of frame f. Returns how many pairs there are in
+ * all (more than capacity: crosscheck counts the answer as failed). */
+int crosscheck_broadphase(const cc_box_frames* frames, cc_face_pair* pairs, unsigned capacity, unsigned* frame_ends);
 
 #ifdef __cplusplus
 }

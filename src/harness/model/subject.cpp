@@ -58,8 +58,9 @@ int call(void* function, const In& in) {
       Fields<In>::list);
 }
 
-// The kinds of a mesh, found by their inputs as the others are: a ray and a mesh; two placed
-// meshes, asked for every pair or one (their mode). Each has a signature of its own.
+// The kinds of a mesh or of many boxes, found by their inputs as the others are: a ray and a
+// mesh; two placed meshes, asked for every pair or one (their mode); boxes frame by frame. Each
+// has a signature of its own.
 static_assert(sizeof(Vec3) == sizeof(cc_vec3) && sizeof(std::array<std::uint32_t, 3>) == 3 * sizeof(unsigned),
               "a mesh's arrays are handed to the subject as they are");
 
@@ -76,7 +77,12 @@ concept TwoPlacedMeshes = requires(const In& in) {
 };
 
 template <class In>
-constexpr bool has_mesh_signature = RayAndMesh<In> || TwoPlacedMeshes<In>;
+concept BoxFramesOnly = requires(const In& in) {
+  { in.frames } -> std::convertible_to<const BoxFrames&>;
+};
+
+template <class In>
+constexpr bool has_own_signature = RayAndMesh<In> || TwoPlacedMeshes<In> || BoxFramesOnly<In>;
 
 cc_mesh to_c(const MeshRef& ref) {
   if (ref.mesh == nullptr) throw std::runtime_error("a case without its mesh");
@@ -102,9 +108,54 @@ FacePair checked(const cc_face_pair& p, const MeshPair& m) {
   return {p.a, p.b};
 }
 
+// Frames of boxes: the pairs of each frame, as slots (i < j), sorted.
+Answer ask_box_frames(void* function, const BoxFrames& frames, QueryKind kind) {
+  std::size_t slots = 0;
+  for (const auto& frame : frames) slots = std::max(slots, frame.size());
+  std::vector<cc_aabb> boxes(slots * frames.size());
+  std::vector<unsigned char> present(boxes.size(), 0);
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    for (std::size_t i = 0; i < frames[f].size(); ++i) {
+      if (frames[f][i]) boxes[f * slots + i] = to_c(*frames[f][i]), present[f * slots + i] = 1;
+    }
+  }
+  const cc_box_frames c{boxes.data(), present.data(), static_cast<unsigned>(slots), static_cast<unsigned>(frames.size())};
+  const auto capacity = static_cast<unsigned>(std::min<std::uint64_t>(std::uint64_t{slots} * slots * frames.size() / 2 + 1, 1u << 22));
+  std::vector<cc_face_pair> pairs(capacity);
+  std::vector<unsigned> ends(frames.size(), 0);
+  using Fn = int (*)(const cc_box_frames*, cc_face_pair*, unsigned, unsigned*);
+  const int count = reinterpret_cast<Fn>(function)(&c, pairs.data(), capacity, ends.data());
+  if (count < 0 || static_cast<unsigned>(count) > capacity) {
+    throw std::runtime_error("the subject's crosscheck_" + std::string(name(kind)) + " returned " + std::to_string(count) +
+                             " pairs, room for " + std::to_string(capacity));
+  }
+  Answer answer;
+  unsigned begin = 0;
+  for (std::size_t f = 0; f < frames.size(); ++f) {
+    if (ends[f] < begin || ends[f] > static_cast<unsigned>(count)) throw std::runtime_error("the subject's frame ends are not in order");
+    std::vector<FacePair> frame;
+    for (unsigned p = begin; p < ends[f]; ++p) {
+      const auto [i, j] = std::minmax(pairs[p].a, pairs[p].b);
+      if (j >= frames[f].size() || i == j || !frames[f][i] || !frames[f][j]) {
+        throw std::runtime_error("the subject named slots (" + std::to_string(i) + ", " + std::to_string(j) +
+                                 ") without two boxes in frame " + std::to_string(f));
+      }
+      frame.emplace_back(i, j);
+    }
+    std::sort(frame.begin(), frame.end());
+    frame.erase(std::unique(frame.begin(), frame.end()), frame.end());
+    answer.hit |= !frame.empty();
+    answer.frames.push_back(std::move(frame));
+    begin = ends[f];
+  }
+  return answer;
+}
+
 template <class In>
-Answer ask_mesh_kind(void* function, const In& in, QueryKind kind) {
-  if constexpr (RayAndMesh<In>) {
+Answer ask_own_signature(void* function, const In& in, QueryKind kind) {
+  if constexpr (BoxFramesOnly<In>) {
+    return ask_box_frames(function, in.frames, kind);
+  } else if constexpr (RayAndMesh<In>) {
     const cc_ray ray = to_c(in.ray);
     const cc_mesh mesh = to_c(in.mesh);
     unsigned face = 0;
@@ -168,7 +219,7 @@ std::shared_ptr<const Subject> Subject::load(const std::string& path) {
   bool any = false;
   for (QueryKind kind : kAllQueryKinds) {
     with_kind(kind, [&]<class In>() {
-      if constexpr (expressible<In>() || has_mesh_signature<In>) {
+      if constexpr (expressible<In>() || has_own_signature<In>) {
         void* f = dlsym(handle, ("crosscheck_" + std::string(name(kind))).c_str());
         subject->functions_[static_cast<std::size_t>(kind)] = f;
         any |= f != nullptr;
@@ -185,8 +236,8 @@ Answer Subject::ask(const Input& input) const {
   if (function == nullptr) throw std::runtime_error("the subject " + path_ + " does not answer " + std::string(name(kind)));
   return std::visit(
       [function, kind]<class In>(const In& in) -> Answer {
-        if constexpr (has_mesh_signature<In>) {
-          return ask_mesh_kind(function, in, kind);
+        if constexpr (has_own_signature<In>) {
+          return ask_own_signature(function, in, kind);
         } else if constexpr (expressible<In>()) {
           return Answer::of(hit_of(call(function, in), kind));
         } else {

@@ -49,10 +49,10 @@ TEST(Subject, TheBulletExampleAnswersTheKindsItExports) {
   const auto bullet = Subject::load(CROSSCHECK_BULLET_SUBJECT);
   for (QueryKind kind : {QueryKind::ray_aabb, QueryKind::sphere_sphere, QueryKind::aabb_aabb, QueryKind::obb_obb,
                          QueryKind::tri_aabb, QueryKind::tri_obb, QueryKind::moving_obb, QueryKind::ray_mesh,
-                         QueryKind::mesh_mesh, QueryKind::mesh_mesh_first}) {
+                         QueryKind::mesh_mesh, QueryKind::mesh_mesh_first, QueryKind::broadphase}) {
     EXPECT_TRUE(bullet->answers(kind)) << name(kind);
   }
-  for (QueryKind kind : {QueryKind::tri_tri, QueryKind::kdop_kdop, QueryKind::broadphase, QueryKind::disc_walls}) {
+  for (QueryKind kind : {QueryKind::tri_tri, QueryKind::kdop_kdop, QueryKind::disc_walls}) {
     EXPECT_FALSE(bullet->answers(kind)) << name(kind);
   }
   const Aabb unit{{0, 0, 0}, {1, 1, 1}};
@@ -80,6 +80,18 @@ TEST(Subject, TheMeshKindsHandTheMeshesOverAndNameTheFaces) {
   EXPECT_EQ(bullet->ask(MeshMeshFirstInput{pair}).pairs, (std::vector<FacePair>{{0, 0}}));
   pair.pose_b.translation = {0, 0, 5};
   EXPECT_FALSE(bullet->ask(MeshMeshInput{pair}).hit);
+}
+
+TEST(Subject, BoxFramesGoOverFrameByFrame) {
+  const auto bullet = Subject::load(CROSSCHECK_BULLET_SUBJECT);
+  const Aabb unit{{0, 0, 0}, {1, 1, 1}};
+  BroadphaseInput in;
+  in.frames = {{unit, Aabb{{2, 0, 0}, {3, 1, 1}}},
+               {unit, Aabb{{1, 0, 0}, {2, 1, 1}}, Aabb{{0.5, 0.5, 0.5}, {0.6, 0.6, 0.6}}},
+               {std::nullopt, Aabb{{1, 0, 0}, {2, 1, 1}}, Aabb{{0.5, 0.5, 0.5}, {0.6, 0.6, 0.6}}}};
+  const Answer a = bullet->ask(in);
+  EXPECT_TRUE(a.hit);
+  EXPECT_EQ(a.frames, (std::vector<std::vector<FacePair>>{{}, {{0, 1}, {0, 2}}, {}}));
 }
 
 TEST(Subject, AskLibraryAsksTheSubjectUnderTestAndNoAlternative) {
