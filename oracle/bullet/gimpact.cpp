@@ -1,43 +1,16 @@
 #include "oracle/bullet/gimpact.h"
 
-#include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
-#include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
-#include <BulletCollision/CollisionDispatch/btCollisionWorld.h>
-#include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
 #include <BulletCollision/CollisionShapes/btTriangleMesh.h>
-#include <BulletCollision/Gimpact/btGImpactCollisionAlgorithm.h>
 #include <BulletCollision/Gimpact/btGImpactShape.h>
 
 #include <algorithm>
 #include <memory>
 
+#include "oracle/bullet/collision_world.h"
 #include "oracle/bullet/convert.h"
 
 namespace cc::bullet_oracle {
 namespace {
-
-// A collision world whose dispatcher knows GImpact, made once per process: registerAlgorithm
-// registers it for contact points; contactPairTest asks the closest-points table, so it is
-// registered there too (else that pair of shapes gets an empty algorithm and no contact).
-struct World {
-  btDefaultCollisionConfiguration configuration;
-  btCollisionDispatcher dispatcher{&configuration};
-  btDbvtBroadphase pairs;  // a world needs one; contactPairTest does not use it
-  btCollisionWorld world{&dispatcher, &pairs, &configuration};
-  btGImpactCollisionAlgorithm::CreateFunc gimpact;
-  World() {
-    btGImpactCollisionAlgorithm::registerAlgorithm(&dispatcher);
-    for (int other = 0; other < MAX_BROADPHASE_COLLISION_TYPES; ++other) {
-      dispatcher.registerClosestPointsCreateFunc(GIMPACT_SHAPE_PROXYTYPE, other, &gimpact);
-      dispatcher.registerClosestPointsCreateFunc(other, GIMPACT_SHAPE_PROXYTYPE, &gimpact);
-    }
-  }
-};
-
-btCollisionWorld& world() {
-  static World w;
-  return w.world;
-}
 
 // The face pairs of the contacts reported (index0 the first object's face, index1 the second's).
 struct FacePairs final : btCollisionWorld::ContactResultCallback {
@@ -84,7 +57,7 @@ harness::Opinion gimpact_collide(const harness::MeshPair& m, bool first_only) {
   object_a.setWorldTransform(pose_of(m.pose_a));
   object_b.setWorldTransform(pose_of(m.pose_b));
   FacePairs contacts;
-  world().contactPairTest(&object_a, &object_b, contacts);
+  collision_world().contactPairTest(&object_a, &object_b, contacts);
   std::sort(contacts.pairs.begin(), contacts.pairs.end());
   contacts.pairs.erase(std::unique(contacts.pairs.begin(), contacts.pairs.end()), contacts.pairs.end());
   if (first_only && contacts.pairs.size() > 1) contacts.pairs.resize(1);

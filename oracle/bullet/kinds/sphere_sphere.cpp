@@ -6,31 +6,14 @@
 // misjudged case lies within 5u of (len + r_a + r_b), at most 2^-47 of the scale (the centres'
 // distance reaching 2 sqrt 3 scales); a difference whose squares underflow reads as 0 and is
 // beyond any band, a defect of Bullet's.
-#include <BulletCollision/BroadphaseCollision/btDbvtBroadphase.h>
-#include <BulletCollision/CollisionDispatch/btCollisionDispatcher.h>
-#include <BulletCollision/CollisionDispatch/btCollisionWorld.h>
-#include <BulletCollision/CollisionDispatch/btDefaultCollisionConfiguration.h>
 #include <BulletCollision/CollisionShapes/btSphereShape.h>
 
+#include "oracle/bullet/collision_world.h"
 #include "oracle/bullet/convert.h"
 #include "oracle/bullet/parties.h"
 
 namespace cc::bullet_oracle {
 namespace {
-
-// A collision world, made once per process: the configuration's algorithms and the dispatcher
-// that finds them.
-struct World {
-  btDefaultCollisionConfiguration configuration;
-  btCollisionDispatcher dispatcher{&configuration};
-  btDbvtBroadphase pairs;  // a world needs one; contactPairTest does not use it
-  btCollisionWorld world{&dispatcher, &pairs, &configuration};
-};
-
-btCollisionWorld& world() {
-  static World w;
-  return w.world;
-}
 
 struct AnyContact final : btCollisionWorld::ContactResultCallback {
   bool any = false;
@@ -52,7 +35,7 @@ Opinion contact_pair_test(const harness::SphereSphereInput& in) {
   place.setOrigin(to_bullet(in.b.center));
   b.setWorldTransform(place);
   AnyContact contact;
-  world().contactPairTest(&a, &b, contact);
+  collision_world().contactPairTest(&a, &b, contact);
   return answered(contact.any);
 }
 
