@@ -11,8 +11,8 @@
  * judges every answer against exact rational arithmetic and keeps each wrong one, shrunk, as a
  * case file. Inputs may be degenerate (zero extents, collinear triangles, zero directions),
  * touching to the last bit, huge or tiny; they are within crosscheck's own contract unless the
- * case says otherwise. In a campaign (and the fuzz targets) a crash or a hang in a subject is a
- * finding, not the end of the run; `replay`, `triage` and `shrink` ask it in their own process.
+ * case says otherwise. A crash or a hang in a subject is a finding (the subject is asked in a
+ * child process), not the end of a campaign or of any other command.
  * Plain C: no crosscheck type or library is needed to build a subject. */
 #ifndef CROSSCHECK_SUBJECT_H
 #define CROSSCHECK_SUBJECT_H

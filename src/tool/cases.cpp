@@ -7,6 +7,8 @@
 #include <sstream>
 
 #include "harness/model/library.h"
+#include "harness/model/subject.h"
+#include "harness/processes/child.h"
 #include "harness/formats/number_text.h"
 #include "oracle/exact/exact_reference.h"
 #include "oracle/peers/peer_opinions.h"
@@ -29,11 +31,31 @@ const peers::PeerOpinions& peer_opinions() {
 
 }  // namespace
 
-Evaluation evaluate_with_oracles(const Input& input) { return evaluate(input, exact_reference(), &peer_opinions()); }
+Evaluation evaluate_with_oracles(const Input& input) {
+  if (subject_under_test() != nullptr) return evaluate_surviving_crashes(input);  // a user's code may crash or hang
+  return evaluate(input, exact_reference(), &peer_opinions());
+}
 
 Evaluation evaluate_surviving_crashes(const Input& input) {
-  if (auto e = evaluate_in_child(input, exact_reference(), peer_opinions())) return *e;
+  if (auto e = evaluate_in_child(input, exact_reference(), peer_opinions(), kPartyTimeLimit)) return *e;
+  // The child crashed or hung: the library alone, in a child of its own, tells whose fault.
+  const ChildEnd library = run_in_child(
+      [&](int) {
+        try {
+          (void)ask_library(input);
+        } catch (const std::exception&) {  // an answer that is no answer is not a crash
+        }
+        return 0;
+      },
+      kPartyTimeLimit);
   Evaluation e;
+  e.exact = exact_reference().judge(input);
+  if (!library.succeeded()) {
+    e.library_failure = "the library " + library.what() + " (in a child process)";
+    e.verdict.cls = CaseClass::impl_bug;
+    e.verdict.parties = {{"library", Standing::failed, e.library_failure}};
+    return e;
+  }
   e.verdict.cls = CaseClass::oracle_crash;
   e.verdict.parties = {{"library", Standing::not_applicable, "an oracle crashed on this input (in a child process)"}};
   return e;

@@ -14,11 +14,16 @@
 
 namespace cc::tool {
 
+/// Seconds a party may take on one case in the tool's own commands before it counts as hung.
+inline constexpr double kPartyTimeLimit = 20;
+
 /// The three answers to an input, from the library, the exact reference and the peers (FCL/libccd, Bullet).
+/// With a subject under test, through evaluate_surviving_crashes: a user's code may crash or hang.
 harness::Evaluation evaluate_with_oracles(const harness::Input& input);
-/// The same through harness::evaluate_in_child: an input on which a party crashes or is cut
-/// short (FCL's managers and libccd can) evaluates to an oracle_crash instead of ending or
-/// damaging the caller, e.g. a shrink.
+/// The same through harness::evaluate_in_child, under kPartyTimeLimit: an input on which a party
+/// crashes or hangs does not end or damage the caller (e.g. a shrink). When the child dies, the
+/// library is asked alone in a child: if it crashes or hangs, an impl_bug (its failure recorded,
+/// the exact reference's verdict kept, no opinion invented); else an oracle_crash.
 harness::Evaluation evaluate_surviving_crashes(const harness::Input& input);
 
 /// A case holding an input and its evaluation.

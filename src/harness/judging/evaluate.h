@@ -25,8 +25,9 @@ Evaluation evaluate(const Input& input, const ExactReference& exact, const Secon
 /// store them, exactly); the library and the exact reference, which returned there, are asked
 /// again here. A party that crashes, or is cut short by a jump out of its code (see
 /// SecondOpinion::abandoned_calls), thus neither ends nor damages the caller. Nothing when the
-/// child did not answer.
-std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactReference& exact, const SecondOpinion& second);
+/// child did not answer (it crashed, or ran past timeout_seconds when that is not 0).
+std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactReference& exact, const SecondOpinion& second,
+                                            double timeout_seconds = 0);
 
 /// Opinions read back as text (from a child process, a worker) carry no band: gives each
 /// second-opinion party its band as `second` declares it for the kind (a party it does not
