@@ -31,10 +31,11 @@ ExactDiscWall exact_disc_wall(const Disc& disc, const Wall& wall) {
   const QVec2 c = rational(disc.center), a = rational(wall.a), b = rational(wall.b);
   const QVec2 d{c.x - a.x, c.y - a.y}, w{b.x - a.x, b.y - a.y};
   const Rational ww = dot(w, w);
-  Rational t = 0;
-  if (sgn(ww) > 0) t = std::clamp(Rational(dot(d, w) / ww), Rational(0), Rational(1));
-  const QVec2 gap{d.x - t * w.x, d.y - t * w.y};
   ExactDiscWall e;
+  e.pillar = sgn(ww) == 0;
+  if (!e.pillar) e.t = std::clamp(Rational(dot(d, w) / ww), Rational(0), Rational(1));
+  const Rational& t = e.t;
+  const QVec2 gap{d.x - t * w.x, d.y - t * w.y};
   e.distance2 = dot(gap, gap);
   const Rational r = exact::rational(disc.radius);
   e.slack = r * r - e.distance2;

@@ -11,6 +11,8 @@ struct ExactDiscWall {
   bool touches = false;    // |centre - segment| <= radius
   Rational distance2;      // |centre - segment|^2
   Rational slack;          // radius^2 - distance2: > 0 overlapping, 0 touching, < 0 apart
+  bool pillar = false;     // the wall's ends are equal
+  Rational t;              // the nearest point a + t (b - a), t clamped to [0, 1] (0 for a pillar)
   double scale = 0;        // the largest |coordinate| of the centre and the wall, or the radius
   /// (radius - distance) / scale, rounded, with the exact sign (> 0 overlapping, 0 touching,
   /// < 0 apart; a scale of 0 counts as 1).

@@ -26,15 +26,11 @@ std::string point(const Vec2& p) {
 
 // Where the segment's nearest point to c lies: an end, the side (the clamped projection
 // parameter, exact), or the pillar.
-std::string nearest_part(const Disc& disc, const Wall& w) {
-  const Rational dx = rational(disc.center.x) - rational(w.a.x), dy = rational(disc.center.y) - rational(w.a.y);
-  const Rational wx = rational(w.b.x) - rational(w.a.x), wy = rational(w.b.y) - rational(w.a.y);
-  const Rational ww = wx * wx + wy * wy;
-  if (sgn(ww) == 0) return "pillar";
-  const Rational t = (dx * wx + dy * wy) / ww;
-  if (sgn(t) <= 0) return "end a";
-  if (t >= 1) return "end b";
-  return "side, t = " + num(t);
+std::string nearest_part(const ExactDiscWall& e) {
+  if (e.pillar) return "pillar";
+  if (sgn(e.t) == 0) return "end a";
+  if (e.t == 1) return "end b";
+  return "side, t = " + num(e.t);
 }
 
 }  // namespace
@@ -89,7 +85,7 @@ harness::Explanation explain(const harness::DiscWallsInput& in) {
     }
     const ExactDiscWall x = exact_disc_wall(in.disc, w);
     const Rational& slack = x.slack;
-    e.rows.push_back({std::to_string(i), point(w.a), point(w.b), nearest_part(in.disc, w), num(slack),
+    e.rows.push_back({std::to_string(i), point(w.a), point(w.b), nearest_part(x), num(slack),
                       x.touches ? "yes" : "no", num(margin)});
     if (deciding < 0 && margin == v.margin) {
       deciding = static_cast<int>(i);
