@@ -4,6 +4,7 @@
 // short campaign on its query kind. The report says which check caught each mutant and after how
 // long, or that it survived, and the score.
 #include <algorithm>
+#include <cstdlib>
 #include <atomic>
 #include <condition_variable>
 #include <cstdio>
@@ -16,6 +17,7 @@
 #include <set>
 #include <sstream>
 #include <thread>
+#include <unistd.h>
 
 #include "tool/child_process.h"
 #include "tool/ctest_log.h"
@@ -65,6 +67,19 @@ std::string utc_now() {
   char buf[32];
   std::strftime(buf, sizeof buf, "%Y-%m-%d %H:%M", &tm);
   return buf;
+}
+
+// The program `name` as the shell would find it on PATH, if it is there.
+std::optional<fs::path> program_on_path(const std::string& name) {
+  const char* path = std::getenv("PATH");
+  std::string_view rest = path ? path : "";
+  while (!rest.empty()) {
+    const std::size_t colon = rest.find(':');
+    const fs::path candidate = fs::path(rest.substr(0, colon)) / name;
+    if (!candidate.parent_path().empty() && access(candidate.c_str(), X_OK) == 0) return candidate;
+    rest = colon == std::string_view::npos ? std::string_view() : rest.substr(colon + 1);
+  }
+  return std::nullopt;
 }
 
 std::string tail_of(const fs::path& log, std::size_t lines) {
@@ -119,9 +134,14 @@ void set_up(Worker& w, const MutateArgs& args) {
   std::fflush(stdout);
   if (!fs::exists(w.build / "build.ninja")) {
     // Test discovery at test time: a relinked test binary is not run at build time too.
-    must({"cmake", "-S", w.tree.string(), "-B", w.build.string(), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
-          "-DCMAKE_CXX_COMPILER=g++", "-DCMAKE_GTEST_DISCOVER_TESTS_DISCOVERY_MODE=PRE_TEST"},
-         {}, w.logs / "configure.log", "configuring " + w.build.string());
+    std::vector<std::string> configure = {"cmake", "-S", w.tree.string(), "-B", w.build.string(), "-G", "Ninja",
+                                          "-DCMAKE_BUILD_TYPE=Release", "-DCMAKE_CXX_COMPILER=g++",
+                                          "-DCMAKE_GTEST_DISCOVER_TESTS_DISCOVERY_MODE=PRE_TEST"};
+    // Reverting a mutant recompiles every file that includes it, as the mutant did: with ccache
+    // those compilations are the unmutated tree's, found in the cache (a header's mutant costs
+    // one rebuild of its includers instead of two).
+    if (const auto ccache = program_on_path("ccache")) configure.push_back("-DCMAKE_CXX_COMPILER_LAUNCHER=" + ccache->string());
+    must(configure, {}, w.logs / "configure.log", "configuring " + w.build.string());
   }
   must({"ninja", "-C", w.build.string(), "-j", std::to_string(args.build_jobs)}, {}, w.logs / "setup-build.log",
        "building the unmutated tree in " + w.build.string());
