@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -353,52 +352,6 @@ TEST(ExactOrientation, BothStagesAreExercisedAndAgree) {
   const Vec3 d = 3.0 * b - 2.0 * c;
   EXPECT_FALSE(filtered_orientation_sign(a, b, c, d));
   EXPECT_EQ(exact_orientation_sign(a, b, c, d), 0);
-}
-
-// Time per call: random points in the unit cube (the filter decides) and exactly coplanar points
-// (the integers decide). Printed, not checked.
-TEST(ExactOrientation, TimePerCall) {
-  Random r(10);
-  const int n = 4096;
-  std::vector<std::array<Vec3, 4>> random(n), coplanar(n), translated(n), spread60(n), spread(n), collinear(n);
-  for (int i = 0; i < n; ++i) {
-    for (Vec3& x : random[i]) x = r.in_cube(1);
-    const int p = r.below(9) - 4, q = r.below(9) - 4;
-    const auto& perm = kPermutations[r.below(6)];
-    for (Vec3& x : coplanar[i]) x = lattice_point(r, p, q, 40, perm);
-    for (Vec3& x : translated[i]) x = Vec3{0x1p40, 0x1p40, 0x1p40} + 0x1p10 * lattice_point(r, p, q, 28, perm);
-    for (Vec3& x : spread60[i]) x = {std::ldexp(r.unit(), r.below(120) - 60), std::ldexp(r.unit(), r.below(120) - 60),
-                                     std::ldexp(r.unit(), r.below(120) - 60)};
-    for (Vec3& x : spread[i]) x = {std::ldexp(r.unit(), r.below(400) - 200), std::ldexp(r.unit(), r.below(400) - 200),
-                                   std::ldexp(r.unit(), r.below(400) - 200)};
-    const Vec3 a = coplanar[i][0], b = coplanar[i][1];
-    collinear[i] = {a, b, a + 3.0 * (b - a), a - 5.0 * (b - a)};  // exact: lattice units 2^-20, below 2^47
-  }
-  const auto time = [&](const char* name, const std::vector<std::array<Vec3, 4>>& inputs, auto&& f) {
-    int total = 0, rounds = 0;
-    const auto start = std::chrono::steady_clock::now();
-    auto now = start;
-    do {
-      for (const auto& v : inputs) total += f(v);
-      ++rounds;
-      now = std::chrono::steady_clock::now();
-    } while (now - start < std::chrono::milliseconds(100));
-    const double ns = std::chrono::duration<double, std::nano>(now - start).count() / (double(rounds) * n);
-    std::printf("%-52s %8.1f ns/call (checksum %d)\n", name, ns, total);
-  };
-  const auto orient = [](const std::array<Vec3, 4>& v) { return orientation_sign(v[0], v[1], v[2], v[3]).value_or(7); };
-  const auto planar = [](const std::array<Vec3, 4>& v) { return planar_orientation_sign(v[0], v[1], v[2], 2).value_or(7); };
-  const auto naive = [](const std::array<Vec3, 4>& v) { return sign(naive_determinant(v[0], v[1], v[2], v[3])); };
-  time("naive double determinant, random points", random, naive);
-  time("orientation_sign, random points (filter)", random, orient);
-  time("orientation_sign, coplanar lattice (integers)", coplanar, orient);
-  time("orientation_sign, coplanar at 2^40 (integers)", translated, orient);
-  time("orientation_sign, exponents over 2^-60..2^60", spread60, orient);
-  time("orientation_sign, exponents over 2^-200..2^200", spread, orient);
-  time("exact_orientation_sign alone, random points", random,
-       [](const std::array<Vec3, 4>& v) { return exact_orientation_sign(v[0], v[1], v[2], v[3]).value_or(7); });
-  time("planar_orientation_sign, random points (filter)", random, planar);
-  time("planar_orientation_sign, collinear lattice (integers)", collinear, planar);
 }
 
 }  // namespace
