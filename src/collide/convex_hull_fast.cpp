@@ -2,8 +2,8 @@
 // Each point is assigned to one facet it lies outside of; the farthest point of a facet is added
 // by replacing every facet it sees with a fan from it to their horizon; the points of the
 // replaced facets are assigned again to the new ones or left as inside. A point left inside is
-// dropped only when it lies, certainly, strictly inside a tetrahedron of points kept (by the
-// signs of four orientations, each beyond its rounding bound); otherwise it stays among the
+// dropped only when it lies strictly inside a tetrahedron of points kept (by the exact signs of
+// four orientations); otherwise it stays among the
 // vertices, and so do the hull vertices the hull swallows as it grows. Every point dropped is
 // thus inside the hull of the points kept, in exact arithmetic, whatever the rounding did to
 // the facets.
@@ -11,6 +11,7 @@
 #include <cmath>
 
 #include "collide/convex_hull.h"
+#include "collide/exact_orientation.h"
 
 namespace cc {
 namespace {
@@ -188,20 +189,11 @@ class QuickHull {
     }
   }
 
-  // The sign of the orientation of (a, b, c, d) on the points as given: + or - when the
-  // determinant exceeds its rounding bound, 0 when unsure. The bound is Shewchuk's for this
-  // evaluation ((7 + 56u) u times the permanent, differences included); a permanent below
-  // 2^-900, where products may underflow, is unsure.
+  // The exact sign of the orientation of (a, b, c, d) on the points as given (0: coplanar). A
+  // floating-point filter alone (Shewchuk's bound on the permanent) certified wrong signs when
+  // products underflowed beside large terms.
   int orientation(Index a, Index b, Index c, Index d) const {
-    const Vec3 ad = p_[a] - p_[d], bd = p_[b] - p_[d], cd = p_[c] - p_[d];
-    const double m1 = bd.y * cd.z - bd.z * cd.y, m2 = cd.y * ad.z - cd.z * ad.y, m3 = ad.y * bd.z - ad.z * bd.y;
-    const double det = ad.x * m1 + bd.x * m2 + cd.x * m3;
-    const double permanent = (std::fabs(bd.y * cd.z) + std::fabs(bd.z * cd.y)) * std::fabs(ad.x) +
-                             (std::fabs(cd.y * ad.z) + std::fabs(cd.z * ad.y)) * std::fabs(bd.x) +
-                             (std::fabs(ad.y * bd.z) + std::fabs(ad.z * bd.y)) * std::fabs(cd.x);
-    if (!(permanent >= 0x1p-900)) return 0;
-    const double bound = (7 + 56 * fp::u) * fp::u * permanent;
-    return det > bound ? 1 : (det < -bound ? -1 : 0);
+    return orientation_sign(p_[a], p_[b], p_[c], p_[d]).value_or(0);
   }
 
   // Whether point i lies strictly inside the tetrahedron, certainly: it is on the same side of
