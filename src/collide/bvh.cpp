@@ -5,6 +5,7 @@
 
 #include "collide/bvh_topology.h"
 #include "collide/convex_hull.h"
+#include "collide/hull_graph.h"
 #include "collide/large_arrays.h"
 
 namespace cc {
@@ -125,12 +126,43 @@ void append_vertices(const Bvh<BV>& bvh, const BvhNode<BV>& n, std::vector<Vec3>
 // Aabb and k-DOPs: leaves fitted to their vertices, other nodes merged from their children
 // (which equals fitting their triangles, exactly). Every point of every volume lies in the
 // root's box (its x, y, z slabs), whose farthest corner bounds the magnitude.
+// Appends a node's hull points with their graph when hull_graph decides it (the graph's
+// neighbours renumbered from the node's first point), else as append_hull_points does, with no
+// graph. Returns whether the graph was decided.
+bool append_hull_graph(std::vector<Vec3>& points, ConvexHull& hull, NodePoints& out, NodeGraphs& graphs) {
+  const auto first = static_cast<std::uint32_t>(out.points.size());
+  const std::optional<HullGraph> g = hull_graph(points);
+  if (!g) {
+    append_hull_points(points, hull, out.points);
+  } else {
+    out.points.insert(out.points.end(), g->points.begin(), g->points.end());
+  }
+  if (graphs.offsets.empty()) graphs.offsets.push_back(0);
+  for (std::size_t i = first; i < out.points.size(); ++i) {
+    if (g) {
+      for (std::uint32_t n : g->neighbours_of(i - first)) graphs.neighbours.push_back(n);
+    }
+    graphs.offsets.push_back(static_cast<std::uint32_t>(graphs.neighbours.size()));
+  }
+  return g.has_value();
+}
+
 template <class BV>
-void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points) {
+constexpr int kSlabDirections = 3;
+template <int K>
+constexpr int kSlabDirections<Kdop<K>> = K / 2;
+
+template <class BV>
+void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points, bool keep_hull_graphs) {
   using Traits = BoundingVolume<BV>;
   std::vector<Vec3> points;
   ConvexHull hull;
+  keep_hull_points |= keep_hull_graphs;
   if (keep_hull_points) bvh.hull_points.range.resize(bvh.nodes.size());
+  if (keep_hull_graphs) {
+    bvh.hull_graphs.walkable.resize(bvh.nodes.size());
+    bvh.hull_graphs.start.assign(bvh.nodes.size() * 2 * kSlabDirections<BV>, 0);
+  }
   for (std::size_t i = bvh.nodes.size(); i-- > 0;) {
     BvhNode<BV>& n = bvh.nodes[i];
     points.clear();
@@ -148,10 +180,15 @@ void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points) {
       }
     }
     const auto first = static_cast<std::uint32_t>(bvh.hull_points.points.size());
-    append_hull_points(points, hull, bvh.hull_points.points);
+    if (keep_hull_graphs) {
+      bvh.hull_graphs.walkable[i] = append_hull_graph(points, hull, bvh.hull_points, bvh.hull_graphs);
+    } else {
+      append_hull_points(points, hull, bvh.hull_points.points);
+    }
     bvh.hull_points.range[i] = {first, static_cast<std::uint32_t>(bvh.hull_points.points.size()) - first};
   }
   bvh.hull_points.points.shrink_to_fit();
+  bvh.hull_graphs.neighbours.shrink_to_fit();
   if (bvh.nodes.empty()) return;
   const BV& root = bvh.nodes[0].bv;
   double far[3];  // slabs 0, 1, 2 of a k-DOP are x, y, z
@@ -238,7 +275,7 @@ Bvh<BV> fit(const Mesh& mesh, detail::Topology t, const BuildOptions& options) {
   } else if constexpr (std::is_same_v<BV, Sphere>) {
     fit_spheres(bvh);
   } else {
-    fit_refittable(bvh, options.hull_points);
+    fit_refittable(bvh, options.hull_points, options.hull_graphs);
   }
   return bvh;
 }

@@ -52,6 +52,10 @@ struct BuildOptions {
   /// hull of its triangles (Bvh::hull_points), which the exact update moves. Without them the
   /// exact update moves every vertex of the node's triangles (the same volume, more work).
   bool hull_points = false;
+  /// Aabb and k-DOP trees: also keep, per node, the graph of the exact convex hull of its
+  /// triangles (Bvh::hull_graphs, from hull_graph), which the hill-climbing update walks. Implies
+  /// hull_points, which then are the graph's points: every vertex of the hull, no point inside it.
+  bool hull_graphs = false;
   friend bool operator==(const BuildOptions&, const BuildOptions&) = default;
 };
 
@@ -74,6 +78,22 @@ struct NodePoints {
   std::span<const Vec3> of(std::size_t node) const { return {points.data() + range[node].first, range[node].second}; }
 };
 
+/// Per node, the graph of its hull points (hull_graph.h), for the hill-climbing update. Indices
+/// of points are those of NodePoints::points; a neighbour is an index within the node's range.
+struct NodeGraphs {
+  std::vector<std::uint32_t> offsets;     // per point, and one past the last: its neighbours start there
+  std::vector<std::uint32_t> neighbours;  // within the node's range
+  std::vector<std::uint8_t> walkable;     // per node: 1 when its graph was decided (hull_graph), else 0
+  /// Per node, two per slab direction (the upper end, then the lower): the point (within the
+  /// node's range) where the last walk for it ended, where the next one starts. Written by
+  /// collide() under BvUpdate::hill_climbing through relaxed atomic stores, so queries on one tree
+  /// may run concurrently: any value read is a valid start and the answer does not depend on it.
+  mutable std::vector<std::uint32_t> start;
+  std::span<const std::uint32_t> neighbours_of(std::size_t point) const {
+    return {neighbours.data() + offsets[point], offsets[point + 1] - offsets[point]};
+  }
+};
+
 /// A binary hierarchy: nodes[0] is the root (no nodes for an empty mesh), every node before
 /// its children (depth-first pre-order, so node n's left child is n + 1); every node's volume
 /// contains, in exact arithmetic, every triangle of its slots. Triangle slot s is face order[s]
@@ -91,6 +111,8 @@ struct Bvh {
   /// points among its triangles' vertices that include every vertex of their convex hull (all
   /// of them for small nodes).
   NodePoints hull_points;
+  /// Only when built with BuildOptions::hull_graphs, else empty.
+  NodeGraphs hull_graphs;
 
   Triangle triangle(std::size_t slot) const {
     const auto& f = faces[slot];

@@ -1,6 +1,8 @@
 #include "collide/bvh_collide.h"
 
 #include <algorithm>
+#include <atomic>
+#include <limits>
 
 #include "collide/bvh_lazy.h"
 #include "collide/kdop_support.h"
@@ -9,7 +11,14 @@
 namespace cc {
 
 std::string_view to_string(CollisionMode m) { return m == CollisionMode::first_hit ? "first_hit" : "all_pairs"; }
-std::string_view to_string(BvUpdate u) { return u == BvUpdate::approximate ? "approximate" : "exact"; }
+std::string_view to_string(BvUpdate u) {
+  switch (u) {
+    case BvUpdate::approximate: return "approximate";
+    case BvUpdate::exact: return "exact";
+    case BvUpdate::hill_climbing: return "hill_climbing";
+  }
+  return "?";
+}
 std::string_view to_string(Descent d) { return d == Descent::first_model ? "first_model" : "larger"; }
 
 namespace {
@@ -113,11 +122,22 @@ class VolumeMover {
     if constexpr (kMovedWhole<BV>) {
       if constexpr (std::is_same_v<BV, Sphere>) stretch_ = stretch_bound(t);
     } else {
-      if (update_ != BvUpdate::approximate) return;
+      if (update_ == BvUpdate::exact) return;
       const auto dirs = kdop_directions<2 * kSlabs>();
       for (int i = 0; i < kSlabs; ++i) {
         const Vec3 n{double(dirs[i].x), double(dirs[i].y), double(dirs[i].z)};
         const Vec3 m = transpose_times(t.rotation, n);
+        if (update_ == BvUpdate::hill_climbing) {
+          climb_[i] = m;
+          // Twice the rounding of a walk's value m . p (three products and two sums, |p|_1 <= M),
+          // and twice a bound on |slab value - (m . p + n . T)| over the hull points, in exact
+          // arithmetic: the moved point's rounding and the fit's outward rounding, each a few
+          // units of roundoff of (M + |T|_1) |n|_1, and m's rounding times M; 2^-44 is more than
+          // eight times their sum.
+          walk_error_[i] = 2 * (4 * fp::u * norm1(m) * b.magnitude) + fp::subnormal_slack;
+          value_error_[i] = 2 * (0x1p-44 * (b.magnitude + 3 * max_abs(t.translation)) * norm1(n)) + fp::subnormal_slack;
+          continue;
+        }
         upper_[i] = kdop_cone<2 * kSlabs>(m);
         lower_[i] = upper_[i];  // -m: the opposite normals, the same coefficients
         for (int& h : lower_[i].normal) h = h < kSlabs ? h + kSlabs : h - kSlabs;
@@ -126,6 +146,11 @@ class VolumeMover {
       }
     }
   }
+
+  // Points the updates evaluated so far (CollisionCounters::update_points), and the updates hill
+  // climbing found (CollisionCounters::climbed).
+  std::uint64_t points_evaluated() const { return evaluated_; }
+  std::uint64_t climbed() const { return climbed_; }
 
   BV operator()(std::size_t node) const {
     const BV& v = b_.nodes[node].bv;
@@ -158,13 +183,19 @@ class VolumeMover {
     }
     std::vector<Vec3> points;
     const auto add = [&](const Vec3& p) { points.push_back(apply(t_, p)); };
-    if (!b_.hull_points.range.empty()) {
+    if (update_ == BvUpdate::hill_climbing && !b_.hull_graphs.walkable.empty() && b_.hull_graphs.walkable[node] &&
+        b_.hull_points.range[node].second > kClimbAbove && climb(node, points)) {
+      ++climbed_;  // every slab's highest and lowest hull points, moved: nothing more to add
+    } else if (!b_.hull_points.range.empty()) {
+      points.clear();
       for (const Vec3& p : b_.hull_points.of(node)) add(p);
+      evaluated_ += points.size();
     } else {
       const BvhNode<BV>& n = b_.nodes[node];
       for (std::uint32_t s = n.first; s < n.first + n.count; ++s) {
         for (std::uint32_t v : b_.faces[s]) add(b_.vertices[v]);
       }
+      evaluated_ += points.size();
     }
     out = fit_kdop<2 * kSlabs>(points);
     const auto dirs = kdop_directions<2 * kSlabs>();
@@ -175,10 +206,84 @@ class VolumeMover {
     return out;
   }
 
+  // The hill-climbing update of a node: per slab direction and side, a walk up the node's hull
+  // graph by m . p to a point no neighbour of which is higher, then the plateau around it (the
+  // points connected to it within twice the errors below it). Certified when every point next
+  // to the plateau is lower than the plateau's lowest by more than the errors: then so is every
+  // other hull point, exactly (a climbing path from it, which the hull graph has, would enter
+  // the plateau through one of them), and its slab value is below the plateau's highest. When
+  // every walk is certified: the plateaus' points moved (into `points`), and true.
+  // A node of at most 4 k hull points takes the exact update: its k walks would evaluate more
+  // points than it has (each step of a walk evaluates every neighbour of the point it is at).
+  static constexpr std::uint32_t kClimbAbove = 4 * 2 * kSlabs;
+
+  bool climb(std::size_t node, std::vector<Vec3>& points) const {
+    constexpr std::size_t kMostOnAPlateau = 64;
+    const NodeGraphs& g = b_.hull_graphs;
+    const std::uint32_t first = b_.hull_points.range[node].first, count = b_.hull_points.range[node].second;
+    const std::span<const Vec3> hull = b_.hull_points.of(node);
+    ends_.clear();
+    for (int w = 0; w < 2 * kSlabs; ++w) {
+      const int i = w / 2;
+      const Vec3 m = w % 2 == 0 ? climb_[i] : -climb_[i];
+      const double margin = walk_error_[i] + value_error_[i];
+      const auto value = [&](std::uint32_t p) {
+        ++evaluated_;
+        return m.x * hull[p].x + m.y * hull[p].y + m.z * hull[p].z;
+      };
+      std::atomic_ref<std::uint32_t> start(g.start[node * 2 * kSlabs + static_cast<std::size_t>(w)]);
+      std::uint32_t v = start.load(std::memory_order_relaxed);
+      if (v >= count) v = 0;
+      double at = value(v);
+      for (;;) {  // steepest ascent; `around_` keeps the values of v's neighbours
+        std::uint32_t best = v;
+        around_.clear();
+        for (std::uint32_t u : g.neighbours_of(first + v)) {
+          const double x = value(u);
+          around_.emplace_back(u, x);
+          if (x > at) best = u, at = x;
+        }
+        if (best == v) break;
+        v = best;
+      }
+      start.store(v, std::memory_order_relaxed);
+      plateau_.assign(1, {v, at});
+      double lowest = at, below = -std::numeric_limits<double>::infinity();
+      for (std::size_t k = 0; k < plateau_.size(); ++k) {
+        const auto neighbours = g.neighbours_of(first + plateau_[k].first);
+        for (std::size_t j = 0; j < neighbours.size(); ++j) {
+          const std::uint32_t u = neighbours[j];
+          if (std::any_of(plateau_.begin(), plateau_.end(), [&](const auto& q) { return q.first == u; })) continue;
+          const double x = k == 0 ? around_[j].second : value(u);
+          if (x >= at - 2 * margin) {
+            if (plateau_.size() == kMostOnAPlateau) return false;
+            plateau_.emplace_back(u, x);
+            lowest = std::min(lowest, x);
+          } else {
+            below = std::max(below, x);
+          }
+        }
+      }
+      if (!(below < lowest - margin)) return false;  // NaN: not certified either
+      for (const auto& q : plateau_) ends_.push_back(q.first);
+    }
+    std::sort(ends_.begin(), ends_.end());
+    points.clear();
+    for (std::size_t k = 0; k < ends_.size(); ++k) {
+      if (k == 0 || ends_[k] != ends_[k - 1]) points.push_back(apply(t_, hull[ends_[k]]));
+    }
+    return true;
+  }
+
   const Bvh<BV>& b_;
   RigidTransform t_;
   BvUpdate update_;
   double pad_;
+  std::array<Vec3, kSlabs> climb_{};  // hill climbing: m_i = R^T n_i
+  std::array<double, kSlabs> walk_error_{}, value_error_{};
+  mutable std::uint64_t evaluated_ = 0, climbed_ = 0;
+  mutable std::vector<std::pair<std::uint32_t, double>> plateau_, around_;  // hill climbing's scratch
+  mutable std::vector<std::uint32_t> ends_;
   double stretch_ = 1;  // spheres: stretch_bound(t_)
   std::array<KdopCone<2 * kSlabs>, kSlabs> upper_, lower_;
   std::array<double, kSlabs> offset_{}, width_{};
@@ -226,6 +331,8 @@ class Traversal {
       }
     }
     std::sort(result_.pairs.begin(), result_.pairs.end());
+    result_.counters.update_points = mover_.points_evaluated();
+    result_.counters.climbed = mover_.climbed();
     return std::move(result_);
   }
 

@@ -22,6 +22,11 @@ enum class CollisionMode { first_hit, all_pairs };
 enum class BvUpdate {
   approximate,  // refit around the moved original volume (Klosowski et al.; see moved_volume)
   exact,        // refit around the moved vertices of the convex hull of the node's triangles
+  /// The exact update's volume, found by hill climbing (Klosowski et al.): per slab direction,
+  /// a walk over the node's hull graph (BuildOptions::hull_graphs) from where the last walk
+  /// ended to the hull point highest along it, certified exact (see moved_volume); a node
+  /// without a graph, or a walk not certified, takes the exact update.
+  hill_climbing,
 };
 
 /// Which hierarchy to descend when both nodes are internal.
@@ -46,6 +51,8 @@ struct CollisionCounters {
   std::uint64_t bv_tests = 0;         // n_v: volume-volume overlap tests
   std::uint64_t primitive_tests = 0;  // n_p: triangle-triangle tests
   std::uint64_t bv_updates = 0;       // n_u: volumes of b brought into a's frame
+  std::uint64_t update_points = 0;    // points the updates evaluated: moved (exact) or walked over (hill climbing)
+  std::uint64_t climbed = 0;          // hill climbing: updates whose walks were all certified
   friend bool operator==(const CollisionCounters&, const CollisionCounters&) = default;
 };
 
@@ -90,6 +97,18 @@ CollisionResult collide(LazyBvh<BV>& a, const RigidTransform& pose_a, LazyBvh<BV
 ///  - Aabb and k-DOP, exact: re-fitted around the node's moved hull points, if the tree has them
 ///    (BuildOptions::hull_points), else around all the node's moved vertices (the same volume
 ///    up to rounding, at the cost of every vertex).
+///  - Aabb and k-DOP, hill_climbing: the exact update's volume (equal slab for slab), re-fitted
+///    around fewer of the moved hull points. For each slab direction n and side, a walk climbs
+///    the node's hull graph by m . p (m = R^T n rounded) to a point no neighbour of which is
+///    higher, and gathers the plateau around it (the points connected to it whose values are
+///    within twice the errors below); it is certified when every point next to the plateau is
+///    lower than the plateau's lowest by more than twice the rounding of m . p plus twice
+///    2^-44 (M + 3 |T|_max) |n|_1, a bound on |slab value - (m . p + n . T)| over the hull
+///    points. Then every hull point off the plateau is lower in exact arithmetic by more than
+///    the latter (a climbing path from it would enter the plateau through a point next to it),
+///    and the plateau's points give the slab. A node of at most 4 k hull points, a node without
+///    a graph, or any walk not certified (or with a plateau of more than 64 points): the exact
+///    update.
 /// Padded by 2^-43 of b's magnitude plus |t's translation| (times the 1-norm of a k-DOP's slab
 /// direction), so that it contains, in exact arithmetic, the node's triangles moved as the leaf
 /// test sees them (each vertex by apply(t, v)).

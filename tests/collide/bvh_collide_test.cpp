@@ -146,7 +146,78 @@ TEST(BvhCollideUpdate, TheExactRefitIsNoLooserThanTheApproximation) {
   EXPECT_LT(exact_width, approximate_width);
 }
 
+// Hill climbing finds the exact update's volume of every node, over the frames of a coherent
+// motion, at rotations by quarter turns (ties between hull points everywhere) and near them,
+// far from the origin, on flat and curved meshes, and from any start.
+template <class BV>
+void expect_hill_climbing_finds_the_exact_volumes() {
+  const Mat3 quarter_turn = Mat3::from_columns({0, 1, 0}, {-1, 0, 0}, {0, 0, 1});
+  std::vector<RigidTransform> poses = {{Mat3::identity(), {0, 0, 0}},
+                                       {quarter_turn, {1, 2, 3}},
+                                       {rotation(1e-9, 0, 0), {0, 0, 0}},
+                                       {rotation(0, -1e-13, 3e-12), {1e3, 0, 0}},
+                                       {rotation(0.7, -0.3, 2.2), {-40, 20, 3}}};
+  for (int f = 0; f < 24; ++f) poses.push_back({rotation(0.05 * f, 0.03 * f, -0.02 * f), {0.1 * f, 0, 0}});
+  for (const ProceduralMesh& recipe : {ProceduralMesh{Shape::torus, 0, 10, 3.0}, ProceduralMesh{Shape::sphere, 0, 8, 1.0},
+                                       ProceduralMesh{Shape::plate, 0, 4, 2.0, 0.0}, ProceduralMesh{Shape::plate, 0, 4, 2.0, 0.1},
+                                       ProceduralMesh{Shape::terrain, 3, 6, 5.0}, ProceduralMesh{Shape::soup, 5, 60, 10.0, 0, 8}}) {
+    const Mesh mesh = make_mesh(recipe);
+    for (int leaf_size : {2, 16}) {
+      BuildOptions options{BuildStrategy::top_down, SplitAxis::longest_side, SplitPoint::median, leaf_size};
+      options.hull_graphs = true;
+      const Bvh<BV> b = build_bvh<BV>(mesh, options);
+      ASSERT_EQ(b.hull_graphs.walkable.size(), b.nodes.size());
+      for (const RigidTransform& t : poses) {
+        for (std::size_t n = 0; n < b.nodes.size(); ++n) {
+          const BV hill = moved_volume(b, n, t, BvUpdate::hill_climbing), exact = moved_volume(b, n, t, BvUpdate::exact);
+          ASSERT_TRUE(hill == exact) << "node " << n << " of a mesh of shape " << static_cast<int>(recipe.shape);
+        }
+        const RigidTransform place{rotation(0.2, 0.1, 0.0), {0.5, 0, 0}};
+        const CollisionResult h = collide(b, place, b, t, {CollisionMode::all_pairs, BvUpdate::hill_climbing, Descent::larger});
+        const CollisionResult e = collide(b, place, b, t, {CollisionMode::all_pairs, BvUpdate::exact, Descent::larger});
+        EXPECT_EQ(h.pairs, e.pairs);
+        EXPECT_EQ(h.counters.bv_tests, e.counters.bv_tests);
+        EXPECT_EQ(e.counters.climbed, 0u);
+      }
+      // Any start will do.
+      for (std::uint32_t& s : b.hull_graphs.start) s = s * 7 + 3;
+      for (std::size_t n = 0; n < b.nodes.size(); ++n) {
+        EXPECT_TRUE(moved_volume(b, n, poses.back(), BvUpdate::hill_climbing) == moved_volume(b, n, poses.back(), BvUpdate::exact));
+      }
+    }
+  }
+}
+
+TEST(BvhCollideUpdate, HillClimbingFindsTheExactVolumes) {
+  expect_hill_climbing_finds_the_exact_volumes<Aabb>();
+  expect_hill_climbing_finds_the_exact_volumes<Kdop<14>>();
+  expect_hill_climbing_finds_the_exact_volumes<Kdop<18>>();
+  expect_hill_climbing_finds_the_exact_volumes<Kdop<26>>();
+}
+
+// Where every node has more than 4 k hull points (a sphere in leaves of 256 triangles, turned
+// so that no hull has a face of many points, whose ties would make a plateau too large), every
+// update of a coherent motion is found by certified walks, each of them short.
+TEST(BvhCollideUpdate, HillClimbingCertifiesTheWalksOfLargeNodes) {
+  Mesh sphere = make_mesh({Shape::sphere, 0, 32, 3.0});
+  const Mat3 turn = rotation(0.4, 0.7, 1.1);
+  for (Vec3& v : sphere.vertices) v = turn * v;
+  BuildOptions options{BuildStrategy::top_down, SplitAxis::longest_side, SplitPoint::median, 256};
+  options.hull_graphs = true;
+  const Bvh<Kdop<18>> b = build_bvh<Kdop<18>>(sphere, options);
+  for (const auto& [first, count] : b.hull_points.range) ASSERT_GT(count, 72u);
+  for (int f = 0; f < 20; ++f) {
+    const RigidTransform t{rotation(0.3 + 0.01 * f, 0.02 * f, 0), {0.5, 0.2, 0}};
+    const CollisionResult r = collide(b, {}, b, t, {CollisionMode::all_pairs, BvUpdate::hill_climbing, Descent::larger});
+    EXPECT_EQ(r.counters.climbed, r.counters.bv_updates) << "frame " << f;
+    if (f > 0) {
+      EXPECT_LT(r.counters.update_points, 18 * 16 * r.counters.bv_updates) << "frame " << f;  // 16 per walk
+    }
+  }
+}
+
 TEST(BvhCollideNames, Options) {
+  EXPECT_EQ(to_string(BvUpdate::hill_climbing), "hill_climbing");
   EXPECT_EQ(to_string(CollisionMode::first_hit), "first_hit");
   EXPECT_EQ(to_string(BvUpdate::exact), "exact");
   EXPECT_EQ(to_string(Descent::larger), "larger");

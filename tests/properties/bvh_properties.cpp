@@ -124,7 +124,10 @@ TEST(BvhProperties, LazyTreesAnswerAsTheEagerOnes) {
           const CollisionResult e = library_collide(eager, mode), l = library_collide(lazy, mode);
           if (!moved_whole(bv)) {  // Aabb and k-DOP trees: the same nodes, the same walk
             RC_ASSERT(l.pairs == e.pairs);
-            RC_ASSERT(l.counters == e.counters);
+            // (The lazy trees keep no hull points: their exact updates move every vertex.)
+            RC_ASSERT(l.counters.bv_tests == e.counters.bv_tests);
+            RC_ASSERT(l.counters.primitive_tests == e.counters.primitive_tests);
+            RC_ASSERT(l.counters.bv_updates == e.counters.bv_updates);
           } else if (mode == CollisionMode::all_pairs) {  // lazily fitted volumes: up to the band
             Pairs differ;
             std::set_symmetric_difference(e.pairs.begin(), e.pairs.end(), l.pairs.begin(), l.pairs.end(),
