@@ -55,7 +55,7 @@ struct Tally {
   std::string name;
   bool counted = true;  // the library's hierarchies count; FCL's models do not
   double build_ms = 0;
-  std::uint64_t pairs = 0, n_v = 0, n_p = 0, n_u = 0;
+  std::uint64_t pairs = 0, n_v = 0, n_p = 0, n_u = 0, update_points = 0;
   int right = 0, within_band = 0, wrong = 0, failed = 0;
   std::vector<double> query_us, tightness;
   void stand(harness::Standing s) {
@@ -96,6 +96,7 @@ Tally run_library(const harness::LibraryBvh& library, const std::vector<Pose>& p
       t.query_us.push_back(1e3 * ms_since(q));
       t.pairs += r.pairs.size();
       t.n_v += r.counters.bv_tests, t.n_p += r.counters.primitive_tests, t.n_u += r.counters.bv_updates;
+      t.update_points += r.counters.update_points;
       harness::Answer answer;
       answer.hit = !r.pairs.empty();
       for (const auto& [fa, fb] : r.pairs) answer.pairs.emplace_back(fa, fb);
@@ -161,8 +162,8 @@ std::vector<harness::LibraryBvh> every_hierarchy(int leaf_size) {
   std::vector<harness::LibraryBvh> out;
   for (harness::BvType bv : harness::kAllBvTypes) {
     for (BuildStrategy s : {BuildStrategy::top_down, BuildStrategy::bottom_up, BuildStrategy::incremental}) {
-      for (BvUpdate u : {BvUpdate::approximate, BvUpdate::exact}) {
-        if (harness::moved_whole(bv) && u == BvUpdate::exact) continue;  // an OBB or a ball moves as it is
+      for (BvUpdate u : {BvUpdate::approximate, BvUpdate::exact, BvUpdate::hill_climbing}) {
+        if (harness::moved_whole(bv) && u != BvUpdate::approximate) continue;  // an OBB or a ball moves as it is
         harness::LibraryBvh l;
         l.bv = bv;
         l.build.strategy = s;
@@ -182,18 +183,22 @@ void print_row(const Tally& t, std::size_t queries) {
     if (t.counted) std::snprintf(text, sizeof text, format, x);
     return std::string(text);
   };
-  char tight[32] = "-";
+  char tight[32] = "-", points[32] = "-";
   if (!t.tightness.empty()) std::snprintf(tight, sizeof tight, "%.2f", median(t.tightness));
-  std::printf("%-34s %9s %7llu %10s %10s %10s %12.1f %9s %6d %6d %6d %6d\n", t.name.c_str(),
+  if (t.update_points > 0) {
+    std::snprintf(points, sizeof points, "%.1f", static_cast<double>(t.update_points) / static_cast<double>(t.n_u));
+  }
+  std::printf("%-38s %9s %7llu %10s %10s %10s %9s %12.1f %9s %6d %6d %6d %6d\n", t.name.c_str(),
               cell(t.build_ms, "%.1f").c_str(), static_cast<unsigned long long>(t.pairs),
               cell(static_cast<double>(t.n_v) / q, "%.0f").c_str(), cell(static_cast<double>(t.n_p) / q, "%.0f").c_str(),
-              cell(static_cast<double>(t.n_u) / q, "%.0f").c_str(), median(t.query_us), tight, t.right, t.within_band,
-              t.wrong, t.failed);
+              cell(static_cast<double>(t.n_u) / q, "%.0f").c_str(), points, median(t.query_us), tight, t.right,
+              t.within_band, t.wrong, t.failed);
 }
 
 Json row_json(const Tally& t) {
   return {{"name", t.name},       {"build_ms", t.build_ms},       {"pairs", t.pairs},
           {"n_v", t.n_v},         {"n_p", t.n_p},                 {"n_u", t.n_u},
+          {"update_points", t.update_points},
           {"median_query_us", median(t.query_us)},
           {"approximate_over_exact_volume", t.tightness.empty() ? Json() : Json(median(t.tightness))},
           {"right", t.right},     {"within_band", t.within_band}, {"wrong", t.wrong},
@@ -237,9 +242,9 @@ int run(const ReportArgs& args) {
   std::printf("exact reference: %zu colliding pairs over %zu poses with a pair; top-down builds: longest side, midpoint, "
               "%d triangle(s) per leaf\n\n",
               exact_pairs, colliding, args.leaf_size);
-  std::printf("%-34s %9s %7s %10s %10s %10s %12s %9s %6s %6s %6s %6s\n", "hierarchy (volume build update)", "build ms",
-              "pairs", "n_v/query", "n_p/query", "n_u/query", "median us", "apx/exact", "right", "band", "wrong",
-              "failed");
+  std::printf("%-38s %9s %7s %10s %10s %10s %9s %12s %9s %6s %6s %6s %6s\n", "hierarchy (volume build update)",
+              "build ms", "pairs", "n_v/query", "n_p/query", "n_u/query", "pts/upd", "median us", "apx/exact", "right",
+              "band", "wrong", "failed");
   Json rows = Json::array();
   for (const harness::LibraryBvh& l : every_hierarchy(args.leaf_size)) {
     const Tally t = run_library(l, poses);
@@ -252,14 +257,14 @@ int run(const ReportArgs& args) {
     print_row(t, poses.size());
     rows.push_back(row_json(t));
   }
-  std::printf("\n%-34s %6s %16s %16s %9s %12s\n", "lazy top-down (volume poses)", "poses", "nodes made/query",
+  std::printf("\n%-38s %6s %16s %16s %9s %12s\n", "lazy top-down (volume poses)", "poses", "nodes made/query",
               "of whole trees", "made %", "median us");
   Json lazy_rows = Json::array();
   for (harness::BvType bv : harness::kAllBvTypes) {
     for (bool near : {false, true}) {
       const LazyRow r = run_lazy(bv, poses, near, args.leaf_size);
       if (r.poses == 0) continue;
-      std::printf("%-34s %6zu %16.1f %16.0f %8.1f%% %12.1f\n", r.name.c_str(), r.poses, r.nodes_made, r.nodes_total,
+      std::printf("%-38s %6zu %16.1f %16.0f %8.1f%% %12.1f\n", r.name.c_str(), r.poses, r.nodes_made, r.nodes_total,
                   100 * r.nodes_made / r.nodes_total, r.median_us);
       lazy_rows.push_back({{"name", r.name},
                            {"poses", r.poses},
@@ -269,7 +274,8 @@ int run(const ReportArgs& args) {
     }
   }
   std::printf("\nn_v, n_p, n_u: volume tests, triangle tests and volume updates per query (all pairs, descent into a's\n"
-              "hierarchy). apx/exact: median ratio of the approximate update's moved volume to the exact update's.\n"
+              "hierarchy). pts/upd: hull points per update that the exact update moves, or that hill climbing\n"
+              "evaluates on its walks (plus the exact update's when a walk is not certified). apx/exact: median ratio of the approximate update's moved volume to the exact update's.\n"
               "right/band/wrong: poses whose pair set equals the exact one / differs only within the band / beyond it.\n"
               "lazy top-down: both trees made anew per query (top-down, longest side, midpoint), all pairs; the time\n"
               "includes making the nodes the query needs.\n");

@@ -114,12 +114,13 @@ void read(Reader& r, MeshRef& m, Plain) { m = read_soup(r, 1 + r.byte() % kMaxSo
 
 // The library's hierarchy: a byte (bits 0-2 the volume among the first eight of kAllBvTypes, 3-4
 // the build strategy, 5 the exact update, 6 the larger-first descent, 7 a sphere tree, bits
-// 0-2 then unused); the other build options are the defaults.
+// 0-2 then unused); the other build options are the defaults. The hill-climbing update is
+// written as the exact update, whose volumes it finds.
 void write(Writer& w, const LibraryBvh& l, Plain) {
   std::size_t bits = l.bv == BvType::sphere ? 0x80 : 0;
   for (std::size_t i = 0; i < 8; ++i) bits |= kAllBvTypes[i] == l.bv ? i : 0;
   bits |= static_cast<std::size_t>(l.build.strategy) << 3;
-  if (l.update == BvUpdate::exact) bits |= 0x20;
+  if (l.update != BvUpdate::approximate) bits |= 0x20;
   if (l.descent == Descent::larger) bits |= 0x40;
   w.byte(bits);
 }

@@ -248,7 +248,7 @@ void read(const Json& j, const std::string& p, LibraryBvh& l, Plain, const Conte
   static constexpr SplitAxis kAxes[] = {SplitAxis::longest_side, SplitAxis::splatter, SplitAxis::min_sum,
                                         SplitAxis::min_max};
   static constexpr SplitPoint kPoints[] = {SplitPoint::midpoint, SplitPoint::mean, SplitPoint::median};
-  static constexpr BvUpdate kUpdates[] = {BvUpdate::approximate, BvUpdate::exact};
+  static constexpr BvUpdate kUpdates[] = {BvUpdate::approximate, BvUpdate::exact, BvUpdate::hill_climbing};
   static constexpr Descent kDescents[] = {Descent::first_model, Descent::larger};
   l = {};
   if (r.has("bv")) l.bv = r.choice("bv", kAllBvTypes);

@@ -24,7 +24,8 @@ LibraryBvh draw_library(Choices& c, bool few) {
     l.build.point = static_cast<SplitPoint>(c.draw(3));
     l.build.leaf_size = 1 + static_cast<int>(c.draw(4));
   }
-  l.update = c.chance(50) ? BvUpdate::exact : BvUpdate::approximate;
+  constexpr BvUpdate kUpdates[] = {BvUpdate::approximate, BvUpdate::exact, BvUpdate::hill_climbing};
+  l.update = kUpdates[c.draw(3)];
   l.descent = c.chance(50) ? Descent::larger : Descent::first_model;
   return l;
 }

@@ -10,7 +10,7 @@ struct Entry {
   std::weak_ptr<const Mesh> mesh;
   std::shared_ptr<const void> bvh;
 };
-using Key = std::tuple<const Mesh*, std::string, BuildStrategy, SplitAxis, SplitPoint, int, bool>;
+using Key = std::tuple<const Mesh*, std::string, BuildStrategy, SplitAxis, SplitPoint, int, bool, bool>;
 
 std::map<Key, Entry>& cache() {
   static std::map<Key, Entry> entries;
@@ -23,7 +23,7 @@ template <class BV>
 std::shared_ptr<const Bvh<BV>> cached_bvh(const std::shared_ptr<const Mesh>& mesh, const BuildOptions& options) {
   auto& entries = cache();
   const Key key{mesh.get(),   BoundingVolume<BV>::name(), options.strategy,   options.axis,
-                options.point, options.leaf_size,         options.hull_points};
+                options.point, options.leaf_size,         options.hull_points, options.hull_graphs};
   if (auto it = entries.find(key); it != entries.end()) {
     if (it->second.mesh.lock() == mesh) return std::static_pointer_cast<const Bvh<BV>>(it->second.bvh);
     entries.erase(it);  // a mesh that died, and another one now at its address
@@ -37,6 +37,7 @@ std::shared_ptr<const Bvh<BV>> cached_bvh(const std::shared_ptr<const Mesh>& mes
 BuildOptions build_options(const LibraryBvh& library) {
   BuildOptions o = library.build;
   o.hull_points = library.update == BvUpdate::exact;
+  o.hull_graphs = library.update == BvUpdate::hill_climbing;
   return o;
 }
 
