@@ -1,6 +1,7 @@
 #include "collide/bvh_collide.h"
 
 #include <algorithm>
+#include <cmath>
 #include <atomic>
 #include <limits>
 
@@ -207,12 +208,13 @@ class VolumeMover {
   }
 
   // The hill-climbing update of a node: per slab direction and side, a walk up the node's hull
-  // graph by m . p to a point no neighbour of which is higher, then the plateau around it (the
-  // points connected to it within twice the errors below it). Certified when every point next
-  // to the plateau is lower than the plateau's lowest by more than the errors: then so is every
-  // other hull point, exactly (a climbing path from it, which the hull graph has, would enter
-  // the plateau through one of them), and its slab value is below the plateau's highest. When
-  // every walk is certified: the plateaus' points moved (into `points`), and true.
+  // graph by m . p to a point v no neighbour of which is higher, then the plateau around v: the
+  // points connected to it whose values are within 2 `margin` below v's. Every point next to the
+  // plateau is lower than that, so (`margin` exceeding the errors) exactly lower than v: the
+  // climbing paths the hull graph has from v stay on the plateau up to the maximum, and a
+  // climbing path from any point off the plateau enters it through a point next to it, so is
+  // lower still, and so is its slab value than v's. When every walk's plateau is whole (at most
+  // kMostOnAPlateau points): the plateaus' points moved (into `points`), and true.
   // A node of at most 4 k hull points takes the exact update: its k walks would evaluate more
   // points than it has (each step of a walk evaluates every neighbour of the point it is at).
   static constexpr std::uint32_t kClimbAbove = 4 * 2 * kSlabs;
@@ -247,8 +249,8 @@ class VolumeMover {
         v = best;
       }
       start.store(v, std::memory_order_relaxed);
+      if (std::isnan(at)) return false;  // out of contract: no certificate
       plateau_.assign(1, {v, at});
-      double lowest = at, below = -std::numeric_limits<double>::infinity();
       for (std::size_t k = 0; k < plateau_.size(); ++k) {
         const auto neighbours = g.neighbours_of(first + plateau_[k].first);
         for (std::size_t j = 0; j < neighbours.size(); ++j) {
@@ -258,13 +260,9 @@ class VolumeMover {
           if (x >= at - 2 * margin) {
             if (plateau_.size() == kMostOnAPlateau) return false;
             plateau_.emplace_back(u, x);
-            lowest = std::min(lowest, x);
-          } else {
-            below = std::max(below, x);
           }
         }
       }
-      if (!(below < lowest - margin)) return false;  // NaN: not certified either
       for (const auto& q : plateau_) ends_.push_back(q.first);
     }
     std::sort(ends_.begin(), ends_.end());

@@ -99,16 +99,14 @@ CollisionResult collide(LazyBvh<BV>& a, const RigidTransform& pose_a, LazyBvh<BV
 ///    up to rounding, at the cost of every vertex).
 ///  - Aabb and k-DOP, hill_climbing: the exact update's volume (equal slab for slab), re-fitted
 ///    around fewer of the moved hull points. For each slab direction n and side, a walk climbs
-///    the node's hull graph by m . p (m = R^T n rounded) to a point no neighbour of which is
-///    higher, and gathers the plateau around it (the points connected to it whose values are
-///    within twice the errors below); it is certified when every point next to the plateau is
-///    lower than the plateau's lowest by more than twice the rounding of m . p plus twice
-///    2^-44 (M + 3 |T|_max) |n|_1, a bound on |slab value - (m . p + n . T)| over the hull
-///    points. Then every hull point off the plateau is lower in exact arithmetic by more than
-///    the latter (a climbing path from it would enter the plateau through a point next to it),
-///    and the plateau's points give the slab. A node of at most 4 k hull points, a node without
-///    a graph, or any walk not certified (or with a plateau of more than 64 points): the exact
-///    update.
+///    the node's hull graph by m . p (m = R^T n rounded) to a point v no neighbour of which is
+///    higher, and gathers the plateau around v: the points connected to it whose values are
+///    within 2 e of v's, e being twice the rounding of m . p plus twice 2^-44 (M + 3 |T|_max)
+///    |n|_1, a bound on |slab value - (m . p + n . T)| over the hull points. Every hull point off
+///    the plateau is then lower than v in exact arithmetic by more than the latter (a climbing
+///    path from it would enter the plateau through a point next to it), so the plateau's points
+///    give the slab. A node of at most 4 k hull points, a node without a graph, or a plateau of
+///    more than 64 points: the exact update.
 /// Padded by 2^-43 of b's magnitude plus |t's translation| (times the 1-norm of a k-DOP's slab
 /// direction), so that it contains, in exact arithmetic, the node's triangles moved as the leaf
 /// test sees them (each vertex by apply(t, v)).

@@ -87,6 +87,8 @@ TEST(HullGraph, RandomIntegerPointsOnGridsPlanesAndLines) {
       EXPECT_LE(g->points.size(), 2u);
     } else if (most > 2) {
       ++full;
+      // A triangulated sphere: E = 3V - 6 (no facet missing, none twice or overlapping).
+      EXPECT_EQ(g->neighbours.size(), 2 * (3 * g->points.size() - 6));
     }
     expect_walks_reach_the_maximum(points, *g, random);
   }
