@@ -126,12 +126,12 @@ void append_vertices(const Bvh<BV>& bvh, const BvhNode<BV>& n, std::vector<Vec3>
 // Aabb and k-DOPs: leaves fitted to their vertices, other nodes merged from their children
 // (which equals fitting their triangles, exactly). Every point of every volume lies in the
 // root's box (its x, y, z slabs), whose farthest corner bounds the magnitude.
-// Appends a node's hull points with their graph when hull_graph decides it (the graph's
-// neighbours renumbered from the node's first point), else as append_hull_points does, with no
-// graph. Returns whether the graph was decided.
-bool append_hull_graph(std::vector<Vec3>& points, ConvexHull& hull, NodePoints& out, NodeGraphs& graphs) {
+// Appends a node's hull points with their graph when `walkable` and hull_graph decides it (the
+// graph's neighbours renumbered from the node's first point), else as append_hull_points does,
+// with no graph. Returns whether the graph was made.
+bool append_hull_graph(std::vector<Vec3>& points, bool walkable, ConvexHull& hull, NodePoints& out, NodeGraphs& graphs) {
   const auto first = static_cast<std::uint32_t>(out.points.size());
-  const std::optional<HullGraph> g = hull_graph(points);
+  const std::optional<HullGraph> g = walkable ? hull_graph(points) : std::nullopt;
   if (!g) {
     append_hull_points(points, hull, out.points);
   } else {
@@ -151,6 +151,11 @@ template <class BV>
 constexpr int kSlabDirections = 3;
 template <int K>
 constexpr int kSlabDirections<Kdop<K>> = K / 2;
+
+// A node of at most 4 k points gets no hull graph: moving its points (the exact update) costs
+// less than its k walks would, each step of which evaluates every neighbour of a point.
+template <class BV>
+constexpr std::size_t kHullGraphAbove = 4 * 2 * kSlabDirections<BV>;
 
 template <class BV>
 void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points, bool keep_hull_graphs) {
@@ -181,7 +186,8 @@ void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points, bool keep_hull_graphs) 
     }
     const auto first = static_cast<std::uint32_t>(bvh.hull_points.points.size());
     if (keep_hull_graphs) {
-      bvh.hull_graphs.walkable[i] = append_hull_graph(points, hull, bvh.hull_points, bvh.hull_graphs);
+      bvh.hull_graphs.walkable[i] =
+          append_hull_graph(points, points.size() > kHullGraphAbove<BV>, hull, bvh.hull_points, bvh.hull_graphs);
     } else {
       append_hull_points(points, hull, bvh.hull_points.points);
     }

@@ -52,9 +52,11 @@ struct BuildOptions {
   /// hull of its triangles (Bvh::hull_points), which the exact update moves. Without them the
   /// exact update moves every vertex of the node's triangles (the same volume, more work).
   bool hull_points = false;
-  /// Aabb and k-DOP trees: also keep, per node, the graph of the exact convex hull of its
-  /// triangles (Bvh::hull_graphs, from hull_graph), which the hill-climbing update walks. Implies
-  /// hull_points, which then are the graph's points: every vertex of the hull, no point inside it.
+  /// Aabb and k-DOP trees: also keep, per node of more than 4 k hull point candidates (its
+  /// triangles' vertices, or its children's hull points), the graph of the exact convex hull of
+  /// its triangles (Bvh::hull_graphs, from hull_graph), which the hill-climbing update walks.
+  /// Implies hull_points, which for those nodes are the graph's points: every vertex of the
+  /// hull, no point inside it.
   bool hull_graphs = false;
   friend bool operator==(const BuildOptions&, const BuildOptions&) = default;
 };
@@ -83,7 +85,7 @@ struct NodePoints {
 struct NodeGraphs {
   std::vector<std::uint32_t> offsets;     // per point, and one past the last: its neighbours start there
   std::vector<std::uint32_t> neighbours;  // within the node's range
-  std::vector<std::uint8_t> walkable;     // per node: 1 when its graph was decided (hull_graph), else 0
+  std::vector<std::uint8_t> walkable;     // per node: 1 when it has a graph, else 0 (small, or undecided)
   /// Per node, two per slab direction (the upper end, then the lower): the point (within the
   /// node's range) where the last walk for it ended, where the next one starts. Written by
   /// collide() under BvUpdate::hill_climbing through relaxed atomic stores, so queries on one tree

@@ -185,7 +185,7 @@ class VolumeMover {
     std::vector<Vec3> points;
     const auto add = [&](const Vec3& p) { points.push_back(apply(t_, p)); };
     if (update_ == BvUpdate::hill_climbing && !b_.hull_graphs.walkable.empty() && b_.hull_graphs.walkable[node] &&
-        b_.hull_points.range[node].second > kClimbAbove && climb(node, points)) {
+        climb(node, points)) {
       ++climbed_;  // every slab's highest and lowest hull points, moved: nothing more to add
     } else if (!b_.hull_points.range.empty()) {
       points.clear();
@@ -215,10 +215,6 @@ class VolumeMover {
   // climbing path from any point off the plateau enters it through a point next to it, so is
   // lower still, and so is its slab value than v's. When every walk's plateau is whole (at most
   // kMostOnAPlateau points): the plateaus' points moved (into `points`), and true.
-  // A node of at most 4 k hull points takes the exact update: its k walks would evaluate more
-  // points than it has (each step of a walk evaluates every neighbour of the point it is at).
-  static constexpr std::uint32_t kClimbAbove = 4 * 2 * kSlabs;
-
   bool climb(std::size_t node, std::vector<Vec3>& points) const {
     constexpr std::size_t kMostOnAPlateau = 64;
     const NodeGraphs& g = b_.hull_graphs;

@@ -105,8 +105,8 @@ CollisionResult collide(LazyBvh<BV>& a, const RigidTransform& pose_a, LazyBvh<BV
 ///    |n|_1, a bound on |slab value - (m . p + n . T)| over the hull points. Every hull point off
 ///    the plateau is then lower than v in exact arithmetic by more than the latter (a climbing
 ///    path from it would enter the plateau through a point next to it), so the plateau's points
-///    give the slab. A node of at most 4 k hull points, a node without a graph, or a plateau of
-///    more than 64 points: the exact update.
+///    give the slab. A node without a graph (small nodes have none: BuildOptions::hull_graphs),
+///    or a plateau of more than 64 points: the exact update.
 /// Padded by 2^-43 of b's magnitude plus |t's translation| (times the 1-norm of a k-DOP's slab
 /// direction), so that it contains, in exact arithmetic, the node's triangles moved as the leaf
 /// test sees them (each vertex by apply(t, v)).

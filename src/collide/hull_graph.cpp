@@ -125,7 +125,9 @@ class ExactQuickHull {
           first_facet[v] = f;
         } else if (!bent[v]) {
           const Facet& g = facets_[first_facet[v]];
-          for (Index w : facets_[f].v) bent[v] = bent[v] || side(g, w) != 0;
+          for (Index w : facets_[f].v) {  // (g's own vertices are on its plane)
+            if (w != g.v[0] && w != g.v[1] && w != g.v[2]) bent[v] = bent[v] || side(g, w) != 0;
+          }
         }
       }
     }
@@ -197,8 +199,7 @@ class ExactQuickHull {
   void replace_visible(Index start, Index apex) {
     ++epoch_;
     // The facets apex sees strictly: a connected set (for exact signs) around `start`.
-    std::vector<Index> visible = {start}, horizon_facet;
-    std::vector<int> horizon_edge;
+    std::vector<Index> visible = {start};
     facets_[start].mark = epoch_;
     for (std::size_t k = 0; k < visible.size(); ++k) {
       const Index f = visible[k];
