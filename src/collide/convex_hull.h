@@ -39,9 +39,9 @@ ConvexHull convex_hull(std::span<const Vec3> points);
 ///    facet's plane counts as inside it); flat points: the polygon, covered on both sides;
 ///    collinear or coincident: none.
 ///  - `vertices`: every point the hull may need, in exact arithmetic: a point is left out only
-///    when it lies strictly inside a tetrahedron of points kept (four exact orientation signs,
-///    exact_orientation.h). So the hull of `vertices` holds every point exactly. Flat and
-///    collinear points: all of them.
+///    when it lies, certainly, strictly inside a tetrahedron of points kept (four orientation
+///    signs certified by the filter of exact_orientation.h). So the hull of `vertices` holds
+///    every point exactly. Flat and collinear points: all of them.
 /// Points must be finite and distinct (repeated points are harmless but slow it down).
 ConvexHull fast_convex_hull(std::span<const Vec3> points);
 /// The same, into `hull` (its storage reused: no allocation once it has grown).

@@ -2,8 +2,8 @@
 // Each point is assigned to one facet it lies outside of; the farthest point of a facet is added
 // by replacing every facet it sees with a fan from it to their horizon; the points of the
 // replaced facets are assigned again to the new ones or left as inside. A point left inside is
-// dropped only when it lies strictly inside a tetrahedron of points kept (by the exact signs of
-// four orientations); otherwise it stays among the
+// dropped only when it lies, certainly, strictly inside a tetrahedron of points kept (by the
+// signs of four orientations, each decided by a filter that certifies it); otherwise it stays among the
 // vertices, and so do the hull vertices the hull swallows as it grows. Every point dropped is
 // thus inside the hull of the points kept, in exact arithmetic, whatever the rounding did to
 // the facets.
@@ -189,11 +189,13 @@ class QuickHull {
     }
   }
 
-  // The exact sign of the orientation of (a, b, c, d) on the points as given (0: coplanar). A
-  // floating-point filter alone (Shewchuk's bound on the permanent) certified wrong signs when
+  // The sign of the orientation of (a, b, c, d) on the points as given when the floating-point
+  // filter of exact_orientation.h decides it (then it is exact), 0 when it does not: a point
+  // near a face is kept, not decided in integers (nearly flat quads are common and the hull only
+  // needs to keep enough points). The filter this used before certified wrong signs where
   // products underflowed beside large terms.
   int orientation(Index a, Index b, Index c, Index d) const {
-    return orientation_sign(p_[a], p_[b], p_[c], p_[d]).value_or(0);
+    return orientation_stages::filtered_orientation_sign(p_[a], p_[b], p_[c], p_[d]).value_or(0);
   }
 
   // Whether point i lies strictly inside the tetrahedron, certainly: it is on the same side of
