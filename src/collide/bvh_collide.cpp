@@ -1,9 +1,8 @@
 #include "collide/bvh_collide.h"
 
 #include <algorithm>
-#include <cmath>
 #include <atomic>
-#include <limits>
+#include <cmath>
 
 #include "collide/bvh_lazy.h"
 #include "collide/kdop_support.h"
@@ -188,7 +187,6 @@ class VolumeMover {
         climb(node, points)) {
       ++climbed_;  // every slab's highest and lowest hull points, moved: nothing more to add
     } else if (!b_.hull_points.range.empty()) {
-      points.clear();
       for (const Vec3& p : b_.hull_points.of(node)) add(p);
       evaluated_ += points.size();
     } else {

@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cmath>
 #include <limits>
 #include <numeric>
 
@@ -21,7 +20,7 @@ namespace {
 using Index = std::uint32_t;
 constexpr Index kNone = std::numeric_limits<Index>::max();
 
-struct Undecided {};  // a sign exact_orientation could not decide
+struct Undecided {};  // a sign orientation_sign did not decide (it decides every finite input)
 
 int orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
   const std::optional<int> s = orientation_sign(a, b, c, d);

@@ -23,9 +23,9 @@ namespace cc {
 ///    that always climbs ends at the maximum, and from every point a climbing path leads to it.
 ///    Flat sets: the polygon's two neighbours (points on its edges dropped); collinear sets: the
 ///    two ends, each the other's neighbour; one point: none.
-/// Every sign is decided exactly (orientation_sign); std::nullopt when one cannot be (see
-/// exact_orientation.h) or a coordinate is not finite. Repeated points count once; no points give
-/// an empty graph.
+/// Every sign is decided exactly (orientation_sign, which decides every finite input);
+/// std::nullopt when a coordinate is not finite. Repeated points count once; no points give an
+/// empty graph.
 struct HullGraph {
   std::vector<Vec3> points;
   std::vector<std::uint32_t> offsets;  // points.size() + 1 entries
