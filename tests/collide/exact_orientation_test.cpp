@@ -3,6 +3,7 @@
 // perturbations, permutations and exact translations, extreme exponents, non-finite coordinates;
 // both stages (the filter and the integers) exercised. (tests/collide_exact compares with GMP.)
 #include "collide/exact_orientation.h"
+#include "test_random.h"
 
 #include <gtest/gtest.h>
 
@@ -23,23 +24,7 @@ using orientation_stages::exact_planar_orientation_sign;
 using orientation_stages::filtered_orientation_sign;
 using orientation_stages::filtered_planar_orientation_sign;
 
-// Integers and doubles from the raw 64-bit outputs (std's distributions differ between libraries).
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : engine_(seed) {}
-  double unit() { return static_cast<double>(engine_() >> 11) * 0x1p-53; }
-  double between(double lo, double hi) { return lo + (hi - lo) * unit(); }
-  // An integer in [-2^bits, 2^bits] (bits <= 62).
-  std::int64_t integer(int bits) {
-    const std::uint64_t span = (std::uint64_t{1} << (bits + 1)) + 1;
-    return static_cast<std::int64_t>(engine_() % span) - (std::int64_t{1} << bits);
-  }
-  int below(int n) { return static_cast<int>(engine_() % static_cast<std::uint64_t>(n)); }
-  Vec3 in_cube(double h) { return {between(-h, h), between(-h, h), between(-h, h)}; }
-
- private:
-  std::mt19937_64 engine_;
-};
+using test::Random;
 
 // The determinant as a plain floating-point expression, for showing what it gets wrong.
 double naive_determinant(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {

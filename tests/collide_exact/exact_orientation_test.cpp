@@ -16,6 +16,7 @@
 #include <string>
 
 #include "oracle/exact/rational.h"
+#include "test_random.h"
 
 namespace cc {
 namespace {
@@ -27,27 +28,7 @@ using orientation_stages::exact_planar_orientation_sign;
 using orientation_stages::filtered_orientation_sign;
 using orientation_stages::filtered_planar_orientation_sign;
 
-// Doubles and integers from the raw 64-bit outputs (std's distributions differ between libraries).
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : engine_(seed) {}
-  double unit() { return static_cast<double>(engine_() >> 11) * 0x1p-53; }
-  double between(double lo, double hi) { return lo + (hi - lo) * unit(); }
-  int below(int n) { return static_cast<int>(engine_() % static_cast<std::uint64_t>(n)); }
-  int in(int lo, int hi) { return lo + below(hi - lo + 1); }
-  Vec3 in_cube(double h) { return {between(-h, h), between(-h, h), between(-h, h)}; }
-  // x moved by 0, 1 or 2 ulps up or down.
-  double perturbed(double x) {
-    const int steps = below(3);
-    const double to = below(2) == 0 ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
-    for (int s = 0; s < steps; ++s) x = std::nextafter(x, to);
-    return x;
-  }
-  Vec3 perturbed(const Vec3& v) { return {perturbed(v.x), perturbed(v.y), perturbed(v.z)}; }
-
- private:
-  std::mt19937_64 engine_;
-};
+using test::Random;
 
 int sign_of(const Rational& q) { return sgn(q); }
 

@@ -14,6 +14,7 @@
 
 #include "oracle/exact/exact_ray_triangle.h"
 #include "oracle/exact/rational.h"
+#include "test_random.h"
 
 namespace cc {
 namespace {
@@ -21,19 +22,7 @@ namespace {
 using exact::QVec3;
 using exact::Rational;
 
-// Doubles in [0, 1) from the raw 64-bit outputs (std's distributions differ between libraries).
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : engine_(seed) {}
-  double unit() { return static_cast<double>(engine_() >> 11) * 0x1p-53; }
-  double between(double lo, double hi) { return lo + (hi - lo) * unit(); }
-  int below(int n) { return static_cast<int>(engine_() % static_cast<std::uint64_t>(n)); }
-  Vec3 in_cube(double h) { return {between(-h, h), between(-h, h), between(-h, h)}; }
-  Vec3 integer_point(int h) { return {double(below(2 * h + 1) - h), double(below(2 * h + 1) - h), double(below(2 * h + 1) - h)}; }
-
- private:
-  std::mt19937_64 engine_;
-};
+using test::Random;
 
 struct Statistics {
   int cases = 0, exact_hits = 0, hits = 0;

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "oracle/exact/rational.h"
+#include "test_random.h"
 
 namespace cc {
 namespace {
@@ -29,16 +30,7 @@ bool holds(const Sphere& m, const Sphere& b) {
   const QVec3 d = rational(m.center) - rational(b.center);
   return slack >= 0 && dot(d, d) <= slack * slack;
 }
-
-class Random {
- public:
-  explicit Random(std::uint64_t seed) : engine_(seed) {}
-  double between(double lo, double hi) { return lo + (hi - lo) * static_cast<double>(engine_() >> 11) * 0x1p-53; }
-  int below(int n) { return static_cast<int>(engine_() % static_cast<std::uint64_t>(n)); }
-
- private:
-  std::mt19937_64 engine_;
-};
+using test::Random;
 
 // Points of one of several shapes at a random scale and offset.
 std::vector<Vec3> points(Random& random) {
