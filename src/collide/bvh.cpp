@@ -123,9 +123,6 @@ void append_vertices(const Bvh<BV>& bvh, const BvhNode<BV>& n, std::vector<Vec3>
   }
 }
 
-// Aabb and k-DOPs: leaves fitted to their vertices, other nodes merged from their children
-// (which equals fitting their triangles, exactly). Every point of every volume lies in the
-// root's box (its x, y, z slabs), whose farthest corner bounds the magnitude.
 // Appends a node's hull points with their graph when `walkable` and hull_graph decides it (the
 // graph's neighbours renumbered from the node's first point), else as append_hull_points does,
 // with no graph. Returns whether the graph was made.
@@ -157,6 +154,9 @@ constexpr int kSlabDirections<Kdop<K>> = K / 2;
 template <class BV>
 constexpr std::size_t kHullGraphAbove = 4 * 2 * kSlabDirections<BV>;
 
+// Aabb and k-DOPs: leaves fitted to their vertices, other nodes merged from their children
+// (which equals fitting their triangles, exactly). Every point of every volume lies in the
+// root's box (its x, y, z slabs), whose farthest corner bounds the magnitude.
 template <class BV>
 void fit_refittable(Bvh<BV>& bvh, bool keep_hull_points, bool keep_hull_graphs) {
   using Traits = BoundingVolume<BV>;
