@@ -144,11 +144,6 @@ bool append_hull_graph(std::vector<Vec3>& points, bool walkable, ConvexHull& hul
   return g.has_value();
 }
 
-template <class BV>
-constexpr int kSlabDirections = 3;
-template <int K>
-constexpr int kSlabDirections<Kdop<K>> = K / 2;
-
 // A node of at most 4 k points gets no hull graph: moving its points (the exact update) costs
 // less than its k walks would, each step of which evaluates every neighbour of a point.
 template <class BV>

@@ -80,6 +80,13 @@ struct NodePoints {
   std::span<const Vec3> of(std::size_t node) const { return {points.data() + range[node].first, range[node].second}; }
 };
 
+/// The slab directions of the k-DOP an Aabb or k-DOP node is re-fitted as under rotation: 3 for
+/// an Aabb (the 6-DOP), k / 2 for a k-DOP (an Obb or a ball is moved whole and uses none).
+template <class BV>
+inline constexpr int kSlabDirections = 3;
+template <int K>
+inline constexpr int kSlabDirections<Kdop<K>> = K / 2;
+
 /// Per node, the graph of its hull points (hull_graph.h), for the hill-climbing update. Indices
 /// of points are those of NodePoints::points; a neighbour is an index within the node's range.
 struct NodeGraphs {

@@ -90,17 +90,6 @@ Sphere moved_ball(const Sphere& ball, const RigidTransform& t, double stretch, d
 template <class BV>
 inline constexpr bool kMovedWhole = std::is_same_v<BV, Obb> || std::is_same_v<BV, Sphere>;
 
-// The slabs of the k-DOP a volume is re-fitted as: 3 for a box (an Aabb is the 6-DOP; an Obb
-// or a ball is moved instead and uses none).
-template <class BV>
-struct SlabCount {
-  static constexpr int value = 3;
-};
-template <int K>
-struct SlabCount<Kdop<K>> {
-  static constexpr int value = K / 2;
-};
-
 // Brings volumes of b into a's frame for one relative transform t (b to a), each slab widened
 // by pad times the 1-norm of its direction.
 //  - Obb: moved by t.
@@ -169,7 +158,7 @@ class VolumeMover {
   }
 
  private:
-  static constexpr int kSlabs = SlabCount<BV>::value;
+  static constexpr int kSlabs = kSlabDirections<BV>;
   using Dop = Kdop<2 * kSlabs>;
 
   Dop move(const Dop& dop, std::size_t node) const {

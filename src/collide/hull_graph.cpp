@@ -20,18 +20,11 @@ namespace {
 using Index = std::uint32_t;
 constexpr Index kNone = std::numeric_limits<Index>::max();
 
-struct Undecided {};  // a sign orientation_sign did not decide (it decides every finite input)
-
-int orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) {
-  const std::optional<int> s = orientation_sign(a, b, c, d);
-  if (!s) throw Undecided{};
-  return *s;
-}
+// orientation_sign decides every finite input, and hull_graph takes finite points only.
+int orientation(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return *orientation_sign(a, b, c, d); }
 
 int planar_orientation(const Vec3& a, const Vec3& b, const Vec3& c, int drop) {
-  const std::optional<int> s = planar_orientation_sign(a, b, c, drop);
-  if (!s) throw Undecided{};
-  return *s;
+  return *planar_orientation_sign(a, b, c, drop);
 }
 
 bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -289,25 +282,20 @@ std::optional<HullGraph> hull_graph(std::span<const Vec3> input) {
   p.reserve(firsts.size());
   for (Index i : firsts) p.push_back(input[i]);
 
-  Edges edges;
-  try {
-    std::vector<Index> inside;
-    edges = hull_edges(p, &inside);
-    if (!inside.empty()) {
-      // Again without the points inside faces, whose neighbours all lie in their face: a
-      // direction into the hull climbs from none of them.
-      std::vector<bool> keep(p.size(), false);
-      for (const auto& [a, b] : edges) keep[a] = keep[b] = true;
-      for (Index i : inside) keep[i] = false;
-      std::vector<Vec3> vertices;
-      for (Index i = 0; i < p.size(); ++i) {
-        if (keep[i]) vertices.push_back(p[i]);
-      }
-      p = std::move(vertices);
-      edges = hull_edges(p, nullptr);
+  std::vector<Index> inside;
+  Edges edges = hull_edges(p, &inside);
+  if (!inside.empty()) {
+    // Again without the points inside faces, whose neighbours all lie in their face: a
+    // direction into the hull climbs from none of them.
+    std::vector<bool> keep(p.size(), false);
+    for (const auto& [a, b] : edges) keep[a] = keep[b] = true;
+    for (Index i : inside) keep[i] = false;
+    std::vector<Vec3> vertices;
+    for (Index i = 0; i < p.size(); ++i) {
+      if (keep[i]) vertices.push_back(p[i]);
     }
-  } catch (const Undecided&) {
-    return std::nullopt;
+    p = std::move(vertices);
+    edges = hull_edges(p, nullptr);
   }
 
   // The vertices the edges use, in input order, and their neighbour lists.
