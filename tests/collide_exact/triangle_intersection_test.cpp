@@ -1,0 +1,167 @@
+// intersect_triangles against the exact intersection (GMP rationals, oracle/exact): empty exactly
+// when the exact intersection is, and the hull of its points within 2^-44 M kappa of the exact
+// one both ways, on triangles drawn to touch, cross at grazing angles, share planes, be slivers,
+// segments and points, at scales from 2^-1000 to 2^300.
+#include "collide/triangle_intersection.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "oracle/exact/exact_triangle_intersection.h"
+#include "oracle/exact/rational.h"
+#include "test_random.h"
+
+namespace cc {
+namespace {
+
+using exact::QVec3;
+using exact::Rational;
+
+struct Met {
+  int cases = 0, met = 0, touching = 0, coplanar_polygons = 0, grazing = 0, degenerate = 0;
+  double worst = 0;  // the largest Hausdorff distance over its bound
+};
+
+std::string describe(const Triangle& a, const Triangle& b) {
+  std::string s;
+  char buf[96];
+  for (const Triangle* t : {&a, &b}) {
+    for (const Vec3& p : t->v) {
+      std::snprintf(buf, sizeof buf, "(%a, %a, %a) ", p.x, p.y, p.z);
+      s += buf;
+    }
+    s += "| ";
+  }
+  return s;
+}
+
+std::string points_text(const std::vector<QVec3>& points) {
+  std::string s;
+  char buf[96];
+  for (const QVec3& q : points) {
+    const Vec3 p = exact::to_double(q);
+    std::snprintf(buf, sizeof buf, "(%.17g, %.17g, %.17g) ", p.x, p.y, p.z);
+    s += buf;
+  }
+  return s;
+}
+
+void check(const Triangle& a, const Triangle& b, Met& met) {
+  const TriangleIntersection r = intersect_triangles(a, b);
+  const std::vector<exact::ExactCorner> corners = exact::exact_triangle_intersection(a, b);
+  ++met.cases;
+  ASSERT_EQ(r.empty(), corners.empty()) << describe(a, b);
+  if (corners.empty()) return;
+  ++met.met;
+  double m = 0, kappa = 1;
+  for (const Triangle* t : {&a, &b}) {
+    for (const Vec3& p : t->v) m = std::max(m, max_abs(p));
+  }
+  std::vector<QVec3> truth, said;
+  for (const auto& c : corners) truth.push_back(c.point), kappa = std::max(kappa, c.condition);
+  for (int i = 0; i < r.count; ++i) said.push_back(exact::rational(r.points[i]));
+  met.touching += truth.size() == 1;
+  met.coplanar_polygons += truth.size() >= 3;
+  met.grazing += kappa > 1e3;
+  const double bound = 0x1p-44 * m * kappa + 0x1p-1074;
+  Rational worst = 0;
+  for (const QVec3& p : said) worst = std::max(worst, exact::distance2_to_hull(p, truth));
+  for (const QVec3& p : truth) worst = std::max(worst, exact::distance2_to_hull(p, said));
+  const double distance = std::sqrt(exact::to_double(worst));
+  met.worst = std::max(met.worst, distance / bound);
+  ASSERT_LE(distance, bound) << "kappa " << kappa << ", said " << points_text(said) << ", exact " << points_text(truth)
+                             << ": " << describe(a, b);
+}
+
+Vec3 on_edge(const Triangle& t, int i, double s) { return t.v[i] + s * (t.v[(i + 1) % 3] - t.v[i]); }
+
+// A pair drawn in one of the configurations the contract names.
+std::pair<Triangle, Triangle> draw(test::Random& random, int kind, Met& met) {
+  Triangle a, b;
+  for (Vec3& p : a.v) p = random.in_cube(1);
+  for (Vec3& p : b.v) p = random.in_cube(1);
+  switch (kind) {
+    case 0: break;                                // anywhere
+    case 1: b.v[0] = a.v[random.below(3)]; break;  // a shared vertex
+    case 2: b.v[1] = on_edge(a, random.below(3), random.unit()); break;  // a vertex on an edge (rounded)
+    case 3: {  // integer grids: touching along edges and faces, coplanar pairs
+      for (Vec3& p : a.v) p = random.integer_point(2);
+      for (Vec3& p : b.v) p = random.integer_point(2);
+      if (random.below(2) == 0) {
+        for (Triangle* t : {&a, &b}) {
+          for (Vec3& p : t->v) p.z = random.below(3) == 0 ? 1 : 0;
+        }
+      }
+      break;
+    }
+    case 4: {  // coplanar on the tilted plane x + y + z = 3 (integer points), or one vertex off by ulps
+      for (Triangle* t : {&a, &b}) {
+        for (Vec3& p : t->v) {
+          p.x = random.in(-4, 4);
+          p.y = random.in(-4, 4);
+          p.z = 3 - p.x - p.y;
+        }
+      }
+      if (random.below(4) == 0) b.v[0] = random.perturbed(b.v[0]);
+      break;
+    }
+    case 5: {  // grazing: b nearly in a's plane, crossing it at a small angle
+      const double tilt = std::ldexp(1.0, -random.in(5, 40));
+      for (int i = 0; i < 3; ++i) b.v[i] = a.v[random.below(3)] + 0.5 * random.in_cube(1);
+      const Vec3 n = cross(a.v[1] - a.v[0], a.v[2] - a.v[0]);
+      for (int i = 0; i < 3; ++i) {
+        const double side = dot(b.v[i] - a.v[0], n) / dot(n, n);
+        b.v[i] = b.v[i] - (side - (i == 0 ? tilt : -tilt)) * n;
+      }
+      break;
+    }
+    case 6: {  // slivers: a vertex near the opposite edge's line
+      a.v[2] = random.perturbed(on_edge(a, 0, random.between(-0.5, 1.5)));
+      b.v[2] = random.perturbed(on_edge(b, 0, random.between(-0.5, 1.5)));
+      break;
+    }
+    case 7: {  // segments and points
+      ++met.degenerate;
+      a.v[2] = random.below(2) == 0 ? a.v[0] : on_edge(a, 0, 0.5);
+      if (random.below(2) == 0) b.v[1] = b.v[2] = b.v[0];
+      if (random.below(3) == 0) b.v[0] = on_edge(a, 0, 0.25);
+      break;
+    }
+    default: {  // a moved by a few ulps: nearly coplanar, touching
+      b = a;
+      for (Vec3& p : b.v) p = random.perturbed(p);
+      break;
+    }
+  }
+  return {a, b};
+}
+
+TEST(IntersectTrianglesExactly, AgreesWithTheExactIntersection) {
+  test::Random random(2026);
+  Met met;
+  for (int i = 0; i < 15000; ++i) {
+    auto [a, b] = draw(random, i % 9, met);
+    const int e = i % 7 == 0 ? random.in(-1000, 300) : 0;  // far scales now and then
+    for (Triangle* t : {&a, &b}) {
+      for (Vec3& p : t->v) p = {std::ldexp(p.x, e), std::ldexp(p.y, e), std::ldexp(p.z, e)};
+    }
+    check(a, b, met);
+    if (HasFatalFailure()) return;
+  }
+  std::printf("%d cases: %d meet, %d at a point, %d coplanar polygons, %d grazing (kappa > 1e3), %d degenerate; "
+              "worst distance / bound %.3g\n",
+              met.cases, met.met, met.touching, met.coplanar_polygons, met.grazing, met.degenerate, met.worst);
+  EXPECT_GT(met.met, 6000);
+  EXPECT_GT(met.touching, 1000);
+  EXPECT_GT(met.coplanar_polygons, 500);
+  EXPECT_GT(met.grazing, 200);
+  EXPECT_GT(met.worst, 0);  // rounded corners were met
+}
+
+}  // namespace
+}  // namespace cc
