@@ -106,30 +106,34 @@ Vec3 along(const Vec3& a, const Vec3& b, double s) {
 // direction the edge is given in.
 std::pair<Vec3, Vec3> ordered(const Vec3& p, const Vec3& q) { return lex_less(q, p) ? std::pair{q, p} : std::pair{p, q}; }
 
-// Where the segment pq crosses the plane of the triangle t (pq strictly crosses it).
+// Where the segment pq crosses the plane of the triangle t (pq strictly crosses it). The normal
+// is taken from t's edges each scaled to unit magnitude (its direction is theirs; a tiny
+// triangle's products do not underflow).
 Vec3 plane_crossing(const Vec3& p0, const Vec3& q0, const Shape& t0, const Scale& scale) {
   const auto [p, q] = ordered(scale.in(p0), scale.in(q0));
   const Vec3 t = scale.in(t0.v[0]);
-  const Vec3 n = cross(scale.in(t0.v[1]) - t, scale.in(t0.v[2]) - t);
+  const Vec3 n = cross(unit_scaled(scale.in(t0.v[1]) - t), unit_scaled(scale.in(t0.v[2]) - t));
   const double dp = dot(p - t, n), dq = dot(q - t, n);
   return scale.out(along(p, q, dp / (dp - dq)));
 }
 
-// 2-D cross product (b - a) x (c - a) in the projection dropping `drop`.
-double cross2(const Vec3& a, const Vec3& b, const Vec3& c, int drop) {
+// The 2-D cross product d x w in the projection dropping `drop`.
+double cross2(const Vec3& d, const Vec3& w, int drop) {
   const int i = first_kept(drop), j = second_kept(drop);
-  return (b[i] - a[i]) * (c[j] - a[j]) - (b[j] - a[j]) * (c[i] - a[i]);
+  return d[i] * w[j] - d[j] * w[i];
 }
 
 // Where the coplanar segments pq and rs cross (properly, in the projection dropping `drop`):
-// on the segment whose ends come first lexicographically, so the point is the same either way.
+// on the segment whose ends come first lexicographically, so the point is the same either way;
+// the other's direction scaled to unit magnitude (a tiny edge's products do not underflow).
 Vec3 edge_crossing(const Vec3& p0, const Vec3& q0, const Vec3& r0, const Vec3& s0, int drop, const Scale& scale) {
   auto e = ordered(scale.in(p0), scale.in(q0)), f = ordered(scale.in(r0), scale.in(s0));
   if (std::tie(f.first.x, f.first.y, f.first.z, f.second.x, f.second.y, f.second.z) <
       std::tie(e.first.x, e.first.y, e.first.z, e.second.x, e.second.y, e.second.z)) {
     std::swap(e, f);
   }
-  const double de = cross2(f.first, f.second, e.first, drop), dq = cross2(f.first, f.second, e.second, drop);
+  const Vec3 d = unit_scaled(f.second - f.first);
+  const double de = cross2(d, e.first - f.first, drop), dq = cross2(d, e.second - f.first, drop);
   return scale.out(along(e.first, e.second, de / (de - dq)));
 }
 

@@ -132,6 +132,23 @@ std::pair<Triangle, Triangle> draw(test::Random& random, int kind, Met& met) {
       if (random.below(3) == 0) b.v[0] = on_edge(a, 0, 0.25);
       break;
     }
+    case 9: {  // a tiny triangle (2^-20 .. 2^-1070 of b's size) at a vertex of b moved to the origin,
+               // in the common plane y = 0 or not
+      const Vec3 at = b.v[random.below(3)];
+      for (Vec3& p : b.v) p = p - at;
+      const int e = -random.in(20, 1070);
+      const bool in_plane = random.below(2) == 0;
+      for (Vec3& p : a.v) {
+        const Vec3 d = random.in_cube(1);
+        p = {std::ldexp(d.x, e), std::ldexp(d.y, e), std::ldexp(d.z, e)};
+      }
+      if (in_plane) {
+        for (Triangle* t : {&a, &b}) {
+          for (Vec3& p : t->v) p.y = 0;
+        }
+      }
+      break;
+    }
     default: {  // a moved by a few ulps: nearly coplanar, touching
       b = a;
       for (Vec3& p : b.v) p = random.perturbed(p);
@@ -141,11 +158,28 @@ std::pair<Triangle, Triangle> draw(test::Random& random, int kind, Met& met) {
   return {a, b};
 }
 
+// Found by the campaign: a triangle of subnormal size against a unit one in its plane. The
+// crossing of a long edge with a tiny one was computed from products that underflowed to 0/0,
+// and gave the long edge's end, 0.044 away; directions are now scaled to unit magnitude first.
+TEST(IntersectTrianglesExactly, ATinyTriangleAgainstALargeOneInItsPlane) {
+  const Triangle a = {{Vec3{-2e-323, 0, 0}, Vec3{0, 0, -2e-323}, Vec3{0, 0, 0}}};
+  const Triangle b = {{Vec3{0, 0, 1}, Vec3{0, 0, 0}, Vec3{-0.03125, 0, -0.03125}}};
+  Met met;
+  check(a, b, met);
+  check(b, a, met);
+  for (int e : {-1, -40, -1000}) {  // the same at smaller scales of a
+    Triangle small = a;
+    for (Vec3& p : small.v) p = {std::ldexp(p.x, 1060 + e), 0, std::ldexp(p.z, 1060 + e)};
+    check(small, b, met);
+  }
+  EXPECT_EQ(met.met, 5);
+}
+
 TEST(IntersectTrianglesExactly, AgreesWithTheExactIntersection) {
   test::Random random(2026);
   Met met;
   for (int i = 0; i < 15000; ++i) {
-    auto [a, b] = draw(random, i % 9, met);
+    auto [a, b] = draw(random, i % 11, met);
     const int e = i % 7 == 0 ? random.in(-1000, 300) : 0;  // far scales now and then
     for (Triangle* t : {&a, &b}) {
       for (Vec3& p : t->v) p = {std::ldexp(p.x, e), std::ldexp(p.y, e), std::ldexp(p.z, e)};
