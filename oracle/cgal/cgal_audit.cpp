@@ -233,6 +233,29 @@ Bracket bracket(const FT& t) {
   return {down, is_double ? down : std::nextafter(down, INFINITY)};
 }
 
+/// The corners of the intersection of two pieces of triangles that meet (a point, a segment, a
+/// triangle or a convex polygon as CGAL::intersection gives it).
+template <class X, class Y>
+std::vector<Point> corners_of(const X& x, const Y& y) {
+  if constexpr (std::is_same_v<X, Point>) {
+    return {x};
+  } else if constexpr (std::is_same_v<Y, Point>) {
+    return {y};
+  } else if constexpr (std::is_same_v<X, Tetrahedron> || std::is_same_v<Y, Tetrahedron>) {
+    throw std::logic_error("corners_of: a triangle has no tetrahedron piece");
+  } else {
+    const auto where = CGAL::intersection(x, y);
+    if (!where) throw std::logic_error("cgal_answer: CGAL's do_intersect and intersection disagree");
+    if (const Point* p = boost::get<Point>(&*where)) return {*p};
+    if (const Segment* s = boost::get<Segment>(&*where)) return {s->source(), s->target()};
+    if constexpr (std::is_same_v<X, Triangle3> && std::is_same_v<Y, Triangle3>) {
+      if (const Triangle3* t = boost::get<Triangle3>(&*where)) return {t->vertex(0), t->vertex(1), t->vertex(2)};
+      return boost::get<std::vector<Point>>(*where);
+    }
+    throw std::logic_error("corners_of: an intersection of unexpected type");
+  }
+}
+
 /// A hit or a miss, with nothing more.
 CgalAnswer hit_or_miss(bool hit) {
   CgalAnswer answer;
@@ -256,7 +279,16 @@ CgalAnswer cgal_answer(const Aabb& a, const Aabb& b) { return hit_or_miss(CGAL::
 CgalAnswer cgal_answer(const Ray& ray, const Aabb& box) { return hit_or_miss(ray_meets(ray, cuboid(box))); }
 CgalAnswer cgal_answer(const Triangle& tri, const Aabb& box) { return hit_or_miss(meet(pieces(tri), cuboid(box))); }
 CgalAnswer cgal_answer(const Triangle& tri, const Obb& box) { return hit_or_miss(meet(pieces(tri), pieces(box))); }
-CgalAnswer cgal_answer(const Triangle& a, const Triangle& b) { return hit_or_miss(meet(pieces(a), pieces(b))); }
+CgalAnswer cgal_answer(const Triangle& a, const Triangle& b) {
+  const Piece pa = pieces(a)[0], pb = pieces(b)[0];
+  CgalAnswer answer = hit_or_miss(std::visit([](const auto& x, const auto& y) { return meet(x, y); }, pa, pb));
+  if (answer.hit) {
+    for (const Point& p : std::visit([](const auto& x, const auto& y) { return corners_of(x, y); }, pa, pb)) {
+      answer.corners.push_back({bracket(p.x()), bracket(p.y()), bracket(p.z())});
+    }
+  }
+  return answer;
+}
 CgalAnswer cgal_answer(const Obb& a, const Obb& b) { return hit_or_miss(meet(pieces(a), pieces(b))); }
 
 CgalAnswer cgal_answer(int k, const std::vector<Vec3>& a_points, const std::vector<Vec3>& b_points) {

@@ -12,6 +12,7 @@
 #pragma once
 
 #include <cstdint>
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -47,6 +48,9 @@ struct CgalAnswer {
   /// A ray against a mesh, a hit: the first parameter t at which the ray meets the mesh (exact in FT, then
   /// bracketed).
   std::optional<Bracket> first_t;
+  /// Two triangles that meet: the corners of their intersection as CGAL constructs it (a point,
+  /// a segment's ends, a polygon's corners), each coordinate bracketed by the doubles around it.
+  std::vector<std::array<Bracket, 3>> corners;
 };
 
 /// Squared distance of the centres against the squared sum of the radii.
@@ -64,7 +68,8 @@ CgalAnswer cgal_answer(const Triangle& tri, const Aabb& box);
 /// of the six tetrahedra of its Kuhn triangulation (two triangles, a segment or a point when half
 /// extents are 0).
 CgalAnswer cgal_answer(const Triangle& tri, const Obb& box);
-/// Triangle_3 (Segment_3, Point_3) against Triangle_3 (Segment_3, Point_3).
+/// Triangle_3 (Segment_3, Point_3) against Triangle_3 (Segment_3, Point_3); when they meet,
+/// the corners of CGAL::intersection.
 CgalAnswer cgal_answer(const Triangle& a, const Triangle& b);
 /// The two parallelepipeds, each as above.
 CgalAnswer cgal_answer(const Obb& a, const Obb& b);

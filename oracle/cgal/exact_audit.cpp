@@ -1,11 +1,13 @@
 #include "oracle/cgal/exact_audit.h"
 
 #include <algorithm>
+#include <functional>
 #include <stdexcept>
 #include <tuple>
 #include <utility>
 
 #include "harness/formats/number_text.h"
+#include "harness/judging/classify.h"
 #include "oracle/exact/exact_kdops.h"
 
 namespace cc::cgal {
@@ -83,6 +85,43 @@ std::string face_differences(const harness::ExactVerdict& exact, const CgalAnswe
          harness::format_double(exact_upper) + "): " + cgal_t;
 }
 
+// Where CGAL gives the corners of two triangles' intersection and the exact reference gives them
+// too (Judged::corners): the same corners, each exact corner one of the doubles around CGAL's.
+std::string corner_differences(const harness::ExactVerdict& exact, const CgalAnswer& cgal) {
+  const std::vector<double>& params = exact.answer.params;
+  if (cgal.corners.empty() || params.empty()) return {};
+  const auto text = [&] {
+    std::string t = "exact reference's corners";
+    for (double v : params) t += " " + harness::format_double(v);
+    t += " differ from CGAL's";
+    for (const auto& c : cgal.corners) {
+      t += " (";
+      for (int k = 0; k < 3; ++k) t += (k > 0 ? ", " : "") + harness::format_double(c[k].down) + ".." + harness::format_double(c[k].up);
+      t += ")";
+    }
+    return t;
+  };
+  if (params.size() != 3 * cgal.corners.size()) return text();
+  // Each exact corner matched to a CGAL corner of its own: a bracket holds two doubles, so
+  // corners one ulp apart may match either way (tried by backtracking; six corners at most).
+  const auto around = [](double v, const Bracket& b) { return v == b.down || v == b.up; };
+  const std::size_t n = cgal.corners.size();
+  std::vector<bool> used(n, false);
+  const std::function<bool(std::size_t)> match = [&](std::size_t i) {
+    if (i == n) return true;
+    for (std::size_t j = 0; j < n; ++j) {
+      const auto& c = cgal.corners[j];
+      if (used[j] || !around(params[3 * i], c[0]) || !around(params[3 * i + 1], c[1]) || !around(params[3 * i + 2], c[2])) continue;
+      used[j] = true;
+      if (match(i + 1)) return true;
+      used[j] = false;
+    }
+    return false;
+  };
+  if (!match(0)) return text();
+  return {};
+}
+
 }  // namespace
 
 bool answers(harness::QueryKind kind) {
@@ -131,6 +170,9 @@ Audit audit_case(const harness::Input& input, const harness::ExactReference& exa
         [&a](const auto& in) { return with_fields(in, [&a](const auto&... fields) { return slab_differences(a.cgal, fields...); }); },
         input);
     if (a.why.empty()) a.why = face_differences(a.exact, a.cgal);
+    if (a.why.empty() && harness::judged_of(harness::kind_of(input)) == harness::Judged::corners) {
+      a.why = corner_differences(a.exact, a.cgal);
+    }
   }
   a.outcome = a.why.empty() ? AuditOutcome::agree : AuditOutcome::disagree;
   return a;

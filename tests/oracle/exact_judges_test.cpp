@@ -167,6 +167,28 @@ TEST(JudgeTriangles, DomainsAndAnswers) {
   EXPECT_FALSE(judge(harness::TriAabbInput{t, {{0.6, 0.6, 0}, {0.6, 0.6, 0}}}).answer.hit);
 }
 
+TEST(JudgeTriTriIntersection, TheCornersAndTheirTolerance) {
+  const Triangle up{{Vec3{0, 0, 0}, Vec3{6, 0, 0}, Vec3{3, 6, 0}}}, down{{Vec3{0, 4, 0}, Vec3{3, -2, 0}, Vec3{6, 4, 0}}};
+  const ExactVerdict star = judge(harness::TriTriIntersectionInput{up, down});
+  EXPECT_TRUE(star.answer.hit);
+  EXPECT_EQ(star.answer.params.size(), 18u);  // the hexagon's six corners
+  EXPECT_EQ(star.margin, judge(harness::TriTriInput{up, down}).margin);
+  // Touching at a vertex: that vertex, condition 1; apart: no corners.
+  const ExactVerdict vertex = judge(harness::TriTriIntersectionInput{up, {{Vec3{0, 0, 0}, Vec3{-1, 0, 1}, Vec3{0, -1, 1}}}});
+  EXPECT_EQ(vertex.answer.params, (std::vector<double>{0, 0, 0}));
+  EXPECT_EQ(vertex.corner_tolerance, 0x1p-44 * 6 + 0x1p-48 * 6 + 0x1p-1074);
+  const ExactVerdict apart = judge(harness::TriTriIntersectionInput{up, {{Vec3{0, 0, 1}, Vec3{1, 0, 1}, Vec3{0, 1, 1}}}});
+  EXPECT_FALSE(apart.answer.hit);
+  EXPECT_TRUE(apart.answer.params.empty());
+  // Out of the domain as tri_tri: NaN is a documented miss, beyond 2^300 decided but unspecified.
+  EXPECT_EQ(judge(harness::TriTriIntersectionInput{up, {{Vec3{0, 0, kNan}, Vec3{1, 0, 0}, Vec3{0, 1, 0}}}}).contract,
+            Contract::documented);
+  const ExactVerdict huge = judge(harness::TriTriIntersectionInput{up, {{Vec3{0, 0, 0x1p301}, Vec3{1, 0, 0}, Vec3{0, 0, -1}}}});
+  EXPECT_EQ(huge.contract, Contract::unspecified);
+  EXPECT_TRUE(huge.decided);
+  EXPECT_EQ(huge.answer.params.size(), 6u);
+}
+
 harness::DiscWallsInput disc_walls(Disc disc, std::vector<Wall> walls) { return {disc, std::move(walls)}; }
 const Wall kFloor{{0, 0}, {2, 0}};  // scale 2 with a disc near it
 

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "harness/judging/bands.h"
+#include "harness/judging/hull_distance.h"
 #include "harness/model/subject.h"
 
 namespace cc::harness {
@@ -193,6 +194,32 @@ std::optional<std::string> params_wrong(const Band& band, const Answer& said, co
   return s.str();
 }
 
+std::vector<Vec3> points_of(const std::vector<double>& params) {
+  std::vector<Vec3> points;
+  for (std::size_t i = 0; i + 2 < params.size(); i += 3) points.push_back({params[i], params[i + 1], params[i + 2]});
+  return points;
+}
+
+// The corners of an intersection against the exact ones, within the verdict's tolerance both ways.
+// Nothing when they agree, or when the party gives none (judged on its hit alone). Else why not.
+std::optional<std::string> corners_wrong(const Answer& said, const ExactVerdict& exact) {
+  if (said.params.empty()) return std::nullopt;
+  std::ostringstream s;
+  s.precision(17);
+  if (said.params.size() % 3 != 0) {
+    s << "gives " << said.params.size() << " corner coordinates, not three per corner";
+    return s.str();
+  }
+  const double d = hull_distance(points_of(said.params), points_of(exact.answer.params));
+  if (d <= exact.corner_tolerance) return std::nullopt;
+  s << "corners";
+  for (double v : said.params) s << ' ' << v;
+  s << " are " << d << " from the exact ones";
+  for (double v : exact.answer.params) s << ' ' << v;
+  s << " (tolerance " << exact.corner_tolerance << ')';
+  return s.str();
+}
+
 PartyStanding judge_party(std::string party, const Band& band, const Answer& said, const ExactVerdict& exact,
                           Judged judged) {
   if (judged == Judged::frames) return judge_frames(std::move(party), band, said, exact);
@@ -204,7 +231,7 @@ PartyStanding judge_party(std::string party, const Band& band, const Answer& sai
     p.why = describe(said.hit, exact);
   }
   if (p.standing != Standing::wrong && said.hit && exact.answer.hit) {
-    if (auto why = params_wrong(band, said, exact)) {
+    if (auto why = judged == Judged::corners ? corners_wrong(said, exact) : params_wrong(band, said, exact)) {
       p.standing = Standing::wrong;
       p.why = *why;
     }

@@ -40,6 +40,7 @@ enum class Judged {
   all_pairs,   // every pair listed by one and not the other, each at its own margin
   first_pair,  // the pair named must be an exact one; a miss leaves only pairs within the band
   frames,      // every pair of every frame
+  corners,     // the hit, then the corners it gives (params: x, y, z of each) against the exact ones
 };
 
 /// One term of a certified error bound that the kind's cases measure (judging/bound_coverage.h):

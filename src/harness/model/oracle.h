@@ -50,6 +50,10 @@ struct ExactVerdict {
   /// lie to be right (instead of the band's relative width), e.g. a first contact time no
   /// later than the exact one and no earlier than the band allows.
   std::vector<std::pair<double, double>> param_ranges;
+  /// Corners of an intersection (Judged::corners): answer.params holds the exact corners (x, y, z
+  /// of each, rounded to nearest), and the hull of a party's corners must lie within this distance
+  /// of theirs, and theirs within it of the hull (Hausdorff distance).
+  double corner_tolerance = 0;
 
   /// The margin of a pair of a mesh query.
   double margin_of(const FacePair& pair) const;

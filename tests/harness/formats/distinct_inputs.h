@@ -102,7 +102,7 @@ void for_each_value(harness::Input& input, F&& f) {
           tri(in.tri), box(in.box);
         } else if constexpr (std::is_same_v<T, TriObbInput>) {
           tri(in.tri), obb(in.box);
-        } else if constexpr (std::is_same_v<T, TriTriInput>) {
+        } else if constexpr (std::is_same_v<T, TriTriInput> || std::is_same_v<T, TriTriIntersectionInput>) {
           tri(in.a), tri(in.b);
         } else if constexpr (std::is_same_v<T, MeshMeshInput> || std::is_same_v<T, MeshMeshFirstInput>) {
           meshes(in.meshes);
@@ -202,6 +202,7 @@ inline harness::Input distinct_input(harness::QueryKind kind, DistinctValues& va
     case QueryKind::tri_aabb: in = TriAabbInput{}; break;
     case QueryKind::tri_obb: in = TriObbInput{}; break;
     case QueryKind::tri_tri: in = TriTriInput{}; break;
+    case QueryKind::tri_tri_intersection: in = TriTriIntersectionInput{}; break;
     case QueryKind::mesh_mesh: in = MeshMeshInput{mesh_pair()}; break;
     case QueryKind::mesh_mesh_first: in = MeshMeshFirstInput{mesh_pair()}; break;
     case QueryKind::broadphase: {

@@ -174,3 +174,31 @@ TEST(ExactAudit, AKindCgalDoesNotAnswerIsRefused) {
 
 }  // namespace
 }  // namespace cc::cgal
+
+namespace cc::cgal {
+namespace {
+
+using namespace harness;
+
+// The corners of two triangles' intersection, as CGAL constructs them, against the exact
+// reference's: a tiny segment where a's edge in b's plane crosses b's edges, and a hexagon.
+TEST(ExactAuditCorners, TheSameCornersAgreeAndAMovedOneDoesNot) {
+  const exact::ExactRationalReference exact;
+  const TriTriIntersectionInput tiny{{{Vec3{1, 1.0078125, 1.125}, Vec3{1, 0.9921874999999999, -0.8749999999999999},
+                                       Vec3{0, 0, 0.9999999999999999}}},
+                                     {{Vec3{1, 0.9999999999999999, 0.12500000000000014},
+                                       Vec3{1, 1.9999999999999998, -0.7499999999999998}, Vec3{1, 0, 1}}}};
+  const TriTriIntersectionInput star{{{Vec3{0, 0, 0}, Vec3{6, 0, 0}, Vec3{3, 6, 0}}},
+                                     {{Vec3{0, 4, 0}, Vec3{3, -2, 0}, Vec3{6, 4, 0}}}};
+  for (const TriTriIntersectionInput& in : {tiny, star}) {
+    const Audit a = audit_case(Input{in}, exact);
+    EXPECT_EQ(a.outcome, AuditOutcome::agree) << a.why;
+    // Moved by more than the bracket's ulp (a bracket holds two doubles: a corner one ulp off may
+    // still match one of its neighbour's).
+    const AlteredReference moved([](ExactVerdict& v) { v.answer.params[2] += 0x1p-20; });
+    EXPECT_EQ(audit_case(Input{in}, moved).outcome, AuditOutcome::disagree);
+  }
+}
+
+}  // namespace
+}  // namespace cc::cgal
