@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "collide/exact_orientation.h"
+#include "collide/triangle_triangle.h"
 
 namespace cc {
 namespace {
@@ -278,7 +279,9 @@ TriangleIntersection corners_of(Candidates& c) {
 }  // namespace
 
 TriangleIntersection intersect_triangles(const Triangle& a, const Triangle& b) {
-  if (!finite(a) || !finite(b)) return {};
+  // The certified separating-axis test first: its misses are certain (it errs only toward a hit),
+  // and it decides most pairs that are apart in a fraction of the exact signs' time.
+  if (!finite(a) || !finite(b) || !test_triangle_triangle(a, b)) return {};
   double m = 0;
   for (const Triangle* t : {&a, &b}) {
     for (const Vec3& p : t->v) m = std::max(m, max_abs(p));
