@@ -1,5 +1,6 @@
 // FCL's mesh-mesh collision, for the mesh kinds' units: BVHModel<OBBd>, <OBBRSSd>, <AABBd>,
-// <KDOPd<18>>, <kIOSd> and <RSSd>, asked for all contacts or for the first.
+// <KDOPd<18>>, <kIOSd> and <RSSd>, asked for all contacts or for the first; and FCL's contact
+// points, for comparing collision determination.
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/math/bv/AABB.h>
 #include <fcl/math/bv/OBB.h>
@@ -74,6 +75,22 @@ Opinion collide_models(const harness::MeshPair& m, bool first_only) {
 }
 
 }  // namespace
+
+std::vector<FclContact> fcl_mesh_contacts(const harness::MeshPair& m) {
+  if (m.a.mesh->size() == 0 || m.b.mesh->size() == 0) return {};
+  const auto a = model_of<fcl::OBBRSSd>(m.a.mesh), b = model_of<fcl::OBBRSSd>(m.b.mesh);
+  fcl::CollisionRequestd request(std::numeric_limits<std::size_t>::max(), true);
+  fcl::CollisionResultd result;
+  fcl::collide(a.get(), to_fcl(m.pose_a), b.get(), to_fcl(m.pose_b), request, result);
+  std::vector<fcl::Contactd> contacts;
+  result.getContacts(contacts);
+  std::vector<FclContact> out;
+  for (const fcl::Contactd& c : contacts) {
+    out.push_back({static_cast<std::uint32_t>(c.b1), static_cast<std::uint32_t>(c.b2), {c.pos.x(), c.pos.y(), c.pos.z()},
+                   {c.normal.x(), c.normal.y(), c.normal.z()}, c.penetration_depth});
+  }
+  return out;
+}
 
 Opinion fcl_collide_models(Volume volume, const harness::MeshPair& m, bool first_only) {
   switch (volume) {

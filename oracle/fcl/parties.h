@@ -3,6 +3,7 @@
 // does not define fcl_parties<its input>() fails to link (fcl_oracle.cpp asks every kind's).
 #pragma once
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -34,6 +35,17 @@ Opinion fcl_collide_models(Volume volume, const harness::MeshPair& m, bool first
 /// sphere trees only in cases answer here too). Throws std::out_of_range for another name.
 std::vector<std::string> fcl_mesh_parties();
 Opinion fcl_collide_meshes(const std::string& party, const harness::MeshPair& m);
+
+/// FCL's contacts on two placed meshes (BVHModel<OBBRSSd>, every contact, enable_contact set, as
+/// a contact solver asks): for each, the pair (face of a, face of b), the point in the world, the
+/// normal and the penetration depth (fcl_meshes.cpp). FCL 0.7 gives up to two per colliding pair,
+/// the deepest vertices of one triangle below the other's plane.
+struct FclContact {
+  std::uint32_t face_a = 0, face_b = 0;
+  Vec3 position, normal;
+  double depth = 0;
+};
+std::vector<FclContact> fcl_mesh_contacts(const harness::MeshPair& m);
 
 /// FCL's GJKSolver_libccd::shapeTriangleIntersect of a box (half extents, axes, centre) and a
 /// triangle, under the libccd time limit (fcl_shapes.cpp, for the kinds of a triangle and a box).

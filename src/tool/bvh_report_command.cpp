@@ -2,7 +2,8 @@
 // every volume type, build strategy and update. Per hierarchy: build time, pairs, the counters
 // n_v, n_p, n_u per query, query time, how much larger the approximate update's volumes are
 // than the exact update's, and how its pair sets stand against the exact reference. FCL's
-// BVHModel parties answer the same poses.
+// BVHModel parties answer the same poses; then collision determination, the library's corners
+// of each colliding pair against FCL's contacts.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -10,12 +11,14 @@
 
 #include "harness/judging/classify.h"
 #include "harness/formats/input_json.h"
+#include "harness/judging/hull_distance.h"
 #include "harness/judging/median.h"
 #include "harness/model/input.h"
 #include "harness/model/mesh_collide.h"
 #include "harness/formats/mesh_files.h"
 #include "harness/generation/mesh_poses.h"
 #include "harness/generation/choices.h"
+#include "collide/mesh_contacts.h"
 #include "oracle/exact/exact_meshes.h"
 #include "oracle/fcl/parties.h"
 #include "tool/commands.h"
@@ -122,6 +125,61 @@ Tally run_fcl(const std::string& party, const std::vector<Pose>& poses) {
     if (v.parties.size() > 1) t.stand(v.parties[1].standing);  // none when the verdict judges no party
   }
   return t;
+}
+
+// Collision determination on the poses with a pair: the library's corners of each colliding pair
+// (mesh_contacts on the OBB tree's pairs) against FCL's contacts (OBBRSS models, enable_contact):
+// the pairs each gives, how many points, the time, and how far FCL's contact points lie from the
+// library's corners of the same pair (the hull of a n b, in the world), over the meshes' scale.
+struct ContactRow {
+  std::size_t poses = 0, library_pairs = 0, pairs_with_corners = 0, corners = 0, fcl_pairs = 0, fcl_contacts = 0;
+  std::size_t common_pairs = 0, on_the_intersection = 0, measured = 0;
+  std::vector<double> library_us, fcl_us, distance;  // distance: FCL contact to the library's hull, over the scale
+};
+
+ContactRow run_contacts(const std::vector<Pose>& poses) {
+  ContactRow row;
+  const Mesh& ma = *poses[0].m.a.mesh;
+  const Mesh& mb = *poses[0].m.b.mesh;
+  const Bvh<Obb> a = build_bvh<Obb>(ma, {}), b = build_bvh<Obb>(mb, {});
+  double scale = 0;
+  for (const Mesh* m : {&ma, &mb}) {
+    for (const Vec3& v : m->vertices) scale = std::max(scale, max_abs(v));
+  }
+  for (const Pose& p : poses) {
+    if (!p.exact.answer.hit) continue;
+    ++row.poses;
+    auto q = Clock::now();
+    const CollisionResult r = collide(a, p.m.pose_a, b, p.m.pose_b, {});
+    const std::vector<PairContact> mine = mesh_contacts(ma, p.m.pose_a, mb, p.m.pose_b, r.pairs);
+    row.library_us.push_back(1e3 * ms_since(q));
+    q = Clock::now();
+    const std::vector<fcl_oracle::FclContact> theirs = fcl_oracle::fcl_mesh_contacts(p.m);
+    row.fcl_us.push_back(1e3 * ms_since(q));
+    row.library_pairs += mine.size();
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> fcl_pairs;
+    for (const auto& c : theirs) fcl_pairs.emplace_back(c.face_a, c.face_b);
+    std::sort(fcl_pairs.begin(), fcl_pairs.end());
+    fcl_pairs.erase(std::unique(fcl_pairs.begin(), fcl_pairs.end()), fcl_pairs.end());
+    row.fcl_pairs += fcl_pairs.size();
+    row.fcl_contacts += theirs.size();
+    for (const PairContact& c : mine) {
+      row.pairs_with_corners += !c.corners.empty();
+      row.corners += static_cast<std::size_t>(c.corners.count);
+      if (std::binary_search(fcl_pairs.begin(), fcl_pairs.end(), std::pair{c.face_a, c.face_b})) ++row.common_pairs;
+      if (c.corners.empty()) continue;
+      std::vector<Vec3> world;
+      for (int k = 0; k < c.corners.count; ++k) world.push_back(apply(p.m.pose_a, c.corners.points[static_cast<std::size_t>(k)]));
+      for (const auto& f : theirs) {
+        if (f.face_a != c.face_a || f.face_b != c.face_b) continue;
+        const double d = harness::distance_to_hull(f.position, world) / scale;
+        row.distance.push_back(d);
+        ++row.measured;
+        row.on_the_intersection += d <= 0x1p-30;
+      }
+    }
+  }
+  return row;
 }
 
 // Lazy top-down trees of one volume type, both made anew for each pose of one kind (near
@@ -273,16 +331,47 @@ int run(const ReportArgs& args) {
                            {"median_query_us", r.median_us}});
     }
   }
+  const ContactRow contacts = run_contacts(poses);
+  Json contact_json;
+  if (contacts.poses > 0) {
+    std::vector<double> sorted = contacts.distance;
+    std::sort(sorted.begin(), sorted.end());
+    const auto at = [&sorted](double f) { return sorted.empty() ? 0.0 : sorted[static_cast<std::size_t>(f * static_cast<double>(sorted.size() - 1))]; };
+    std::printf("\ncollision determination over %zu poses with a pair:\n", contacts.poses);
+    std::printf("  library (obb top-down, mesh_contacts): %zu pairs, %zu with corners, %.2f corners per pair, median %.1f us "
+                "(pairs and corners)\n",
+                contacts.library_pairs, contacts.pairs_with_corners, contacts.pairs_with_corners ? double(contacts.corners) / double(contacts.pairs_with_corners) : 0.0,
+                median(contacts.library_us));
+    std::printf("  FCL (OBBRSS, enable_contact): %zu pairs, %zu of them the library's, %.2f contacts per pair, median %.1f us\n",
+                contacts.fcl_pairs, contacts.common_pairs, contacts.fcl_pairs ? double(contacts.fcl_contacts) / double(contacts.fcl_pairs) : 0.0, median(contacts.fcl_us));
+    std::printf("  FCL's contact points from the library's corners of the same pair (hull of a n b), over the scale: "
+                "median %.3g, 90%% %.3g, max %.3g; on it (within 2^-30): %zu of %zu\n",
+                at(0.5), at(0.9), at(1.0), contacts.on_the_intersection, contacts.measured);
+    contact_json = {{"poses", contacts.poses},
+                    {"library_pairs", contacts.library_pairs},
+                    {"pairs_with_corners", contacts.pairs_with_corners},
+                    {"corners", contacts.corners},
+                    {"library_median_us", median(contacts.library_us)},
+                    {"fcl_pairs", contacts.fcl_pairs},
+                    {"common_pairs", contacts.common_pairs},
+                    {"fcl_contacts", contacts.fcl_contacts},
+                    {"fcl_median_us", median(contacts.fcl_us)},
+                    {"fcl_contact_distance_median", at(0.5)},
+                    {"fcl_contact_distance_max", at(1.0)},
+                    {"fcl_contacts_on_the_intersection", contacts.on_the_intersection}};
+  }
   std::printf("\nn_v, n_p, n_u: volume tests, triangle tests and volume updates per query (all pairs, descent into a's\n"
               "hierarchy). pts/upd: hull points per update that the exact update moves, or that hill climbing\n"
               "evaluates on its walks (plus the exact update's when a walk is not certified). apx/exact: median ratio of the approximate update's moved volume to the exact update's.\n"
               "right/band/wrong: poses whose pair set equals the exact one / differs only within the band / beyond it.\n"
               "lazy top-down: both trees made anew per query (top-down, longest side, midpoint), all pairs; the time\n"
-              "includes making the nodes the query needs.\n");
+              "includes making the nodes the query needs.\n"
+              "collision determination: FCL's contacts are the deepest vertices of one triangle below the other's\n"
+              "plane, not points where the triangles meet; the distance says how far from a n b they lie.\n");
   if (!args.json.empty()) {
     std::ofstream out(args.json);
     out << Json{{"seed", args.seed}, {"random", args.random}, {"near", args.near}, {"exact_pairs", exact_pairs},
-                {"rows", rows}, {"lazy", lazy_rows}}.dump(2)
+                {"rows", rows}, {"lazy", lazy_rows}, {"contacts", contact_json}}.dump(2)
         << "\n";
     if (!out) {
       std::fprintf(stderr, "crosscheck bvh-report: cannot write %s\n", args.json.c_str());
