@@ -8,6 +8,8 @@
 //   obb_obb        fcl::OBBd::overlap
 //   tri_obb        fcl::detail::GJKSolver_libccd<double>::shapeTriangleIntersect on a Boxd
 //   tri_tri        fcl::detail::Intersect<double>::intersect_Triangle
+//   tri_tri_intersection  the same with its contact output (what FCL's mesh traversal calls
+//                  when contacts are asked for): the library's corners against FCL's contacts
 #include <benchmark/benchmark.h>
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/sphere.h>
@@ -26,6 +28,7 @@
 #include "bench/suites.h"
 #include "collide/kdop.h"
 #include "collide/triangle_box.h"
+#include "collide/triangle_intersection.h"
 #include "collide/triangle_triangle.h"
 #include "oracle/fcl/convert.h"
 
@@ -170,6 +173,17 @@ void register_primitive_benchmarks() {
                     [](const FclTriangle& a, const FclTriangle& b) {
                       return fcl::detail::Intersect<double>::intersect_Triangle(a.v[0], a.v[1], a.v[2], b.v[0], b.v[1], b.v[2]);
                     });
+      register_pair(
+          "tri_tri_intersection" + m, p, [](const Triangle& a, const Triangle& b) { return !intersect_triangles(a, b).empty(); },
+          std::shared_ptr<const Pairs<FclTriangle, FclTriangle>>(converted(*p, fcl_triangle, fcl_triangle)),
+          [](const FclTriangle& a, const FclTriangle& b) {
+            fcl::Vector3d contacts[2];
+            unsigned int count = 0;
+            double depth = 0;
+            fcl::Vector3d normal;
+            return fcl::detail::Intersect<double>::intersect_Triangle(a.v[0], a.v[1], a.v[2], b.v[0], b.v[1], b.v[2],
+                                                                      contacts, &count, &depth, &normal);
+          });
     }
     register_kdop<16>(mix);
     register_kdop<18>(mix);

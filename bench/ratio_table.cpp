@@ -47,7 +47,7 @@ void ratio_target(Row& row, double at_least) {
 void primitive_rows(const Results& r, std::vector<Row>& rows) {
   const std::pair<const char*, double> groups[] = {{"aabb_aabb/", 1},  {"sphere_sphere/", 1}, {"kdop_kdop/", 1},
                                                    {"kdop_fit/", 2},   {"obb_obb/", 1.5},     {"tri_obb/", 2},
-                                                   {"tri_tri/", 1.5}};
+                                                   {"tri_tri/", 1.5},  {"tri_tri_intersection/", 0}};  // 0: no target
   for (const auto& [group, at_least] : groups) {
     for (const auto& [name, lib] : r) {
       if (!starts_with(name, group) || name.size() < 4 || name.compare(name.size() - 4, 4, "/lib") != 0) continue;
@@ -60,7 +60,7 @@ void primitive_rows(const Results& r, std::vector<Row>& rows) {
         const double hl = counter(lib, "hit_fraction"), hf = counter(*fcl, "hit_fraction");
         if (hl >= 0 && group != std::string("kdop_fit/")) row.note = "hits: library " + percent(hl) + ", FCL " + percent(hf);
       }
-      ratio_target(row, at_least);
+      if (at_least > 0) ratio_target(row, at_least);
       rows.push_back(row);
     }
   }
