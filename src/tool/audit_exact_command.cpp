@@ -114,16 +114,17 @@ int run(const AuditArgs& args) {
     tallies.push_back(audit_kind(kind, args.seconds / static_cast<double>(kinds.size()), args, exact, store_failed));
     std::fflush(stdout);
   }
-  std::printf("\n%-14s %10s %10s %16s %10s %10s %13s %10s\n", "query", "cases", "compared", "out_of_contract",
-              "undecided", "touching", "exact_defect", "cases/s");
+  std::printf("\n%-*s %10s %10s %16s %10s %10s %13s %10s\n", harness::longest_kind_name(), "query", "cases", "compared",
+              "out_of_contract", "undecided", "touching", "exact_defect", "cases/s");
   std::uint64_t disagreements = 0;
   for (std::size_t i = 0; i < kinds.size(); ++i) {
     const KindAudit& t = tallies[i];
     disagreements += t.disagreements;
-    std::printf("%-14s %10llu %10llu %16llu %10llu %10llu %13llu %10.0f\n", std::string(name(kinds[i])).c_str(),
-                static_cast<unsigned long long>(t.cases), static_cast<unsigned long long>(t.compared),
-                static_cast<unsigned long long>(t.out_of_contract), static_cast<unsigned long long>(t.undecided),
-                static_cast<unsigned long long>(t.touching), static_cast<unsigned long long>(t.disagreements),
+    std::printf("%-*s %10llu %10llu %16llu %10llu %10llu %13llu %10.0f\n", harness::longest_kind_name(),
+                std::string(name(kinds[i])).c_str(), static_cast<unsigned long long>(t.cases),
+                static_cast<unsigned long long>(t.compared), static_cast<unsigned long long>(t.out_of_contract),
+                static_cast<unsigned long long>(t.undecided), static_cast<unsigned long long>(t.touching),
+                static_cast<unsigned long long>(t.disagreements),
                 t.seconds > 0 ? static_cast<double>(t.cases) / t.seconds : 0.0);
   }
   if (store_failed) std::fprintf(stderr, "crosscheck audit-exact: some disagreements could not be stored\n");

@@ -71,11 +71,11 @@ struct CampaignArgs {
 };
 
 void print_table(const CampaignResult& r) {
-  std::printf("\n%-14s %10s %10s %9s %14s %13s %9s %16s %10s %10s\n", "query", "cases", "agree", "impl_bug",
-              "oracle_defect", "oracle_crash", "boundary", "out_of_contract", "undecided", "cases/s");
+  std::printf("\n%-*s %10s %10s %9s %14s %13s %9s %16s %10s %10s\n", harness::longest_kind_name(), "query", "cases", "agree",
+              "impl_bug", "oracle_defect", "oracle_crash", "boundary", "out_of_contract", "undecided", "cases/s");
   for (const auto& [kind, t] : r.tallies) {
-    std::printf("%-14s %10llu %10llu %9llu %14llu %13llu %9llu %16llu %10llu %10.0f\n",
-                std::string(name(kind)).c_str(), static_cast<unsigned long long>(t.cases),
+    std::printf("%-*s %10llu %10llu %9llu %14llu %13llu %9llu %16llu %10llu %10.0f\n",
+                harness::longest_kind_name(), std::string(name(kind)).c_str(), static_cast<unsigned long long>(t.cases),
                 static_cast<unsigned long long>(t.count(CaseClass::agree)),
                 static_cast<unsigned long long>(t.count(CaseClass::impl_bug)),
                 static_cast<unsigned long long>(t.count(CaseClass::oracle_defect)),

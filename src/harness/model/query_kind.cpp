@@ -1,5 +1,7 @@
 #include "harness/model/query_kind.h"
 
+#include <algorithm>
+
 namespace cc::harness {
 
 namespace {
@@ -21,6 +23,12 @@ std::optional<QueryKind> query_kind_named(std::string_view text) {
     if (name(kind) == text) return kind;
   }
   return std::nullopt;
+}
+
+int longest_kind_name() {
+  std::size_t longest = 0;
+  for (QueryKind kind : kAllQueryKinds) longest = std::max(longest, name(kind).size());
+  return static_cast<int>(longest);
 }
 
 }  // namespace cc::harness

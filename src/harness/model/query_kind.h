@@ -25,4 +25,7 @@ std::string_view name(QueryKind kind);
 /// The query with that name, if any.
 std::optional<QueryKind> query_kind_named(std::string_view name);
 
+/// The length of the longest kind's name: the width of a table's column of kinds.
+int longest_kind_name();
+
 }  // namespace cc::harness
