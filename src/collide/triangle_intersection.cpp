@@ -11,10 +11,14 @@ namespace cc {
 namespace {
 
 // A triangle as the point set it is: its vertices in order (3), a segment's ends in
-// lexicographic order (2), or a point (1).
+// lexicographic order (2), or a point (1). A triangle keeps a projection one-to-one on its plane
+// (`drop`, the axis dropped: where its normal's component is exactly nonzero, the largest one in
+// floating point when that is) and the sign of its turn there.
 struct Shape {
   std::array<Vec3, 3> v{};
   int n = 0;
+  int drop = 2;
+  int turn = 0;
 };
 
 // The signs below are of finite inputs, which exact_orientation.h always decides.
@@ -23,12 +27,23 @@ int orient2(const Vec3& a, const Vec3& b, const Vec3& c, int drop) { return *pla
 
 bool lex_less(const Vec3& p, const Vec3& q) { return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z); }
 
+// The axis of the largest component of (b - a) x (c - a) in floating point: the exact sign of
+// that component is nonzero for nearly every triangle, so one sign decides it is not collinear.
+int largest_axis(const Vec3& a, const Vec3& b, const Vec3& c) {
+  const Vec3 m = abs(cross(b - a, c - a));
+  return m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
+}
+
 bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
-  return orient2(a, b, c, 0) == 0 && orient2(a, b, c, 1) == 0 && orient2(a, b, c, 2) == 0;
+  const int k = largest_axis(a, b, c);
+  return orient2(a, b, c, k) == 0 && orient2(a, b, c, (k + 1) % 3) == 0 && orient2(a, b, c, (k + 2) % 3) == 0;
 }
 
 Shape shape_of(const Triangle& t) {
-  if (!collinear(t.v[0], t.v[1], t.v[2])) return {t.v, 3};
+  const int k = largest_axis(t.v[0], t.v[1], t.v[2]);
+  for (int drop : {k, (k + 1) % 3, (k + 2) % 3}) {
+    if (const int turn = orient2(t.v[0], t.v[1], t.v[2], drop); turn != 0) return {t.v, 3, drop, turn};
+  }
   // Along a line the lexicographic order is the order of the points: its extremes are the ends.
   const auto [lo, hi] = std::minmax_element(t.v.begin(), t.v.end(), lex_less);
   if (*lo == *hi) return {{*lo}, 1};
@@ -39,25 +54,12 @@ Shape shape_of(const Triangle& t) {
 int first_kept(int drop) { return (drop + 1) % 3; }
 int second_kept(int drop) { return (drop + 2) % 3; }
 
-// A projection one-to-one on the plane of the (non-degenerate) triangle t: the axis of the
-// largest component of its normal, or any axis whose component is exactly nonzero.
-int drop_for(const Shape& t) {
-  const Vec3 n = cross(t.v[1] - t.v[0], t.v[2] - t.v[0]);
-  const Vec3 m = abs(n);
-  const int largest = m.x >= m.y && m.x >= m.z ? 0 : (m.y >= m.z ? 1 : 2);
-  if (orient2(t.v[0], t.v[1], t.v[2], largest) != 0) return largest;
-  for (int k = 0; k < 3; ++k) {
-    if (orient2(t.v[0], t.v[1], t.v[2], k) != 0) return k;
-  }
-  return largest;  // not reached: t is not collinear
-}
-
 // Whether p lies in the closed shape s, for p in the plane of s (a triangle: `drop` is one-to-one
 // on that plane) or anywhere (a point, a segment: tested in 3-D).
 bool contains(const Shape& s, const Vec3& p, int drop) {
   if (s.n == 1) return p == s.v[0];
   if (s.n == 2) return collinear(s.v[0], s.v[1], p) && !lex_less(p, s.v[0]) && !lex_less(s.v[1], p);
-  const int turn = orient2(s.v[0], s.v[1], s.v[2], drop);
+  const int turn = drop == s.drop ? s.turn : orient2(s.v[0], s.v[1], s.v[2], drop);
   for (int i = 0; i < 3; ++i) {
     if (orient2(s.v[i], s.v[(i + 1) % 3], p, drop) * turn < 0) return false;
   }
@@ -177,7 +179,7 @@ void meet_in_plane(const Shape& t, const Shape& o, int drop, const Scale& scale,
 // The vertices of o on the plane of the triangle t and in t, and the crossings of o's edges with
 // that plane inside t (o not in the plane): a vertex of t as given when the edge passes through it.
 void meet_across(const Shape& t, const Shape& o, const std::array<int, 3>& side, const Scale& scale, Candidates& c) {
-  const int drop = drop_for(t);
+  const int drop = t.drop;
   for (int i = 0; i < o.n; ++i) {
     if (side[i] == 0 && contains(t, o.v[i], drop)) c.add(o.v[i]);
   }
@@ -208,7 +210,7 @@ void meet_triangle(const Shape& t, const Shape& o, const Scale& scale, Candidate
     // Two triangles of one plane: the projection of the one whose vertices come first, so that
     // exchanging them changes nothing.
     const bool o_first = o.n == 3 && std::lexicographical_compare(o.v.begin(), o.v.end(), t.v.begin(), t.v.end(), lex_less);
-    meet_in_plane(t, o, drop_for(o_first ? o : t), scale, c);
+    meet_in_plane(t, o, (o_first ? o : t).drop, scale, c);
     return;
   }
   meet_across(t, o, to, scale, c);
