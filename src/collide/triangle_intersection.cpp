@@ -90,9 +90,11 @@ bool cross_properly(const Vec3& p, const Vec3& q, const Vec3& r, const Vec3& s, 
   return orient2(p, q, r, drop) * orient2(p, q, s, drop) < 0 && orient2(r, s, p, drop) * orient2(r, s, q, drop) < 0;
 }
 
-// The constructed corners are computed on the six vertices scaled by a power of two that brings
-// the largest coordinate magnitude into [1, 2) (no product underflows or overflows there), then
-// scaled back. The exact signs are of the vertices as given.
+// The constructed corners of small triangles are computed on the six vertices scaled up by the
+// power of two that brings the largest coordinate magnitude into [1, 2) (exact: no product of
+// coordinates underflows there), then scaled back. Larger ones are not scaled down, which would
+// flush subnormal coordinates (and the domain's 2^300 keeps products of three finite). The exact
+// signs are of the vertices as given.
 struct Scale {
   int e = 0;
   Vec3 in(const Vec3& p) const { return {fp::scale2(p.x, -e), fp::scale2(p.y, -e), fp::scale2(p.z, -e)}; }
@@ -288,7 +290,7 @@ TriangleIntersection intersect_triangles(const Triangle& a, const Triangle& b) {
   for (const Triangle* t : {&a, &b}) {
     for (const Vec3& p : t->v) m = std::max(m, max_abs(p));
   }
-  const Scale scale{m > 0 ? fp::exponent_of(m) : 0};
+  const Scale scale{m > 0 ? std::min(fp::exponent_of(m), 0) : 0};
   const Shape sa = shape_of(a), sb = shape_of(b);
   Candidates c;
   if (sa.n == 3) {

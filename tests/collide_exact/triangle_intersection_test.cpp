@@ -135,8 +135,9 @@ std::pair<Triangle, Triangle> draw(test::Random& random, int kind, Met& met) {
     case 9: {  // a tiny triangle (2^-20 .. 2^-1070 of b's size) at a vertex of b moved to the origin,
                // in the common plane y = 0 or not
       const Vec3 at = b.v[random.below(3)];
-      for (Vec3& p : b.v) p = p - at;
-      const int e = -random.in(20, 1070);
+      const double grow = std::ldexp(1.0, random.in(0, 4));  // b's largest magnitude up to 32
+      for (Vec3& p : b.v) p = grow * (p - at);
+      const int e = -random.in(20, 1076);  // down to a few subnormal steps: segments and points
       const bool in_plane = random.below(2) == 0;
       for (Vec3& p : a.v) {
         const Vec3 d = random.in_cube(1);
@@ -173,6 +174,23 @@ TEST(IntersectTrianglesExactly, ATinyTriangleAgainstALargeOneInItsPlane) {
     check(small, b, met);
   }
   EXPECT_EQ(met.met, 5);
+}
+
+// Found by the campaign: a segment of subnormal length in the plane of a triangle whose largest
+// coordinate is 2. Scaling the six vertices down to a largest magnitude in [1, 2) flushed the
+// segment to a point, and the crossing became the end of the triangle's edge, 1 away; the
+// vertices are now only ever scaled up.
+TEST(IntersectTrianglesExactly, ASubnormalSegmentBesideALargerTriangleIsNotFlushed) {
+  const Triangle a = {{Vec3{0, 0, 0}, Vec3{0, 0, 0}, Vec3{0, -5e-324, 0}}};
+  const Triangle b = {{Vec3{0, 0, 1}, Vec3{0, -5e-324, -1}, Vec3{0, 1, -2}}};
+  Met met;
+  for (double s : {1.0, 0x1p10, 0x1p290}) {  // b's scale, a's kept
+    Triangle big = b;
+    for (Vec3& p : big.v) p = {p.x, p.y == -5e-324 ? p.y : s * p.y, s * p.z};
+    check(a, big, met);
+    check(big, a, met);
+  }
+  EXPECT_EQ(met.met, 6);
 }
 
 TEST(IntersectTrianglesExactly, AgreesWithTheExactIntersection) {
