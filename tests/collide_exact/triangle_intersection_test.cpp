@@ -137,7 +137,8 @@ std::pair<Triangle, Triangle> draw(test::Random& random, int kind, Met& met) {
       const Vec3 at = b.v[random.below(3)];
       const double grow = std::ldexp(1.0, random.in(0, 4));  // b's largest magnitude up to 32
       for (Vec3& p : b.v) p = grow * (p - at);
-      const int e = -random.in(20, 1076);  // down to a few subnormal steps: segments and points
+      // Half of them within a few subnormal steps (segments and points of subnormal length).
+      const int e = -(random.below(2) == 0 ? random.in(1060, 1076) : random.in(20, 1076));
       const bool in_plane = random.below(2) == 0;
       for (Vec3& p : a.v) {
         const Vec3 d = random.in_cube(1);
