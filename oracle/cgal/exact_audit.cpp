@@ -92,11 +92,19 @@ std::string corner_differences(const harness::ExactVerdict& exact, const CgalAns
   if (cgal.corners.empty() || params.empty()) return {};
   const auto text = [&] {
     std::string t = "exact reference's corners";
-    for (double v : params) t += " " + harness::format_double(v);
+    for (double v : params) {
+      t += " ";
+      t += harness::format_double(v);
+    }
     t += " differ from CGAL's";
     for (const auto& c : cgal.corners) {
       t += " (";
-      for (int k = 0; k < 3; ++k) t += (k > 0 ? ", " : "") + harness::format_double(c[k].down) + ".." + harness::format_double(c[k].up);
+      for (int k = 0; k < 3; ++k) {
+        if (k > 0) t += ", ";
+        t += harness::format_double(c[k].down);
+        t += "..";
+        t += harness::format_double(c[k].up);
+      }
       t += ")";
     }
     return t;

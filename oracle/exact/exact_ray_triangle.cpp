@@ -6,14 +6,6 @@
 namespace cc::exact {
 namespace {
 
-bool on_segment(const QVec3& p, const QVec3& a, const QVec3& b) {
-  const QVec3 e = b - a, w = p - a;
-  if (is_zero(e)) return is_zero(w);
-  if (!is_zero(cross(w, e))) return false;
-  const Rational s = dot(w, e);
-  return s >= 0 && s <= dot(e, e);
-}
-
 bool in_triangle(const QVec3& p, const std::array<QVec3, 3>& v) {
   const QVec3 n = cross(v[1] - v[0], v[2] - v[0]);
   if (is_zero(n)) return on_segment(p, v[0], v[1]) || on_segment(p, v[1], v[2]) || on_segment(p, v[2], v[0]);
@@ -59,6 +51,14 @@ Rational distance2_to_segment(const QVec3& p, const QVec3& a, const QVec3& b) {
 }
 
 }  // namespace
+
+bool on_segment(const QVec3& p, const QVec3& a, const QVec3& b) {
+  const QVec3 e = b - a, w = p - a;
+  if (is_zero(e)) return is_zero(w);
+  if (!is_zero(cross(w, e))) return false;
+  const Rational s = dot(w, e);
+  return s >= 0 && s <= dot(e, e);
+}
 
 ExactRay exact_ray(const Ray& ray) {
   ExactRay r{rational(ray.origin), rational(ray.dir), std::nullopt, std::nullopt};

@@ -30,6 +30,9 @@ std::array<QVec3, 3> exact_triangle(const Triangle& t);
 /// direction the ray is its origin alone (then tmin must be finite).
 std::optional<Rational> exact_first_hit(const ExactRay& r, const std::array<QVec3, 3>& v);
 
+/// Whether p lies on the closed segment [a, b] (a point when a = b).
+bool on_segment(const QVec3& p, const QVec3& a, const QVec3& b);
+
 /// The squared Euclidean distance from p to the closed triangle (degenerate ones included).
 Rational distance2_to_triangle(const QVec3& p, const std::array<QVec3, 3>& v);
 

@@ -23,13 +23,6 @@ void add_distinct(Points& points, const QVec3& p) {
 
 QVec3 negated(const QVec3& v) { return Rational(-1) * v; }
 
-bool on_segment(const QVec3& p, const QVec3& a, const QVec3& b) {
-  const QVec3 e = b - a, w = p - a;
-  if (!is_zero(cross(w, e))) return false;
-  const Rational s = dot(w, e);
-  return s >= 0 && s <= dot(e, e);
-}
-
 // The point set of a triangle: its three vertices, or the ends of the segment (the two farthest
 // apart) its collinear vertices span, or its one point.
 Points point_set(const Triangle& t) {

@@ -78,10 +78,6 @@ Topology layout(const LinkedTree& tree) {
 
 namespace {
 
-bool lexicographic_less(const Vec3& a, const Vec3& b) {
-  return a.x != b.x ? a.x < b.x : (a.y != b.y ? a.y < b.y : a.z < b.z);
-}
-
 // Appends to `out` points that include every vertex of the convex hull of `points`, each once:
 // the vertices of fast_convex_hull, which leaves out only points certainly inside (`points` is
 // sorted and its repeats dropped; `hull` is scratch).

@@ -32,10 +32,6 @@ bool collinear(const Vec3& a, const Vec3& b, const Vec3& c) {
          planar_orientation(a, b, c, 2) == 0;
 }
 
-bool lexicographic_less(const Vec3& a, const Vec3& b) {
-  return a.x != b.x ? a.x < b.x : (a.y != b.y ? a.y < b.y : a.z < b.z);
-}
-
 // The edges of the hull as pairs of indices into `p`, each edge once or twice.
 using Edges = std::vector<std::pair<Index, Index>>;
 

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <tuple>
 
 #include "collide/exact_orientation.h"
 #include "collide/triangle_triangle.h"
@@ -25,8 +24,6 @@ struct Shape {
 int orient(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& d) { return *orientation_sign(a, b, c, d); }
 int orient2(const Vec3& a, const Vec3& b, const Vec3& c, int drop) { return *planar_orientation_sign(a, b, c, drop); }
 
-bool lex_less(const Vec3& p, const Vec3& q) { return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z); }
-
 // The axis of the largest component of (b - a) x (c - a) in floating point: the exact sign of
 // that component is nonzero for nearly every triangle, so one sign decides it is not collinear.
 int largest_axis(const Vec3& a, const Vec3& b, const Vec3& c) {
@@ -45,7 +42,7 @@ Shape shape_of(const Triangle& t) {
     if (const int turn = orient2(t.v[0], t.v[1], t.v[2], drop); turn != 0) return {t.v, 3, drop, turn};
   }
   // Along a line the lexicographic order is the order of the points: its extremes are the ends.
-  const auto [lo, hi] = std::minmax_element(t.v.begin(), t.v.end(), lex_less);
+  const auto [lo, hi] = std::minmax_element(t.v.begin(), t.v.end(), lexicographic_less);
   if (*lo == *hi) return {{*lo}, 1};
   return {{*lo, *hi}, 2};
 }
@@ -58,7 +55,7 @@ int second_kept(int drop) { return (drop + 2) % 3; }
 // on that plane) or anywhere (a point, a segment: tested in 3-D).
 bool contains(const Shape& s, const Vec3& p, int drop) {
   if (s.n == 1) return p == s.v[0];
-  if (s.n == 2) return collinear(s.v[0], s.v[1], p) && !lex_less(p, s.v[0]) && !lex_less(s.v[1], p);
+  if (s.n == 2) return collinear(s.v[0], s.v[1], p) && !lexicographic_less(p, s.v[0]) && !lexicographic_less(s.v[1], p);
   const int turn = drop == s.drop ? s.turn : orient2(s.v[0], s.v[1], s.v[2], drop);
   for (int i = 0; i < 3; ++i) {
     if (orient2(s.v[i], s.v[(i + 1) % 3], p, drop) * turn < 0) return false;
@@ -109,7 +106,7 @@ Vec3 along(const Vec3& a, const Vec3& b, double s) {
 
 // The segment's ends in lexicographic order, so that the rounded point does not depend on the
 // direction the edge is given in.
-std::pair<Vec3, Vec3> ordered(const Vec3& p, const Vec3& q) { return lex_less(q, p) ? std::pair{q, p} : std::pair{p, q}; }
+std::pair<Vec3, Vec3> ordered(const Vec3& p, const Vec3& q) { return lexicographic_less(q, p) ? std::pair{q, p} : std::pair{p, q}; }
 
 // Where the segment pq crosses the plane of the triangle t (pq strictly crosses it). The normal
 // is taken from t's edges each scaled to unit magnitude (its direction is theirs; a tiny
@@ -133,8 +130,7 @@ double cross2(const Vec3& d, const Vec3& w, int drop) {
 // the other's direction scaled to unit magnitude (a tiny edge's products do not underflow).
 Vec3 edge_crossing(const Vec3& p0, const Vec3& q0, const Vec3& r0, const Vec3& s0, int drop, const Scale& scale) {
   auto e = ordered(scale.in(p0), scale.in(q0)), f = ordered(scale.in(r0), scale.in(s0));
-  if (std::tie(f.first.x, f.first.y, f.first.z, f.second.x, f.second.y, f.second.z) <
-      std::tie(e.first.x, e.first.y, e.first.z, e.second.x, e.second.y, e.second.z)) {
+  if (lexicographic_less(f.first, e.first) || (f.first == e.first && lexicographic_less(f.second, e.second))) {
     std::swap(e, f);
   }
   const Vec3 d = unit_scaled(f.second - f.first);
@@ -211,7 +207,7 @@ void meet_triangle(const Shape& t, const Shape& o, const Scale& scale, Candidate
   if (std::all_of(to.begin(), to.begin() + o.n, [](int x) { return x == 0; })) {
     // Two triangles of one plane: the projection of the one whose vertices come first, so that
     // exchanging them changes nothing.
-    const bool o_first = o.n == 3 && std::lexicographical_compare(o.v.begin(), o.v.end(), t.v.begin(), t.v.end(), lex_less);
+    const bool o_first = o.n == 3 && std::lexicographical_compare(o.v.begin(), o.v.end(), t.v.begin(), t.v.end(), lexicographic_less);
     meet_in_plane(t, o, (o_first ? o : t).drop, scale, c);
     return;
   }
@@ -246,7 +242,7 @@ void meet_degenerate(const Shape& a, const Shape& b, const Scale& scale, Candida
 TriangleIntersection corners_of(Candidates& c) {
   // Insertion sort: a dozen points at most.
   for (int i = 1; i < c.count; ++i) {
-    for (int j = i; j > 0 && lex_less(c.points[j], c.points[j - 1]); --j) std::swap(c.points[j], c.points[j - 1]);
+    for (int j = i; j > 0 && lexicographic_less(c.points[j], c.points[j - 1]); --j) std::swap(c.points[j], c.points[j - 1]);
   }
   c.count = static_cast<int>(std::unique(c.points.begin(), c.points.begin() + c.count) - c.points.begin());
   TriangleIntersection r;

@@ -51,6 +51,11 @@ inline Vec3 unit_scaled(const Vec3& a) {
   return {fp::scale2(a.x, -e), fp::scale2(a.y, -e), fp::scale2(a.z, -e)};
 }
 
+/// a before b in lexicographic order (x, then y, then z): along a line, the order of the points.
+inline bool lexicographic_less(const Vec3& a, const Vec3& b) {
+  return a.x != b.x ? a.x < b.x : (a.y != b.y ? a.y < b.y : a.z < b.z);
+}
+
 /// True when no component is NaN or infinite.
 inline bool finite(const Vec3& a) { return fp::finite(a.x) && fp::finite(a.y) && fp::finite(a.z); }
 

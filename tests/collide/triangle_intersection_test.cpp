@@ -117,7 +117,9 @@ TEST(IntersectTriangles, SymmetricAndConsistentWithTheTest) {
     }
     const TriangleIntersection ab = intersect_triangles(a, b), ba = intersect_triangles(b, a);
     ASSERT_EQ(corners(ab), corners(ba)) << i;
-    if (on_grid) ASSERT_EQ(!ab.empty(), test_triangle_triangle(a, b)) << i;
+    if (on_grid) {
+      ASSERT_EQ(!ab.empty(), test_triangle_triangle(a, b)) << i;
+    }
     met += !ab.empty();
     polygons += ab.count >= 3;
   }
