@@ -19,7 +19,7 @@
 #include "collide/aabb.h"
 #include "collide/disc_walls.h"
 #include "collide/obb.h"
-#include "collide/ray_aabb.h"
+#include "collide/ray.h"
 #include "collide/sphere.h"
 #include "collide/triangle.h"
 #include "harness/model/mesh_query.h"

@@ -6,7 +6,7 @@
 #include <array>
 #include <optional>
 
-#include "collide/ray_aabb.h"
+#include "collide/ray.h"
 #include "collide/triangle.h"
 #include "oracle/exact/rational.h"
 

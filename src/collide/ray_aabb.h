@@ -6,18 +6,9 @@
 
 #include "collide/aabb.h"
 #include "collide/error_bounds.h"
+#include "collide/ray.h"
 
 namespace cc {
-
-/// The points origin + t * dir for t in [tmin, tmax]. tmax may be +inf (a ray) and tmin may be
-/// -inf; a finite tmax makes a segment. dir need not be normalised; dir = 0 is a point.
-struct Ray {
-  Vec3 origin;
-  Vec3 dir;
-  double tmin = 0;
-  double tmax = INFINITY;
-  friend constexpr bool operator==(const Ray&, const Ray&) = default;
-};
 
 /// Where a ray meets a box: the parameter interval [t_enter, t_exit] of the ray inside it.
 struct RayHit {

@@ -1,7 +1,7 @@
 // Rays and segments against triangles, by conservative slabs.
 #pragma once
 
-#include "collide/ray_aabb.h"
+#include "collide/ray.h"
 #include "collide/triangle.h"
 
 namespace cc {

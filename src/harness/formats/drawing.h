@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "collide/ray_aabb.h"
+#include "collide/ray.h"
 #include "harness/model/input.h"
 
 namespace cc::harness {

@@ -12,7 +12,7 @@
 #include "collide/disc_walls.h"
 #include "collide/moving_box.h"
 #include "collide/obb.h"
-#include "collide/ray_aabb.h"
+#include "collide/ray.h"
 #include "collide/rigid_transform.h"
 #include "collide/sphere.h"
 #include "harness/formats/fields.h"
