@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <ctime>
 #include <fstream>
+#include <functional>
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -126,7 +127,9 @@ std::vector<std::string> targets_of_label(const Worker& w, const std::string& la
   return {targets.begin(), targets.end()};
 }
 
-void set_up(Worker& w, const MutateArgs& args) {
+// Copies the tree and configures its build; then, once `may_build` returns, builds it with
+// `build_jobs` jobs.
+void set_up(Worker& w, const MutateArgs& args, int build_jobs, const std::function<void()>& may_build) {
   fs::create_directories(w.logs);
   const SyncCounts c = sync_tree(args.source, w.tree);
   std::printf("worker %d: %s: %d files copied, %d updated, %d removed\n", w.index, w.tree.string().c_str(), c.created,
@@ -143,7 +146,8 @@ void set_up(Worker& w, const MutateArgs& args) {
     if (const auto ccache = program_on_path("ccache")) configure.push_back("-DCMAKE_CXX_COMPILER_LAUNCHER=" + ccache->string());
     must(configure, {}, w.logs / "configure.log", "configuring " + w.build.string());
   }
-  must({"ninja", "-C", w.build.string(), "-j", std::to_string(args.build_jobs)}, {}, w.logs / "setup-build.log",
+  may_build();
+  must({"ninja", "-C", w.build.string(), "-j", std::to_string(build_jobs)}, {}, w.logs / "setup-build.log",
        "building the unmutated tree in " + w.build.string());
   for (const std::string& label : args.labels) w.label_targets.push_back(targets_of_label(w, label));
 }
@@ -417,6 +421,14 @@ int run(const MutateArgs& args) {
   });
 
   interrupt_children_on_signal();
+  // With ccache the scratch trees share one cache: paths below the work directory are hashed
+  // relative to the build directory, so the first tree's compilations serve the others. The first
+  // tree is then built alone with every job, and the others from the cache after it.
+  const bool ccache = program_on_path("ccache").has_value();
+  if (ccache && std::getenv("CCACHE_BASEDIR") == nullptr) {
+    fs::create_directories(args.work);
+    setenv("CCACHE_BASEDIR", fs::weakly_canonical(args.work).c_str(), 1);
+  }
   const double deadline = start + 60 * args.budget_minutes;
   std::vector<Worker> workers(static_cast<std::size_t>(std::max(1, args.jobs)));
   std::mutex lock;
@@ -429,6 +441,7 @@ int run(const MutateArgs& args) {
   // run, and listed in the report; --exclude-tests adds a pattern of the user's.
   std::condition_variable baseline_cv;
   bool baseline_done = args.no_baseline;
+  bool first_tree_built = !ccache;  // (or failed: the others then fail on their own)
   std::string exclude = args.exclude_tests;
   TestTimeLimits limits;
   limits.floor_seconds = args.test_timeout;
@@ -437,7 +450,27 @@ int run(const MutateArgs& args) {
 
   const auto work = [&](Worker& w) {
     try {
-      set_up(w, args);
+      const bool first = w.index == 0;
+      struct FirstBuilt {  // worker 0's build has ended, built or not: the others may start theirs
+        bool first;
+        std::mutex& lock;
+        std::condition_variable& cv;
+        bool& flag;
+        ~FirstBuilt() {
+          if (!first) return;
+          std::lock_guard<std::mutex> g(lock);
+          flag = true;
+          cv.notify_all();
+        }
+      };
+      {
+        const FirstBuilt first_built{first, lock, baseline_cv, first_tree_built};
+        set_up(w, args, ccache && first ? args.build_jobs * static_cast<int>(workers.size()) : args.build_jobs, [&] {
+          if (first) return;
+          std::unique_lock<std::mutex> g(lock);
+          baseline_cv.wait(g, [&] { return first_tree_built; });
+        });
+      }
       if (w.index == 0 && !args.no_baseline) {
         std::vector<std::string> failing;
         std::map<std::string, double> own;
