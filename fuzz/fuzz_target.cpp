@@ -9,6 +9,7 @@
 #include "harness/formats/fuzz_record.h"
 #include "harness/formats/input_json.h"
 #include "harness/model/subject.h"
+#include "harness/processes/subject_process.h"
 #include "oracle/exact/exact_reference.h"
 #include "oracle/peers/peer_opinions.h"
 
@@ -41,14 +42,15 @@ void keep(QueryKind kind, CaseClass cls, const std::uint8_t* data, std::size_t s
 namespace {
 
 // The library under test: crosscheck's own, or the subject CROSSCHECK_SUBJECT names
-// (include/crosscheck/subject.h), put under test at the first input; a path that is no subject
-// ends the run (exit 2). Kinds the subject does not answer are not fuzzed (every input returns
+// (include/crosscheck/subject.h), put under test at the first input and asked in a child process
+// of the target's (processes/subject_process.h: its crash, exit or hang is an impl_bug, each call
+// limited to 20 s); a path that is no subject ends the run (exit 2). Kinds the subject does not answer are not fuzzed (every input returns
 // at once).
 void put_subject_under_test_once() {
   static const bool done = [] {
     if (const char* path = std::getenv("CROSSCHECK_SUBJECT"); path != nullptr && *path != '\0') {
       try {
-        put_under_test(Subject::load(path));
+        put_under_test(load_subject(path, 20));
       } catch (const std::exception& e) {
         std::fprintf(stderr, "CROSSCHECK_SUBJECT: %s\n", e.what());
         std::exit(2);

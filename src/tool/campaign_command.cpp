@@ -11,6 +11,7 @@
 #include <thread>
 
 #include <algorithm>
+#include <numeric>
 #include <chrono>
 #include <cerrno>
 #include <csignal>
@@ -221,16 +222,21 @@ std::vector<std::size_t> chosen_findings(const CampaignResult& r, const Campaign
     }
     queues[{f.kind, f.evaluation.verdict.cls}].push_back(i);
   }
+  // The library's findings (impl_bug: the subject's, with --subject) take the cap first, then
+  // the other parties' (oracle_defect, out_of_contract, ...), each in turns over kind and class.
   std::vector<std::size_t> chosen;
-  for (std::size_t turn = 0; static_cast<int>(chosen.size()) < args.max_new; ++turn) {
-    bool any = false;
-    for (auto& [key, queue] : queues) {
-      if (turn < queue.size() && static_cast<int>(chosen.size()) < args.max_new) {
-        chosen.push_back(queue[turn]);
-        any = true;
+  for (const bool library : {true, false}) {
+    for (std::size_t turn = 0; static_cast<int>(chosen.size()) < args.max_new; ++turn) {
+      bool any = false;
+      for (auto& [key, queue] : queues) {
+        if ((key.second == CaseClass::impl_bug) != library) continue;
+        if (turn < queue.size() && static_cast<int>(chosen.size()) < args.max_new) {
+          chosen.push_back(queue[turn]);
+          any = true;
+        }
       }
+      if (!any) break;
     }
-    if (!any) break;
   }
   return chosen;
 }
@@ -324,7 +330,12 @@ Stored store_findings(const CampaignResult& r, const CampaignArgs& args, double 
 // each naming its case file (the inputs are there and in --json); one line counts the rest.
 void print_findings(const CampaignResult& r, const Stored& s, int max_print) {
   std::map<std::pair<QueryKind, CaseClass>, int> printed, unprinted;
-  for (std::size_t i = 0; i < r.findings.size(); ++i) {
+  // The library's findings (impl_bug) are printed first, then the other parties'.
+  std::vector<std::size_t> order(r.findings.size());
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  std::stable_partition(order.begin(), order.end(),
+                        [&](std::size_t i) { return r.findings[i].evaluation.verdict.cls == CaseClass::impl_bug; });
+  for (const std::size_t i : order) {
     const Finding& f = r.findings[i];
     const Storage& storage = s.of[i];
     if (storage.how == Storage::How::grouped) continue;
@@ -406,7 +417,7 @@ int run(const CampaignArgs& args) {
     options.kinds.push_back(*kind);
   }
   if (options.kinds.empty()) options.kinds.assign(kAllQueryKinds.begin(), kAllQueryKinds.end());
-  put_subject_under_test(args.subject);
+  put_subject_under_test(args.subject, args.timeout);
   options.kinds = answered_kinds(options.kinds, "campaign");
   if (options.kinds.empty()) {
     std::fprintf(stderr, "crosscheck campaign: --subject: it answers none of the query kinds asked\n");
@@ -444,7 +455,7 @@ int run(const CampaignArgs& args) {
   print_table(r);
   for (const std::string& problem : r.problems) std::printf("PROBLEM: %s\n", problem.c_str());
   if (r.noisy_cases > 0) {
-    std::printf("\n%llu cases wrote to standard error (FCL's or Eigen's messages, captured); the first, %s\n",
+    std::printf("\n%llu cases wrote to standard output or error (a peer's messages, or the subject's, captured); the first, %s\n",
                 static_cast<unsigned long long>(r.noisy_cases), elided(r.first_noise, 160).c_str());
   }
   if (r.interrupted) std::printf("\n(interrupted after %.1f s)\n", r.seconds);
@@ -454,6 +465,11 @@ int run(const CampaignArgs& args) {
                 s.written, s.written == 1 ? "" : "s", args.out.c_str(), s.shrunk, s.written - s.shrunk, s.known,
                 args.corpora.c_str(), args.out.c_str(), s.grouped, s.over_cap, args.max_new,
                 s.failed ? (", " + std::to_string(s.failed) + " COULD NOT BE STORED (see above)").c_str() : "");
+    if (s.over_cap > 0) {
+      std::printf("(--max-new and --max-print go to the library's findings, impl_bug%s, before other parties' "
+                  "oracle_defect and out_of_contract cases)\n",
+                  harness::subject_under_test() != nullptr ? ": the subject's" : "");
+    }
     if (!s.complex_before.empty()) {
       std::printf("shrinking: median number of values that are not small integers or halves, %g before and %g "
                   "after (over %zu findings)\n",

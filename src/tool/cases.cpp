@@ -71,6 +71,7 @@ Case case_of(const Input& input, const Evaluation& e, Provenance provenance, std
   c.cls = e.verdict.cls;
   c.provenance = std::move(provenance);
   c.note = std::move(note);
+  if (const Subject* subject = subject_under_test()) c.subject = subject->identity();
   return c;
 }
 

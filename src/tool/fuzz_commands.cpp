@@ -88,7 +88,7 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
     std::fprintf(stderr, "crosscheck fuzz-case: unknown query \"%s\"\n", args.query.c_str());
     return kExitBadInput;
   }
-  put_subject_under_test(args.subject);
+  put_subject_under_test(args.subject, kPartyTimeLimit);
   if (!harness::library_answers(*kind)) {
     std::fprintf(stderr, "crosscheck fuzz-case: --subject: it does not answer %s\n", args.query.c_str());
     return kExitBadInput;
@@ -134,7 +134,7 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
         e.verdict.parties = {{"library", Standing::wrong, how}};
       } else {
         static const exact::ExactRationalReference exact;
-        e.library = ask_library(input);
+        ask_library_into(e, input);
         e.exact = exact.judge(input);
         e.opinions = {{"peers (FCL/libccd, Bullet)", Opinion::Status::failed, {}, how}};
         e.verdict.cls = CaseClass::oracle_crash;

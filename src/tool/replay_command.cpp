@@ -34,7 +34,7 @@ int run(const ReplayArgs& args) {
     std::fprintf(stderr, "crosscheck replay: --accept records crosscheck's own answers: not with --subject\n");
     return kExitBadInput;
   }
-  put_subject_under_test(args.subject);
+  put_subject_under_test(args.subject, kPartyTimeLimit);
   const exact::ExactRationalReference exact;
   const std::vector<std::filesystem::path> files = case_files_under(roots);
   if (files.empty()) {
@@ -43,11 +43,15 @@ int run(const ReplayArgs& args) {
     std::fprintf(stderr, "crosscheck replay: no case files (*.json) in %s\n", given.c_str());
     return kExitBadInput;
   }
-  int cases = 0, changed = 0, bad = 0, skipped = 0;
+  int cases = 0, changed = 0, bad = 0, skipped = 0, needs_subject = 0;
   for (const auto& file : files) {
     const auto c = read_case_or_report(file);
     if (!c) {
       ++bad;
+      continue;
+    }
+    if (!subject_fits_case(*c, file.string(), "replay")) {
+      ++needs_subject;
       continue;
     }
     if (!library_answers(kind_of(c->input))) {
@@ -76,10 +80,11 @@ int run(const ReplayArgs& args) {
     for (const std::string& w : what) std::printf("  - %s\n", w.c_str());
     std::printf("%s\n", triage_text(file.string(), *c, now, exact.explain(c->input)).c_str());
   }
-  std::printf("%d cases replayed: %d unchanged, %d changed%s%s\n", cases, cases - changed, changed,
+  std::printf("%d cases replayed: %d unchanged, %d changed%s%s%s\n", cases, cases - changed, changed,
               bad ? (", " + std::to_string(bad) + " unreadable").c_str() : "",
-              skipped ? (", " + std::to_string(skipped) + " skipped (kinds the subject does not answer)").c_str() : "");
-  if (bad) return kExitBadInput;
+              skipped ? (", " + std::to_string(skipped) + " skipped (kinds the subject does not answer)").c_str() : "",
+              needs_subject ? (", " + std::to_string(needs_subject) + " not replayed (found with a subject: give --subject)").c_str() : "");
+  if (bad || needs_subject) return kExitBadInput;
   return changed ? kExitFound : 0;
 }
 

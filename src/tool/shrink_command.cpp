@@ -21,9 +21,9 @@ struct ShrinkArgs {
 };
 
 int run(const ShrinkArgs& args) {
-  put_subject_under_test(args.subject);
+  put_subject_under_test(args.subject, kPartyTimeLimit);
   const auto c = read_case_or_report(args.file);
-  if (!c) return kExitBadInput;
+  if (!c || !subject_fits_case(*c, args.file, "shrink")) return kExitBadInput;
   if (!harness::library_answers(harness::kind_of(c->input))) {
     std::fprintf(stderr, "crosscheck shrink: %s: the subject does not answer %s\n", args.file.c_str(),
                  std::string(name(harness::kind_of(c->input))).c_str());

@@ -46,12 +46,16 @@ int run(const TriageArgs& args) {
     std::fprintf(stderr, "crosscheck triage: --svg draws one case; %zu files given\n", args.files.size());
     return kExitBadInput;
   }
-  put_subject_under_test(args.subject);
+  put_subject_under_test(args.subject, kPartyTimeLimit);
   const exact::ExactRationalReference exact;
   int status = 0;
   for (const std::string& file : args.files) {
     const auto c = read_case_or_report(file);
     if (!c) {
+      status = kExitBadInput;
+      continue;
+    }
+    if (!subject_fits_case(*c, file, "triage")) {
       status = kExitBadInput;
       continue;
     }

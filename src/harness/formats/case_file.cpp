@@ -172,6 +172,8 @@ CaseFileError::CaseFileError(std::string file, std::string place, const std::str
       file_(std::move(file)),
       place_(std::move(place)) {}
 
+Answer answer_from_json(const Json& j, const std::string& pointer) { return answer_from(j, pointer); }
+
 Json answer_json(const Answer& a) {
   Json j = Json::object();
   write_answer(a, j);
@@ -226,7 +228,7 @@ Json case_to_json(const Case& c) {
   if (!c.provenance.detail.empty()) provenance["detail"] = c.provenance.detail;
   if (!c.not_shrunk.empty()) provenance["not_shrunk"] = c.not_shrunk;
   const Json library = c.library_failure.empty() ? answer_json(c.library) : Json{{"failed", c.library_failure}};
-  return {{"format", "crosscheck-case"},
+  Json j = {{"format", "crosscheck-case"},
           {"version", kCaseFormatVersion},
           {"query", name(kind_of(c.input))},
           {"note", c.note},
@@ -235,6 +237,13 @@ Json case_to_json(const Case& c) {
           {"inputs", input_to_json(c.input)},
           {"answers", {{"library", library}, {"exact", exact}, {"oracles", opinions}}},
           {"provenance", provenance}};
+  if (c.subject) {
+    j["subject"] = {{"file", c.subject->file},
+                    {"version", c.subject->version},
+                    {"sha256", c.subject->sha256},
+                    {"kinds", c.subject->kinds}};
+  }
+  return j;
 }
 
 Case case_from_json(const Json& json, const std::filesystem::path& case_dir) {
@@ -243,7 +252,7 @@ Case case_from_json(const Json& json, const std::filesystem::path& case_dir) {
   if (format_name != "crosscheck-case") {
     throw FormatError("/format", "expected \"crosscheck-case\", not " + format_name.dump());
   }
-  only_fields(json, "", {"format", "version", "query", "note", "class", "margin", "inputs", "answers", "provenance"});
+  only_fields(json, "", {"format", "version", "query", "note", "class", "margin", "inputs", "answers", "provenance", "subject"});
   const auto version = member(json, "", "version");
   if (!version.is_number_integer()) throw FormatError("/version", "expected an integer");
   if (version.get<int>() > kCaseFormatVersion || version.get<int>() < 1) {
@@ -303,6 +312,22 @@ Case case_from_json(const Json& json, const std::filesystem::path& case_dir) {
     if (p.contains("case")) c.provenance.case_index = unsigned_from(p["case"], "/provenance/case");
     if (p.contains("detail")) c.provenance.detail = text(p["detail"], "/provenance/detail");
     if (p.contains("not_shrunk")) c.not_shrunk = text(p["not_shrunk"], "/provenance/not_shrunk");
+  }
+  if (json.contains("subject")) {
+    const Json& s = json["subject"];
+    only_fields(s, "/subject", {"file", "version", "sha256", "kinds"});
+    SubjectIdentity subject;
+    subject.file = text(member(s, "/subject", "file"), "/subject/file");
+    const Json& subject_version = member(s, "/subject", "version");
+    if (!subject_version.is_number_integer() || subject_version.get<std::int64_t>() != subject_version.get<int>()) {
+      throw FormatError("/subject/version", "expected an integer");
+    }
+    subject.version = subject_version.get<int>();
+    subject.sha256 = text(member(s, "/subject", "sha256"), "/subject/sha256");
+    const Json& kinds = member(s, "/subject", "kinds");
+    if (!kinds.is_array()) throw FormatError("/subject/kinds", "expected an array of query kinds");
+    for (std::size_t i = 0; i < kinds.size(); ++i) subject.kinds.push_back(text(kinds[i], "/subject/kinds/" + std::to_string(i)));
+    c.subject = std::move(subject);
   }
   return c;
 }

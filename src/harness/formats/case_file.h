@@ -12,6 +12,7 @@
 
 #include "harness/judging/classify.h"
 #include "harness/formats/input_json.h"
+#include "harness/model/subject.h"
 
 namespace cc::harness {
 
@@ -39,6 +40,7 @@ struct Case {
   Provenance provenance;
   std::string not_shrunk;  // why a campaign stored it as found (no time left, interrupted); empty: shrunk
   std::string note;
+  std::optional<SubjectIdentity> subject;  // the subject whose answer `library` is; none: crosscheck's own
 };
 
 /// A problem with a case file: the file, the place in it ("line 3, column 14" or a JSON pointer
@@ -57,6 +59,8 @@ Json case_to_json(const Case& c);
 /// An answer as a case file stores it ({"hit", "params", "pairs", "frames"}, doubles exactly):
 /// two answers are the same, bit for bit, when their JSON is.
 Json answer_json(const Answer& a);
+/// Reads one back; throws FormatError naming the place (`pointer`, the answer's JSON pointer).
+Answer answer_from_json(const Json& j, const std::string& pointer);
 /// The opinions as a case file stores them ("answers"/"oracles"), doubles exactly.
 Json opinions_to_json(const std::vector<Opinion>& opinions);
 /// Reads them back; throws FormatError naming the place (`place` is the array's JSON pointer).

@@ -22,14 +22,30 @@ std::optional<std::filesystem::path> find_mesh_file(const std::string& as_writte
   return std::nullopt;
 }
 
-std::shared_ptr<const Mesh> load_mesh_file(const std::filesystem::path& path) {
+namespace {
+
+std::map<std::filesystem::path, std::shared_ptr<const Mesh>>& loaded_meshes() {
   static std::map<std::filesystem::path, std::shared_ptr<const Mesh>> cache;
+  return cache;
+}
+
+}  // namespace
+
+std::shared_ptr<const Mesh> load_mesh_file(const std::filesystem::path& path) {
+  auto& cache = loaded_meshes();
   std::error_code ec;
   const std::filesystem::path key = std::filesystem::weakly_canonical(path, ec);
   if (auto it = cache.find(key); it != cache.end()) return it->second;
   auto mesh = std::make_shared<const Mesh>(read_obj_file(path));
   cache.emplace(key, mesh);
   return mesh;
+}
+
+std::optional<std::filesystem::path> mesh_file_of(const Mesh& mesh) {
+  for (const auto& [path, loaded] : loaded_meshes()) {
+    if (loaded.get() == &mesh) return path;
+  }
+  return std::nullopt;
 }
 
 std::filesystem::path mesh_folder(const std::filesystem::path& corpora_root) { return corpora_root / "meshes"; }

@@ -20,6 +20,10 @@ std::optional<std::filesystem::path> find_mesh_file(const std::string& as_writte
 /// Throws MeshFileError (see obj_file.h).
 std::shared_ptr<const Mesh> load_mesh_file(const std::filesystem::path& path);
 
+/// The canonical path of the file load_mesh_file read this very mesh from, in this process;
+/// nothing for a mesh it did not read.
+std::optional<std::filesystem::path> mesh_file_of(const Mesh& mesh);
+
 /// The folder the campaign takes FCL's test meshes from: <corpora root>/meshes.
 std::filesystem::path mesh_folder(const std::filesystem::path& corpora_root);
 

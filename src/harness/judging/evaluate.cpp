@@ -6,22 +6,21 @@
 
 #include "harness/formats/case_file.h"
 #include "harness/model/library.h"
+#include "harness/model/subject.h"
 #include "harness/processes/child.h"
 
 namespace cc::harness {
-namespace {
 
-// The library's answer into e, or its failure when it throws (a subject's answer that is no
-// answer, subject.h).
 void ask_library_into(Evaluation& e, const Input& input) {
   try {
     e.library = ask_library(input);
+  } catch (const SubjectFailure& ex) {
+    e.library_failure = ex.what();
   } catch (const std::exception& ex) {
     e.library_failure = std::string("threw: ") + ex.what();
   }
 }
 
-// The verdict once every party is heard: a library that failed is an impl_bug.
 void judge_into(Evaluation& e, const Input& input) {
   e.verdict = classify(kind_of(input), e.library, e.exact, e.opinions);
   if (e.library_failure.empty()) return;
@@ -34,7 +33,24 @@ void judge_into(Evaluation& e, const Input& input) {
   }
 }
 
-}  // namespace
+Json answers_to_json(const Evaluation& e) {
+  return {{"library", e.library_failure.empty() ? answer_json(e.library) : Json{{"failed", e.library_failure}}},
+          {"opinions", opinions_to_json(e.opinions)}};
+}
+
+void answers_from_json(const Json& j, const SecondOpinion& second, QueryKind kind, Evaluation& e) {
+  if (!j.is_object() || !j.contains("library") || !j.contains("opinions")) {
+    throw FormatError("", "expected {\"library\", \"opinions\"}");
+  }
+  const Json& library = j["library"];
+  if (library.is_object() && library.contains("failed")) {
+    e.library_failure = library["failed"].get<std::string>();
+  } else {
+    e.library = answer_from_json(library, "/library");
+  }
+  e.opinions = opinions_from_json(j["opinions"], "/opinions");
+  restore_bands(e.opinions, second, kind);
+}
 
 Evaluation evaluate(const Input& input, const ExactReference& exact, const SecondOpinion* second) {
   Evaluation e;
@@ -61,9 +77,8 @@ std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactRefer
                                             double timeout_seconds) {
   ChildEnd child;
   try {
-    child = run_in_child(
-        [&](int out) { return write_all(out, opinions_to_json(evaluate(input, exact, &second).opinions).dump()) ? 0 : 1; },
-        timeout_seconds);
+    child = run_in_child([&](int out) { return write_all(out, answers_to_json(evaluate(input, exact, &second)).dump()) ? 0 : 1; },
+                         timeout_seconds);
   } catch (const std::system_error&) {
     return std::nullopt;
   }
@@ -71,12 +86,10 @@ std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactRefer
   const std::string& text = child.output;
   Evaluation e;
   try {
-    e.opinions = opinions_from_json(Json::parse(text), "");
-    restore_bands(e.opinions, second, kind_of(input));
+    answers_from_json(Json::parse(text), second, kind_of(input), e);
   } catch (const std::exception&) {
     return std::nullopt;
   }
-  ask_library_into(e, input);
   e.exact = exact.judge(input);
   judge_into(e, input);
   return e;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "harness/judging/classify.h"
+#include "harness/formats/input_json.h"
 #include "harness/model/oracle.h"
 
 namespace cc::harness {
@@ -18,16 +19,31 @@ struct Evaluation {
   Verdict verdict;
 };
 
+/// The library's answer into e, or its failure when it gives none (a subject's failure, what
+/// SubjectFailure says; any other exception, "threw: " and its message).
+void ask_library_into(Evaluation& e, const Input& input);
+
+/// The verdict into e once every party is heard: a library that failed is an impl_bug.
+void judge_into(Evaluation& e, const Input& input);
+
 /// Asks the library, the exact reference and (when given) the second opinions, and classifies.
 Evaluation evaluate(const Input& input, const ExactReference& exact, const SecondOpinion* second);
 
-/// The same, first run whole in a child process, which passes its opinions back (as case files
-/// store them, exactly); the library and the exact reference, which returned there, are asked
+/// The same, first run whole in a child process, which passes the library's answer (or failure)
+/// and the opinions back (answers_to_json); the exact reference, which returned there, is asked
 /// again here. A party that crashes, or is cut short by a jump out of its code (see
 /// SecondOpinion::abandoned_calls), thus neither ends nor damages the caller. Nothing when the
 /// child did not answer (it crashed, or ran past timeout_seconds when that is not 0).
 std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactReference& exact, const SecondOpinion& second,
                                             double timeout_seconds = 0);
+
+/// What the parties other than the exact reference said (the library's answer or failure, the
+/// opinions), as a child process or a campaign's worker passes them back: exactly, as case
+/// files store them.
+Json answers_to_json(const Evaluation& e);
+/// Reads them back into e, the opinions' bands restored from `second`; throws FormatError (or
+/// a JSON exception) for text that is not such a record.
+void answers_from_json(const Json& j, const SecondOpinion& second, QueryKind kind, Evaluation& e);
 
 /// Opinions read back as text (from a child process, a worker) carry no band: gives each
 /// second-opinion party its band as `second` declares it for the kind (a party it does not

@@ -35,9 +35,18 @@ std::string contract_text(const ExactVerdict& v) {
 
 std::vector<std::string> replay_changes(const Case& c, const Evaluation& now) {
   std::vector<std::string> out;
-  if (now.verdict.parties[0].standing == Standing::wrong) out.push_back("the library is wrong: " + now.verdict.parties[0].why);
-  if (!(answer_json(now.library) == answer_json(c.library))) {
-    out.push_back("the library's answer changed: recorded " + text_of(c.library) + ", now " + text_of(now.library));
+  const auto library_text = [](const Answer& a, const std::string& failure) {
+    return failure.empty() ? text_of(a) : "failed: " + failure;
+  };
+  const bool library_same = answer_json(now.library) == answer_json(c.library) && now.library_failure == c.library_failure;
+  // A library wrong as recorded (an impl_bug kept, with the same answer) has not changed.
+  const bool known_bug = c.cls == CaseClass::impl_bug && now.verdict.cls == CaseClass::impl_bug && library_same;
+  if (now.verdict.parties[0].standing == Standing::wrong && !known_bug) {
+    out.push_back("the library is wrong: " + now.verdict.parties[0].why);
+  }
+  if (!library_same) {
+    out.push_back("the library's answer changed: recorded " + library_text(c.library, c.library_failure) + ", now " +
+                  library_text(now.library, now.library_failure));
   }
   if (!(answer_json(now.exact.answer) == answer_json(c.exact.answer))) {
     out.push_back("the exact reference's answer changed: recorded " + text_of(c.exact.answer) + ", now " +

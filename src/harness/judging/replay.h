@@ -9,7 +9,8 @@
 
 namespace cc::harness {
 
-/// One line per change, none when the replay is the record: the library now wrong; any party's
+/// One line per change, none when the replay is the record: the library now wrong (unless the
+/// case was recorded an impl_bug with the same answer or failure: a known bug, unchanged); any party's
 /// whole answer (hit, parameters, pairs, frames; doubles bit for bit) or status changed, the
 /// library's and the exact reference's included; the exact contract, decidedness or margin
 /// changed; a recorded party gone or a party not in the record; the class changed.

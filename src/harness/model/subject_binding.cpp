@@ -1,4 +1,4 @@
-#include "harness/model/subject.h"
+#include "harness/model/subject_binding.h"
 
 #include <dlfcn.h>
 
@@ -197,31 +197,28 @@ Answer ask_own_signature(void* function, const In& in, QueryKind kind) {
   }
 }
 
-std::shared_ptr<const Subject>& under_test() {
-  static std::shared_ptr<const Subject> subject;
-  return subject;
-}
-
 }  // namespace
 
-std::shared_ptr<const Subject> Subject::load(const std::string& path) {
+SubjectBinding SubjectBinding::open(const std::string& path) {
   const std::string where = path.find('/') == std::string::npos ? "./" + path : path;
   void* handle = dlopen(where.c_str(), RTLD_NOW | RTLD_LOCAL);  // kept open for the process's life
   if (handle == nullptr) throw std::runtime_error(path + ": cannot be loaded: " + dlerror());
   const auto version = reinterpret_cast<int (*)()>(dlsym(handle, "crosscheck_subject_version"));
   if (version == nullptr) throw std::runtime_error(path + ": exports no crosscheck_subject_version(): not a crosscheck subject");
-  if (const int v = version(); v != CROSSCHECK_SUBJECT_VERSION) {
-    throw std::runtime_error(path + ": interface version " + std::to_string(v) + ", this crosscheck takes version " +
-                             std::to_string(CROSSCHECK_SUBJECT_VERSION) + " (include/crosscheck/subject.h)");
+  SubjectBinding subject;
+  subject.path_ = path;
+  subject.version_ = version();
+  if (subject.version_ != CROSSCHECK_SUBJECT_VERSION) {
+    throw std::runtime_error(path + ": interface version " + std::to_string(subject.version_) +
+                             ", this crosscheck takes version " + std::to_string(CROSSCHECK_SUBJECT_VERSION) +
+                             " (include/crosscheck/subject.h)");
   }
-  auto subject = std::make_shared<Subject>();
-  subject->path_ = path;
   bool any = false;
   for (QueryKind kind : kAllQueryKinds) {
     with_kind(kind, [&]<class In>() {
       if constexpr (expressible<In>() || has_own_signature<In>) {
         void* f = dlsym(handle, ("crosscheck_" + std::string(name(kind))).c_str());
-        subject->functions_[static_cast<std::size_t>(kind)] = f;
+        subject.functions_[static_cast<std::size_t>(kind)] = f;
         any |= f != nullptr;
       }
     });
@@ -230,7 +227,15 @@ std::shared_ptr<const Subject> Subject::load(const std::string& path) {
   return subject;
 }
 
-Answer Subject::ask(const Input& input) const {
+std::vector<std::string> SubjectBinding::kinds() const {
+  std::vector<std::string> out;
+  for (QueryKind kind : kAllQueryKinds) {
+    if (answers(kind)) out.emplace_back(name(kind));
+  }
+  return out;
+}
+
+Answer SubjectBinding::ask(const Input& input) const {
   const QueryKind kind = kind_of(input);
   void* function = functions_[static_cast<std::size_t>(kind)];
   if (function == nullptr) throw std::runtime_error("the subject " + path_ + " does not answer " + std::string(name(kind)));
@@ -245,14 +250,6 @@ Answer Subject::ask(const Input& input) const {
         }
       },
       input);
-}
-
-void put_under_test(std::shared_ptr<const Subject> subject) { under_test() = std::move(subject); }
-const Subject* subject_under_test() { return under_test().get(); }
-
-bool library_answers(QueryKind kind) {
-  const Subject* subject = subject_under_test();
-  return subject == nullptr || subject->answers(kind);
 }
 
 }  // namespace cc::harness

@@ -19,8 +19,10 @@
 #include "harness/generation/generate.h"
 #include "harness/judging/party.h"
 #include "harness/model/library.h"
+#include "harness/model/subject.h"
 #include "harness/processes/child.h"
 #include "harness/processes/interrupts.h"
+#include "harness/processes/subject_process.h"
 
 namespace cc::harness {
 namespace {
@@ -80,31 +82,44 @@ bool is_finding(const Verdict& v) {
          c == CaseClass::undecided;
 }
 
-// A worker's standard error goes to a file of its own: what FCL or Eigen print there is counted
-// per case, and its first line reported, instead of reaching the terminal raw.
-int capture_stderr() {
+// A worker's standard output and error go to files of its own: what FCL or Eigen print there
+// is counted per case, and its first line reported, instead of reaching the terminal raw.
+bool capture(int fd) {
   FILE* file = std::tmpfile();
-  if (file == nullptr) return -1;
-  const int fd = ::dup(::fileno(file));
+  if (file == nullptr) return false;
+  const int copy = ::dup(::fileno(file));
   std::fclose(file);
-  if (fd < 0 || ::dup2(fd, STDERR_FILENO) < 0) return -1;
-  ::close(fd);
-  return STDERR_FILENO;
+  if (copy < 0 || ::dup2(copy, fd) < 0) return false;
+  ::close(copy);
+  return true;
 }
 
-// The first line written to the captured standard error since the last call, or nothing; the
+// The first line written to the captured file `fd` since the last call, or nothing; the
 // capture starts empty again.
-std::optional<std::string> captured_stderr() {
-  if (::lseek(STDERR_FILENO, 0, SEEK_END) <= 0) return std::nullopt;
+std::optional<std::string> captured(int fd) {
+  if (::lseek(fd, 0, SEEK_END) <= 0) return std::nullopt;
   char line[200] = {};
-  const ssize_t n = ::pread(STDERR_FILENO, line, sizeof line - 1, 0);
-  if (::ftruncate(STDERR_FILENO, 0) != 0 || ::lseek(STDERR_FILENO, 0, SEEK_SET) != 0) return "(unreadable)";
+  const ssize_t n = ::pread(fd, line, sizeof line - 1, 0);
+  if (::ftruncate(fd, 0) != 0 || ::lseek(fd, 0, SEEK_SET) != 0) return "(unreadable)";
   std::string text(line, n > 0 ? static_cast<std::size_t>(n) : 0);
   text = text.substr(0, text.find('\n'));
   for (char& ch : text) {
     if (static_cast<unsigned char>(ch) < 0x20) ch = ' ';
   }
   return text;
+}
+
+// What the case made anyone print: the worker's own output files (a peer's messages), then the
+// subject's (each call that printed is also the subject's failure).
+std::optional<std::string> printed_in_case(bool captured_output) {
+  std::optional<std::string> said;
+  if (captured_output) {
+    std::fflush(stdout);
+    if (auto err = captured(STDERR_FILENO)) said = std::move(err);
+    if (auto out = captured(STDOUT_FILENO); out && !said) said = "standard output: " + *out;
+  }
+  if (auto subject = take_subject_output(); subject && !said) said = "the subject's " + *subject;
+  return said;
 }
 
 // A worker's exit status when it stops early because its second opinion abandoned a call (see
@@ -114,7 +129,8 @@ constexpr int kRetired = 3;
 // The worker: runs cases until the deadline, reporting tallies and findings on `out`.
 [[noreturn]] void run_worker(int worker, const CampaignOptions& options, const Oracles& oracles, Slot& slot, int out,
                              std::int64_t deadline_ns) {
-  const bool captured = capture_stderr() >= 0;
+  std::fflush(stdout);
+  const bool captured_output = capture(STDERR_FILENO) && capture(STDOUT_FILENO);
   const auto exact = oracles.exact();
   const auto second = oracles.second();
   const int abandoned_before = second->abandoned_calls();  // inherited: a fresh worker cannot undo it
@@ -135,24 +151,24 @@ constexpr int kRetired = 3;
 
     Evaluation e;
     slot.phase = in_library;
-    e.library = ask_library(input);
+    ask_library_into(e, input);  // a subject's failure is its answer's, not the worker's end
     e.opinions = library_alternatives(input);
     slot.phase = in_exact;
     e.exact = exact->judge(input);
     slot.phase = in_second_opinion;
     for (Opinion& o : second->opinions(input)) e.opinions.push_back(std::move(o));
     slot.phase = idle;
-    e.verdict = classify(kind, e.library, e.exact, e.opinions);
+    judge_into(e, input);
 
     const std::int64_t elapsed = now_ns() - start;
     slot.busy_ns[kind_number] += elapsed;
     slot.counts[kind_number][static_cast<std::size_t>(e.verdict.cls)] += 1;
-    if (const auto said = captured ? captured_stderr() : std::nullopt) {
+    if (const auto said = printed_in_case(captured_output)) {
       write_line(out, "E " + std::to_string(static_cast<int>(kind)) + " " + std::to_string(index) + " " + *said);
     }
-    if (is_finding(e.verdict)) {  // with the opinions, as case files store them (exactly)
+    if (is_finding(e.verdict)) {  // with the answers, as case files store them (exactly)
       write_line(out, "F " + std::to_string(static_cast<int>(kind)) + " " + std::to_string(index) + " " +
-                          opinions_to_json(e.opinions).dump());
+                          answers_to_json(e).dump());
     }
     if (second->abandoned_calls() > abandoned_before) {  // later cases must not pay for it
       ::close(out);
@@ -228,18 +244,24 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
   const auto second = oracles.second();
   std::map<QueryKind, KindTally> crashed;  // cases on which a worker died
   const auto record_finding = [&](QueryKind kind, std::uint64_t index, const std::string& crash, int phase,
-                                  const std::optional<std::vector<Opinion>>& opinions) {
+                                  const std::optional<Json>& answers) {
     Finding f;
     f.kind = kind;
     f.case_index = index;
     f.input = campaign_case(options.seed, kind, index, options.out_of_contract_percent, options.mesh_folder);
     f.crash = crash;
-    if (crash.empty() && opinions) {  // it returned in the worker, which sent the opinions it got
-      f.evaluation.library = ask_library(f.input);
-      f.evaluation.exact = exact->judge(f.input);
-      f.evaluation.opinions = *opinions;
-      f.evaluation.verdict = classify(kind, f.evaluation.library, f.evaluation.exact, f.evaluation.opinions);
-    } else if (crash.empty()) {  // (opinions that did not parse) the same again, first in a child
+    bool answered = false;
+    if (crash.empty() && answers) {  // it returned in the worker, which sent the answers it got
+      try {
+        answers_from_json(*answers, *second, kind, f.evaluation);
+        f.evaluation.exact = exact->judge(f.input);
+        judge_into(f.evaluation, f.input);
+        answered = true;
+      } catch (const std::exception&) {
+        f.evaluation = {};
+      }
+    }
+    if (crash.empty() && !answered) {  // (answers that did not parse) the same again, first in a child
       if (auto e = evaluate_in_child(f.input, *exact, *second)) {
         f.evaluation = std::move(*e);
       } else {
@@ -249,7 +271,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
     }
     if (!f.crash.empty()) {
       // Rebuild what can be rebuilt without the party that died.
-      if (phase != in_library) f.evaluation.library = ask_library(f.input);
+      if (phase != in_library) ask_library_into(f.evaluation, f.input);
       if (phase != in_exact && phase != in_library) f.evaluation.exact = exact->judge(f.input);
       if (phase == in_second_opinion) {
         for (const PartyBand& party : second->parties(kind)) {
@@ -258,7 +280,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
           o.band = party.band;
           f.evaluation.opinions.push_back(std::move(o));
         }
-        f.evaluation.verdict = classify(kind, f.evaluation.library, f.evaluation.exact, f.evaluation.opinions);
+        judge_into(f.evaluation, f.input);
         if (f.evaluation.verdict.cls != CaseClass::impl_bug) f.evaluation.verdict.cls = CaseClass::oracle_crash;
       } else {
         // Nothing is invented for the parties that were not asked: the exact reference is
@@ -295,13 +317,12 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       return;
     }
     if (tag != 'F') return;
-    std::optional<std::vector<Opinion>> opinions;
+    std::optional<Json> answers;
     try {
-      opinions = opinions_from_json(Json::parse(rest), "");
-      restore_bands(*opinions, *second, kind);
+      answers = Json::parse(rest);
     } catch (const std::exception&) {
     }
-    record_finding(kind, index, "", idle, opinions);
+    record_finding(kind, index, "", idle, answers);
   };
   // The tallies: the workers' shared counters plus the cases they died on.
   const auto tallies = [&] {
@@ -360,10 +381,11 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       w.fd = -1;
       const ChildEnd end = wait_child(w.pid);
       Slot& slot = slots[i];
-      const bool retired = end.status == kRetired;
+      const bool retired = end.status == kRetired && slot.phase == idle;
       // Ended by the SIGTERM or SIGKILL that stopped the run: its last case is not a finding.
       const bool stopped = w.stopped || (stop_ns != 0 && !slot.hung && end.signal == SIGTERM);
-      const bool died = !end.succeeded() && !retired && !stopped;
+      // An exit in the middle of a case, whatever its status (0 too), is a death in that case.
+      const bool died = (!end.succeeded() || slot.phase != idle) && !retired && !stopped;
       if (retired && !stopping()) {
         if (spawn(static_cast<int>(i))) continue;
       }
@@ -379,10 +401,12 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       }
       --alive;
     }
-    // Hangs: a case that has run too long is killed; the worker is then reaped above.
+    // Hangs: a case that has run too long is killed; the worker is then reaped above. A
+    // subject's call has a time limit of its own (subject_process.h): its hang is its answer's.
     for (std::size_t i = 0; i < workers.size(); ++i) {
       Slot& slot = slots[i];
       const int phase = slot.phase;
+      if (phase == in_library && subject_under_test() != nullptr) continue;
       if (options.case_timeout_seconds > 0 && workers[i].fd >= 0 && !workers[i].stopped && phase > idle &&
           !slot.hung && now_ns() - slot.started_ns > static_cast<std::int64_t>(options.case_timeout_seconds * 1e9)) {
         slot.hung = true;

@@ -118,5 +118,31 @@ TEST(ReplayChanges, TheClassAndAWrongLibrary) {
   expect_one_change_naming(r, "the library is wrong: says miss");
 }
 
+// A case kept as an impl_bug (a subject's finding) replayed with the same wrong answer, or the
+// same failure, is unchanged; another answer, another failure, or a library now right is a change.
+TEST(ReplayChanges, AKnownBugWithTheSameAnswerIsUnchanged) {
+  Recorded r = recorded();
+  r.c.cls = r.now.verdict.cls = CaseClass::impl_bug;
+  r.now.verdict.parties = {{"library", Standing::wrong, "a touch missed"}};
+  EXPECT_TRUE(replay_changes(r.c, r.now).empty());
+  r.now.library.hit = false;
+  const std::vector<std::string> lines = replay_changes(r.c, r.now);
+  ASSERT_EQ(lines.size(), 2u);
+  EXPECT_NE(lines[0].find("the library is wrong"), std::string::npos) << lines[0];
+  EXPECT_NE(lines[1].find("the library's answer changed"), std::string::npos) << lines[1];
+
+  r = recorded();
+  r.c.cls = r.now.verdict.cls = CaseClass::impl_bug;
+  r.c.library_failure = r.now.library_failure = "exited with status 0";
+  r.now.verdict.parties = {{"library", Standing::failed, "exited with status 0"}};
+  EXPECT_TRUE(replay_changes(r.c, r.now).empty());
+  r.now.library_failure = "was killed by signal 6 (Aborted)";
+  expect_one_change_naming(r, "recorded failed: exited with status 0, now failed: was killed by signal 6");
+
+  r = recorded();
+  r.c.cls = CaseClass::impl_bug;  // recorded wrong, right now: the class changed
+  expect_one_change_naming(r, "class changed: recorded impl_bug, now agree");
+}
+
 }  // namespace
 }  // namespace cc::harness

@@ -75,6 +75,36 @@ TEST(Campaign, SurvivesCrashesAndHangsInAnOracle) {
   EXPECT_EQ(t.count(CaseClass::impl_bug), 0u);
 }
 
+bool exits_on(const Input& in) { return fingerprint(in) % 2003 == 11; }
+
+// Answers like FCL's AABB test, but on a few inputs ends its process with status 0, as a peer's
+// exit(0) would.
+class Exiting final : public SecondOpinion {
+ public:
+  std::vector<Opinion> opinions(const Input& in) const override {
+    if (exits_on(in)) std::_Exit(0);
+    return {{"fcl.AABBd::overlap", Opinion::Status::answered, ask_library(in), "", kBand}};
+  }
+  std::vector<PartyBand> parties(QueryKind) const override { return {{"fcl.AABBd::overlap", kBand}}; }
+};
+
+TEST(Campaign, AnExitWithStatusZeroInTheMiddleOfACaseIsAFindingNotTheEndOfTheRun) {
+  CampaignOptions options;
+  options.seconds = 2;
+  options.seed = 7;
+  const CampaignResult r = aabb_campaign<Exiting>(options);
+  EXPECT_GT(r.seconds, 1.9);
+  int exits = 0;
+  for (const Finding& f : r.findings) {
+    EXPECT_TRUE(exits_on(f.input)) << f.crash;
+    EXPECT_EQ(f.crash, "exited with status 0 in the second opinions (FCL/libccd, Bullet)");
+    EXPECT_EQ(f.evaluation.verdict.cls, CaseClass::oracle_crash);
+    ++exits;
+  }
+  EXPECT_GT(exits, 1);
+  EXPECT_GT(r.tallies.at(QueryKind::aabb_aabb).cases, 5000u);
+}
+
 bool abandoned_on(const Input& in) { return fingerprint(in) % 997 == 3; }
 
 // Answers like FCL's AABB test, but on a few inputs a call is abandoned (a failed opinion), after
