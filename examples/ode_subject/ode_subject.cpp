@@ -60,6 +60,9 @@ struct TriMesh {
   TriMesh(const cc_mesh& m, const cc_pose* pose) {
     for (unsigned i = 0; i < m.vertex_count; ++i) vertices.insert(vertices.end(), {m.vertices[i].x, m.vertices[i].y, m.vertices[i].z});
     for (unsigned f = 0; f < m.face_count; ++f) indices.insert(indices.end(), {m.faces[f][0], m.faces[f][1], m.faces[f][2]});
+    // ODE's OPCODE crashes on a tree of a single triangle: such a mesh gets its face twice (as
+    // face 0 and face 1; the callers map indices back modulo the face count).
+    if (m.face_count == 1) indices.insert(indices.end(), {m.faces[0][0], m.faces[0][1], m.faces[0][2]});
     data = dGeomTriMeshDataCreate();
     dGeomTriMeshDataBuildDouble(data, vertices.data(), 3 * sizeof(double), static_cast<int>(m.vertex_count), indices.data(),
                                 static_cast<int>(indices.size()), 3 * sizeof(dTriIndex));
@@ -89,7 +92,7 @@ std::vector<cc_face_pair> contact_pairs(const cc_mesh& a, const cc_pose& pose_a,
   const int n = dCollide(ma.geom, mb.geom, 0xffff, contacts.data(), sizeof(dContactGeom));
   for (int i = 0; i < n; ++i) {
     if (contacts[i].side1 >= 0 && contacts[i].side2 >= 0) {
-      out.push_back({static_cast<unsigned>(contacts[i].side1), static_cast<unsigned>(contacts[i].side2)});
+      out.push_back({static_cast<unsigned>(contacts[i].side1) % a.face_count, static_cast<unsigned>(contacts[i].side2) % b.face_count});
     }
   }
   std::sort(out.begin(), out.end(), [](const cc_face_pair& p, const cc_face_pair& q) { return p.a != q.a ? p.a < q.a : p.b < q.b; });
@@ -216,7 +219,7 @@ int crosscheck_ray_mesh(const cc_ray* ray, const cc_mesh* mesh, unsigned* face) 
   if (n == 0) return 0;
   const int side = contact.g1 == m.geom ? contact.side1 : contact.side2;
   if (side < 0) return 0;
-  *face = static_cast<unsigned>(side);
+  *face = static_cast<unsigned>(side) % mesh->face_count;
   return 1;
 }
 

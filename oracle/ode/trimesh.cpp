@@ -7,6 +7,8 @@ TriMesh::TriMesh(const Mesh& mesh, const RigidTransform& pose) {
   for (const Vec3& v : mesh.vertices) vertices_.insert(vertices_.end(), {v.x, v.y, v.z});
   indices_.reserve(3 * mesh.size());
   for (const auto& f : mesh.faces) indices_.insert(indices_.end(), {f[0], f[1], f[2]});
+  faces_ = static_cast<std::uint32_t>(mesh.size());
+  if (mesh.size() == 1) indices_.insert(indices_.end(), indices_.begin(), indices_.end());  // the face twice
   data_ = dGeomTriMeshDataCreate();
   dGeomTriMeshDataBuildDouble(data_, vertices_.data(), 3 * sizeof(double), static_cast<int>(mesh.vertices.size()),
                               indices_.data(), static_cast<int>(indices_.size()), 3 * sizeof(dTriIndex));

@@ -33,7 +33,7 @@ Opinion collide_meshes(const harness::MeshMeshFirstInput& in) {
   const dContactGeom& first = found.front();
   if (first.side1 < 0 || first.side2 < 0) return failed("a contact naming no pair of triangles");
   harness::Answer answer = harness::Answer::of(true);
-  answer.pairs = {{static_cast<std::uint32_t>(first.side1), static_cast<std::uint32_t>(first.side2)}};
+  answer.pairs = {{a.face_of(first.side1), b.face_of(first.side2)}};
   return answered(answer);
 }
 

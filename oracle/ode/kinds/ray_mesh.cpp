@@ -44,7 +44,7 @@ Opinion ray_trimesh(const harness::RayMeshInput& in) {
   const int face = contact.g1 == trimesh.geom() ? contact.side1 : contact.side2;
   if (face < 0) return failed("a contact naming no triangle");
   harness::Answer a = harness::Answer::of(true);
-  a.pairs = {{static_cast<std::uint32_t>(face), 0}};
+  a.pairs = {{trimesh.face_of(face), 0}};
   return answered(a);
 }
 

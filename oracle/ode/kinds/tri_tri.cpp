@@ -5,7 +5,8 @@
 // coordinate, and the test's plane distances within 1e-6 snapped to 0); ODE then computes the
 // pair's contact in double (each triangle's normalised plane, the other clipped by its edge
 // planes, the deepest points; a pair of depth < 0 gives none): 2^-20 two-sided. A triangle of
-// zero area has no plane (dSafeNormalize3 fails) and never collides: beyond the band.
+// zero area has no plane (dSafeNormalize3 fails) and never collides: beyond the band. (Each mesh
+// holds its triangle twice: OPCODE crashes on a tree of one triangle, see trimesh.h.)
 #include "oracle/ode/parties.h"
 #include "oracle/ode/trimesh.h"
 
