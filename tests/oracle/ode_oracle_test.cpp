@@ -6,10 +6,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <map>
 #include <string>
 
 #include "harness/model/mesh_query.h"
+#include "oracle/ode/ode_call.h"
 
 namespace cc::ode_oracle {
 namespace {
@@ -158,6 +160,14 @@ TEST(OdeSecondOpinion, PartiesMatchTheOpinionsOfEveryKind) {
   EXPECT_EQ(ode.parties(harness::QueryKind::mesh_mesh_first).size(), 1u);
   EXPECT_EQ(ode.parties(harness::QueryKind::ray_mesh).size(), 1u);
   EXPECT_EQ(ode.parties(harness::QueryKind::broadphase).size(), 2u);
+}
+
+TEST(OdeSecondOpinion, AnAbortInsideACallIsAFailedOpinion) {
+  // ODE's dError and dDebug handlers abort (ODE itself would exit or abort after them): the
+  // guard jumps out of the call, and the opinion is failed.
+  const Opinion o = ode_call([]() -> Opinion { std::abort(); });
+  EXPECT_EQ(o.status, Opinion::Status::failed);
+  EXPECT_EQ(ode_call([] { return harness::answered(true); }).status, Opinion::Status::answered);
 }
 
 TEST(OdeSecondOpinion, ItsVersionIsPkgConfigs) { EXPECT_EQ(ode_version(), "0.16.2"); }
