@@ -5,7 +5,11 @@
 // box ODE sees differs from the given one by up to 2u of the scale on every face; with identity
 // rotations dBoxBox's face axes are exact sums |c_b - c_a| - (a + b) (two roundings, 4u of the
 // scale) and its edge axes are all zero: 2^-46 two-sided. Boxes with NaN, infinite or inverted
-// bounds are not asked (a centre or a side would be NaN, infinite or negative).
+// bounds are not asked (a centre or a side would be NaN, infinite or negative). dBoxBox's contact
+// clipping misses boxes touching only along an edge or at a corner (within the band, at margin
+// 0) and, beyond it, flat boxes and boxes of subnormal size (obb_obb.cpp): defects of ODE's.
+// (Below the normal range the centre's halving rounds by up to 2.5e-324, absolute: beyond the
+// band for boxes of subnormal size.)
 #include <cmath>
 
 #include "oracle/ode/convert.h"

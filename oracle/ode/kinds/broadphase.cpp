@@ -10,7 +10,12 @@
 // than float rounding on the first axis reaches the callback, and aabb_test drops it. The band is
 // exact: what this asks is whether a space misses an overlapping pair. Boxes with NaN or
 // inverted bounds are not asked; nor, for dHashSpace, coordinates of magnitude 2^27 or more
-// (its cells of 2^-3 are counted in ints).
+// (its cells of 2^-3 are counted in ints). dHashSpace puts a box in cells of size 2^level, level
+// its largest extent's exponent, by floor(bound * 2^-level), and looks for boxes of larger
+// levels in the cells that contain its own; for a subnormal bound the product underflows
+// differently at each level (-5e-324 / 2 is -0, cell 0; -5e-324 / 1 is in cell -1), so a pair of
+// overlapping boxes of different levels can be missed: a defect of ODE's (a two-box case in
+// corpora/broadphase).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

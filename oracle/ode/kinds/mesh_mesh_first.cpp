@@ -7,7 +7,8 @@
 // precision (vertices and poses rounded to float: 2^-24 of the scale per coordinate, plane
 // distances within 1e-6 snapped to 0), moving b into a's frame in float; ODE computes each pair's
 // contact in double and drops pairs of depth < 0: 2^-20 two-sided. A face of zero area never
-// collides (no plane): beyond the band.
+// collides (no plane): beyond the band; so are contacts for pairs apart (tri_tri.cpp: ODE's
+// contact step measures depth along the face normals only).
 #include "oracle/ode/parties.h"
 #include "oracle/ode/trimesh.h"
 

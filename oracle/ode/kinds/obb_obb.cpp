@@ -9,7 +9,11 @@
 // R_ij (about u) can exceed both sides, so an overlapping pair may be separated by a degenerate
 // axis; that lies beyond the band, a defect of ODE's (the ports in Bullet and FCL add 1e-5 or
 // 10 eps to every |R_ij| for it). dBoxBox then clips the incident face to the reference face and
-// keeps points of depth >= 0, rounded about u of the scale: inside the same band. Negative,
+// keeps points of depth >= 0, rounded about u of the scale: inside the same band; but a box with
+// a side 0 (flat, a segment, a point) often leaves its clipping no point, and then no contact:
+// a defect of ODE's beyond any band, which Bullet's port (btBoxBoxDetector) shares, and boxes
+// touching only along an edge or at a corner give none either (within the band). Its cullPoints
+// can fail an internal assertion ("*iret != i0"), a failed opinion (ode_call.h). Negative,
 // NaN or infinite inputs are not asked (ODE asserts sides >= 0).
 #include <cmath>
 #include <optional>

@@ -13,7 +13,10 @@
 // origin into the box's frame (u of 2 scales), normalises the direction (3u of its angle, moving
 // a point by 3u of its distance), and compares slab parameters (-h - s) / v and (h - s) / v
 // (3u of each) and the entry with the length (rounded, 2u): within about 16u of the scale:
-// 2^-44 two-sided. No parameter is compared (ODE's depth is a distance along the ray).
+// 2^-44 two-sided. No parameter is compared (ODE's depth is a distance along the ray). Beyond the
+// band, a defect of ODE's: dSafeNormalize3 divides by the largest component's reciprocal, which
+// overflows for a direction below 1/DBL_MAX (about 5.6e-309): the direction becomes NaN and the
+// ray meets nothing.
 #include <algorithm>
 #include <cmath>
 

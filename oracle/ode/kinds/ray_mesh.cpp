@@ -7,7 +7,8 @@
 // and direction rounded to float, 2^-24 of the scale; Moller-Trumbore in float): 2^-20
 // two-sided. A face whose determinant |e1 . (d x e2)| is at most 1e-6 min(|e1|^2, |e2|^2) (a
 // ray grazing it within about 1e-6 rad, or a face of zero area) is never hit, and a barycentric
-// coordinate of -0 is a miss (its sign bit is tested): beyond the band, on edges and grazing rays.
+// coordinate of -0 is a miss (its sign bit is tested): beyond the band, on edges and grazing rays;
+// so is a direction below 1/DBL_MAX, which dSafeNormalize3 turns into NaN (ray_aabb.cpp).
 #include <algorithm>
 #include <cmath>
 
