@@ -13,7 +13,9 @@ std::string_view ode_version();
 
 /// Every kind's ODE parties, each with its name, band and call, are declared in the kind's
 /// unit, oracle/ode/kinds/<kind>.cpp (none where ODE has no fair counterpart: the unit says
-/// why); `crosscheck bands` lists them. An ODE error is reported as a failed opinion (ode_call.h).
+/// why); `crosscheck bands` lists them. An ODE error is reported as a failed opinion (ode_call.h);
+/// the calls it abandons are counted by oracle/fcl's guard (fcl_oracle::abandoned_calls), so
+/// abandoned_calls() here stays 0.
 class OdeSecondOpinion final : public harness::SecondOpinion {
  public:
   std::vector<harness::Opinion> opinions(const harness::Input& input) const override;

@@ -1,6 +1,6 @@
 // Every peer library's second opinions together: FCL and libccd's (oracle/fcl), then Bullet's
-// (oracle/bullet), then ODE's (oracle/ode), as one SecondOpinion, the one the campaign, the replays, the fuzz targets and
-// `crosscheck bands` ask.
+// (oracle/bullet), then ODE's (oracle/ode), as one SecondOpinion, the one the campaign, the
+// replays, the fuzz targets and `crosscheck bands` ask.
 #pragma once
 
 #include "oracle/bullet/bullet_oracle.h"
