@@ -102,10 +102,12 @@ std::vector<cc_face_pair> contact_pairs(const cc_mesh& a, const cc_pose& pose_a,
 }
 
 // A ray geom for the points origin + t dir, t in [tmin, tmax], reaching `reach` past the origin
-// when the range is infinite: ODE's rays start at their origin and have a length.
+// when the range is infinite: ODE's rays start at their origin and have a length (a zero
+// direction: the origin alone, a ray of length 0). The caller checks tmin <= tmax.
 dGeomID ray_geom(const cc_ray& r, double reach) {
   const double speed = std::sqrt(r.dir.x * r.dir.x + r.dir.y * r.dir.y + r.dir.z * r.dir.z);
-  const double t0 = std::isfinite(r.tmin) ? r.tmin : -reach / speed, t1 = std::isfinite(r.tmax) ? r.tmax : reach / speed;
+  double t0 = std::isfinite(r.tmin) ? r.tmin : -reach / speed, t1 = std::isfinite(r.tmax) ? r.tmax : reach / speed;
+  if (!(speed > 0)) t0 = t1 = 0;
   dGeomID ray = dCreateRay(nullptr, (t1 - t0) * speed);
   dGeomRaySet(ray, r.origin.x + t0 * r.dir.x, r.origin.y + t0 * r.dir.y, r.origin.z + t0 * r.dir.z, r.dir.x, r.dir.y, r.dir.z);
   return ray;
@@ -168,6 +170,7 @@ int crosscheck_aabb_aabb(const cc_aabb* a, const cc_aabb* b) {
 // A ray geom against a box geom.
 int crosscheck_ray_aabb(const cc_ray* ray, const cc_aabb* box) {
   init();
+  if (!(ray->tmin <= ray->tmax)) return 0;
   const double reach = 2 * (distance(ray->origin, box->lo) + distance(box->lo, box->hi)) + 1;  // past every point of the box
   dGeomID r = ray_geom(*ray, reach), b = aabb_box(*box);
   const int hit = touches(r, b) ? 1 : 0;
@@ -207,7 +210,7 @@ int crosscheck_tri_tri(const cc_triangle* a, const cc_triangle* b) {
 // A ray geom against the mesh's trimesh, asked for its closest hit; the face of the contact.
 int crosscheck_ray_mesh(const cc_ray* ray, const cc_mesh* mesh, unsigned* face) {
   init();
-  if (mesh->face_count == 0) return 0;
+  if (mesh->face_count == 0 || !(ray->tmin <= ray->tmax)) return 0;
   double reach = 0;
   for (unsigned i = 0; i < mesh->vertex_count; ++i) reach = std::max(reach, distance(ray->origin, mesh->vertices[i]));
   TriMesh m(*mesh, nullptr);
