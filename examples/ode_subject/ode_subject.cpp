@@ -58,14 +58,16 @@ struct TriMesh {
   dTriMeshDataID data = nullptr;
   dGeomID geom = nullptr;
   TriMesh(const cc_mesh& m, const cc_pose* pose) {
-    for (unsigned i = 0; i < m.vertex_count; ++i) vertices.insert(vertices.end(), {m.vertices[i].x, m.vertices[i].y, m.vertices[i].z});
-    for (unsigned f = 0; f < m.face_count; ++f) indices.insert(indices.end(), {m.faces[f][0], m.faces[f][1], m.faces[f][2]});
+    for (unsigned i = 0; i < m.vertex_count; ++i)
+      vertices.insert(vertices.end(), {m.vertices[i].x, m.vertices[i].y, m.vertices[i].z});
+    for (unsigned f = 0; f < m.face_count; ++f)
+      indices.insert(indices.end(), {m.faces[f][0], m.faces[f][1], m.faces[f][2]});
     // ODE's OPCODE crashes on a tree of a single triangle: such a mesh gets its face twice (as
     // face 0 and face 1; the callers map indices back modulo the face count).
     if (m.face_count == 1) indices.insert(indices.end(), {m.faces[0][0], m.faces[0][1], m.faces[0][2]});
     data = dGeomTriMeshDataCreate();
-    dGeomTriMeshDataBuildDouble(data, vertices.data(), 3 * sizeof(double), static_cast<int>(m.vertex_count), indices.data(),
-                                static_cast<int>(indices.size()), 3 * sizeof(dTriIndex));
+    dGeomTriMeshDataBuildDouble(data, vertices.data(), 3 * sizeof(double), static_cast<int>(m.vertex_count),
+                                indices.data(), static_cast<int>(indices.size()), 3 * sizeof(dTriIndex));
     geom = dCreateTriMesh(nullptr, data, nullptr, nullptr, nullptr);
     if (pose != nullptr) {
       const dMatrix3 r = {pose->rotation[0][0], pose->rotation[0][1], pose->rotation[0][2], 0,
@@ -84,7 +86,8 @@ struct TriMesh {
 };
 
 // The pairs of faces ODE's trimesh contacts name (side1 of a, side2 of b), sorted, each once.
-std::vector<cc_face_pair> contact_pairs(const cc_mesh& a, const cc_pose& pose_a, const cc_mesh& b, const cc_pose& pose_b) {
+std::vector<cc_face_pair> contact_pairs(const cc_mesh& a, const cc_pose& pose_a, const cc_mesh& b,
+                                        const cc_pose& pose_b) {
   std::vector<cc_face_pair> out;
   if (a.face_count == 0 || b.face_count == 0) return out;
   TriMesh ma(a, &pose_a), mb(b, &pose_b);
@@ -92,11 +95,14 @@ std::vector<cc_face_pair> contact_pairs(const cc_mesh& a, const cc_pose& pose_a,
   const int n = dCollide(ma.geom, mb.geom, 0xffff, contacts.data(), sizeof(dContactGeom));
   for (int i = 0; i < n; ++i) {
     if (contacts[i].side1 >= 0 && contacts[i].side2 >= 0) {
-      out.push_back({static_cast<unsigned>(contacts[i].side1) % a.face_count, static_cast<unsigned>(contacts[i].side2) % b.face_count});
+      out.push_back({static_cast<unsigned>(contacts[i].side1) % a.face_count,
+                     static_cast<unsigned>(contacts[i].side2) % b.face_count});
     }
   }
-  std::sort(out.begin(), out.end(), [](const cc_face_pair& p, const cc_face_pair& q) { return p.a != q.a ? p.a < q.a : p.b < q.b; });
-  out.erase(std::unique(out.begin(), out.end(), [](const cc_face_pair& p, const cc_face_pair& q) { return p.a == q.a && p.b == q.b; }),
+  std::sort(out.begin(), out.end(),
+            [](const cc_face_pair& p, const cc_face_pair& q) { return p.a != q.a ? p.a < q.a : p.b < q.b; });
+  out.erase(std::unique(out.begin(), out.end(),
+                        [](const cc_face_pair& p, const cc_face_pair& q) { return p.a == q.a && p.b == q.b; }),
             out.end());
   return out;
 }
@@ -109,7 +115,8 @@ dGeomID ray_geom(const cc_ray& r, double reach) {
   double t0 = std::isfinite(r.tmin) ? r.tmin : -reach / speed, t1 = std::isfinite(r.tmax) ? r.tmax : reach / speed;
   if (!(speed > 0)) t0 = t1 = 0;
   dGeomID ray = dCreateRay(nullptr, (t1 - t0) * speed);
-  dGeomRaySet(ray, r.origin.x + t0 * r.dir.x, r.origin.y + t0 * r.dir.y, r.origin.z + t0 * r.dir.z, r.dir.x, r.dir.y, r.dir.z);
+  dGeomRaySet(ray, r.origin.x + t0 * r.dir.x, r.origin.y + t0 * r.dir.y, r.origin.z + t0 * r.dir.z, r.dir.x, r.dir.y,
+              r.dir.z);
   return ray;
 }
 
@@ -171,7 +178,8 @@ int crosscheck_aabb_aabb(const cc_aabb* a, const cc_aabb* b) {
 int crosscheck_ray_aabb(const cc_ray* ray, const cc_aabb* box) {
   init();
   if (!(ray->tmin <= ray->tmax)) return 0;
-  const double reach = 2 * (distance(ray->origin, box->lo) + distance(box->lo, box->hi)) + 1;  // past every point of the box
+  const double reach =
+      2 * (distance(ray->origin, box->lo) + distance(box->lo, box->hi)) + 1;  // past every point of the box
   dGeomID r = ray_geom(*ray, reach), b = aabb_box(*box);
   const int hit = touches(r, b) ? 1 : 0;
   dGeomDestroy(r), dGeomDestroy(b);

@@ -1,5 +1,5 @@
-// ODE trimeshes of the library's meshes (internal to oracle/ode), for tri_tri, the mesh kinds
-// and ray_mesh.
+// ODE trimeshes of the library's meshes (internal to oracle/ode), for the kinds on triangles,
+// meshes and rays against meshes.
 #pragma once
 
 #include <ode/ode.h>

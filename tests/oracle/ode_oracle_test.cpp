@@ -61,7 +61,9 @@ TEST(OdeSecondOpinion, OrientedBoxesFaceToFaceTurnedAndMirrored) {
 }
 
 TEST(OdeSecondOpinion, SpheresTouchingAndApartByOneUlp) {
-  const auto says = [](const harness::SphereSphereInput& in) { return hit(ask(in).at("ode.dCollide(dSphere,dSphere)")); };
+  const auto says = [](const harness::SphereSphereInput& in) {
+    return hit(ask(in).at("ode.dCollide(dSphere,dSphere)"));
+  };
   EXPECT_TRUE(says({{{0, 0, 0}, 1}, {{1, 1, 0}, 1}}));
   EXPECT_TRUE(says({{{0, 0, 0}, 1}, {{2, 0, 0}, 1}}));  // touching
   EXPECT_FALSE(says({{{0, 0, 0}, 1}, {{std::nextafter(2.0, 3.0), 0, 0}, 1}}));
@@ -71,14 +73,14 @@ TEST(OdeSecondOpinion, SpheresTouchingAndApartByOneUlp) {
 TEST(OdeSecondOpinion, RaysThroughBesideAndShortOfABox) {
   const auto says = [](const Ray& ray) { return ask(harness::RayAabbInput{ray, kUnit}).at("ode.dCollide(dRay,dBox)"); };
   EXPECT_TRUE(hit(says({{-1, 0.5, 0.5}, {1, 0, 0}, 0, 3})));
-  EXPECT_TRUE(hit(says({{-1, 0.5, 0.5}, {2, 0, 0}, 0, INFINITY})));  // infinite: a ray past the box
+  EXPECT_TRUE(hit(says({{-1, 0.5, 0.5}, {2, 0, 0}, 0, INFINITY})));   // infinite: a ray past the box
   EXPECT_TRUE(hit(says({{0.5, 0.5, 0.5}, {0, 1, 0}, 0, INFINITY})));  // from inside: the exit
   EXPECT_FALSE(hit(says({{-1, 2.5, 0.5}, {1, 0, 0}, 0, 3})));
-  EXPECT_FALSE(hit(says({{-1, 0.5, 0.5}, {1, 0, 0}, 0, 0.5})));  // stops short
-  EXPECT_FALSE(hit(says({{-1, 0.5, 0.5}, {-1, 0, 0}, 0, INFINITY})));  // away from it
-  EXPECT_EQ(says({{-1, 0.5, 0.5}, {1, 0, 0}, 0.5, 3}).status, Opinion::Status::not_applicable);  // tmin != 0
+  EXPECT_FALSE(hit(says({{-1, 0.5, 0.5}, {1, 0, 0}, 0, 0.5})));                                   // stops short
+  EXPECT_FALSE(hit(says({{-1, 0.5, 0.5}, {-1, 0, 0}, 0, INFINITY})));                             // away from it
+  EXPECT_EQ(says({{-1, 0.5, 0.5}, {1, 0, 0}, 0.5, 3}).status, Opinion::Status::not_applicable);   // tmin != 0
   EXPECT_EQ(says({{0.5, 0.5, 0.5}, {1, 0, 0}, 0, 0.1}).status, Opinion::Status::not_applicable);  // inside, finite
-  EXPECT_EQ(says({{-1, 0.5, 0.5}, {0, 0, 0}, 0, 1}).status, Opinion::Status::not_applicable);  // zero direction
+  EXPECT_EQ(says({{-1, 0.5, 0.5}, {0, 0, 0}, 0, 1}).status, Opinion::Status::not_applicable);     // zero direction
 }
 
 Triangle tri(const Vec3& a, const Vec3& b, const Vec3& c) { return {{a, b, c}}; }
@@ -128,10 +130,11 @@ TEST(OdeSecondOpinion, ARayNamesTheNearestFace) {
 
 TEST(OdeSecondOpinion, BothSpacesFollowBoxesAddedMovedAndRemoved) {
   harness::BroadphaseInput in;
-  in.frames = {{kUnit, Aabb{{2, 0, 0}, {3, 1, 1}}},                                          // apart
-               {kUnit, Aabb{{1, 0, 0}, {2, 1, 1}}, Aabb{{0.5, 0.5, 0.5}, {0.6, 0.6, 0.6}}},  // touching; a third inside
-               {kUnit, Aabb{{std::nextafter(1.0, 2.0), 0, 0}, {2, 1, 1}}, std::nullopt},     // apart by one ULP; the third gone
-               {std::nullopt, Aabb{{1, 0, 0}, {2, 1, 1}}, Aabb{{0, 0, 0}, {0, 0, 0}}}};       // the first gone; a point
+  in.frames = {
+      {kUnit, Aabb{{2, 0, 0}, {3, 1, 1}}},                                          // apart
+      {kUnit, Aabb{{1, 0, 0}, {2, 1, 1}}, Aabb{{0.5, 0.5, 0.5}, {0.6, 0.6, 0.6}}},  // touching; a third inside
+      {kUnit, Aabb{{std::nextafter(1.0, 2.0), 0, 0}, {2, 1, 1}}, std::nullopt},     // apart by one ULP; the third gone
+      {std::nullopt, Aabb{{1, 0, 0}, {2, 1, 1}}, Aabb{{0, 0, 0}, {0, 0, 0}}}};      // the first gone; a point
   const std::vector<std::vector<harness::FacePair>> expected = {{}, {{0, 1}, {0, 2}}, {}, {}};
   for (const char* party : {"ode.dSweepAndPruneSpace", "ode.dHashSpace"}) {
     const Opinion o = ask(in).at(party);

@@ -1,13 +1,13 @@
 // aabb_aabb's second opinion from ODE: dCollide on two axis-aligned dBox geoms, as an ODE user
 // tests two boxes (ODE has no AABB-AABB call of its own: its spaces compare geoms' AABBs
-// inside dSpaceCollide, asked in broadphase). A fair counterpart with a rounding band: each box
+// inside dSpaceCollide, asked of frames of boxes). A fair counterpart with a rounding band: each box
 // becomes a centre fl((lo + hi) / 2) and sides fl(hi - lo), each within u of the scale, so the
 // box ODE sees differs from the given one by up to 2u of the scale on every face; with identity
 // rotations dBoxBox's face axes are exact sums |c_b - c_a| - (a + b) (two roundings, 4u of the
 // scale) and its edge axes are all zero: 2^-46 two-sided. Boxes with NaN, infinite or inverted
 // bounds are not asked (a centre or a side would be NaN, infinite or negative). dBoxBox's contact
 // clipping misses boxes touching only along an edge or at a corner (within the band, at margin
-// 0) and, beyond it, flat boxes and boxes of subnormal size (obb_obb.cpp): defects of ODE's.
+// 0) and, beyond it, flat boxes and boxes of subnormal size (as with oriented boxes): defects of ODE's.
 // (Below the normal range the centre's halving rounds by up to 2.5e-324, absolute: beyond the
 // band for boxes of subnormal size.)
 #include <cmath>

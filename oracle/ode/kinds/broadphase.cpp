@@ -83,7 +83,8 @@ Opinion run_space(SpaceKind kind, const harness::BroadphaseInput& in) {
       }
     }
   }
-  const Space space(kind == SpaceKind::hash ? dHashSpaceCreate(nullptr) : dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ));
+  const Space space(kind == SpaceKind::hash ? dHashSpaceCreate(nullptr)
+                                            : dSweepAndPruneSpaceCreate(nullptr, dSAP_AXES_XYZ));
   dSpaceSetCleanup(space.get(), 0);  // the geoms are destroyed here
   const int klass = box_class();
   std::vector<Geom> geoms;
@@ -121,12 +122,14 @@ Opinion run_space(SpaceKind kind, const harness::BroadphaseInput& in) {
 
 template <>
 const std::vector<Party<harness::BroadphaseInput>>& ode_parties() {
-  constexpr Band kBand{0, BandSides::exact, 0, "pairs passed by the geoms' aabb_test on the given bounds: a missed pair is wrong"};
+  constexpr Band kBand{0, BandSides::exact, 0,
+                       "pairs passed by the geoms' aabb_test on the given bounds: a missed pair is wrong"};
   static const std::vector<Party<harness::BroadphaseInput>> parties = {
-      ode_party<harness::BroadphaseInput>("ode.dSweepAndPruneSpace", kBand,
-                                          [](const harness::BroadphaseInput& in) { return run_space(SpaceKind::sweep_and_prune, in); }),
-      ode_party<harness::BroadphaseInput>("ode.dHashSpace", kBand,
-                                          [](const harness::BroadphaseInput& in) { return run_space(SpaceKind::hash, in); })};
+      ode_party<harness::BroadphaseInput>(
+          "ode.dSweepAndPruneSpace", kBand,
+          [](const harness::BroadphaseInput& in) { return run_space(SpaceKind::sweep_and_prune, in); }),
+      ode_party<harness::BroadphaseInput>(
+          "ode.dHashSpace", kBand, [](const harness::BroadphaseInput& in) { return run_space(SpaceKind::hash, in); })};
   return parties;
 }
 

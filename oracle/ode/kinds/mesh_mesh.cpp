@@ -3,7 +3,7 @@
 // in the same cell of a 1e-4 grid (absolute) and whose depths differ by at most 1e-5 are merged
 // into one naming a single pair (or none), and a pair's contact points are only its deepest ones.
 // The set of pairs it reports is a subset of those it finds colliding by design, so the
-// all-pairs comparison would count every merged pair as a miss. mesh_mesh_first asks it (any
+// all-pairs comparison would count every merged pair as a miss. The first-hit kind asks it (any
 // pair it names must collide).
 #include "oracle/ode/parties.h"
 

@@ -1,14 +1,14 @@
 // mesh_mesh_first's second opinion from ODE: the two meshes as dTriMeshes placed by their poses
-// (trimesh.h) through dCollide, ODE's trimesh-trimesh collider (OPCODE's); a hit when it returns
-// a contact, its pair the first contact's (side1, side2), the faces of a and b. ODE merges
-// contacts at nearly the same point; each mesh's dTriTriMergeCallback keeps the pair already
-// named, so every contact names a pair ODE found colliding (mesh_mesh.cpp says why only the first
-// is compared). OPCODE finds candidate pairs with its AABB trees and triangle test in single
-// precision (vertices and poses rounded to float: 2^-24 of the scale per coordinate, plane
-// distances within 1e-6 snapped to 0), moving b into a's frame in float; ODE computes each pair's
-// contact in double and drops pairs of depth < 0: 2^-20 two-sided. A face of zero area never
-// collides (no plane): beyond the band; so are contacts for pairs apart (tri_tri.cpp: ODE's
-// contact step measures depth along the face normals only).
+// (trimesh.h) through dCollide, ODE's trimesh-trimesh collider (OPCODE's); a hit when it returns a
+// contact, its pair the first contact's (side1, side2), the faces of a and b. ODE merges contacts
+// at nearly the same point; each mesh's dTriTriMergeCallback keeps the pair already named, so every
+// contact names a pair ODE found colliding (the all-pairs kind's unit says why only the first is
+// compared). OPCODE finds candidate pairs with its AABB trees and triangle test in single precision
+// (vertices and poses rounded to float: 2^-24 of the scale per coordinate, plane distances within
+// 1e-6 snapped to 0), moving b into a's frame in float; ODE computes each pair's contact in double
+// and drops pairs of depth < 0: 2^-20 two-sided. A face of zero area never collides (no plane):
+// beyond the band; so are contacts for pairs apart (as with single triangles: ODE's contact step
+// measures depth along the face normals only).
 #include "oracle/ode/parties.h"
 #include "oracle/ode/trimesh.h"
 

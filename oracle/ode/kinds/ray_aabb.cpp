@@ -50,7 +50,8 @@ Opinion ray_box(const harness::RayAabbInput& in) {
   } else {
     bool inside = true;
     for (int k = 0; k < 3; ++k) inside = inside && box.lo[k] <= r.origin[k] && r.origin[k] <= box.hi[k];
-    if (inside) return not_applicable("a segment starting in the box (ODE's ray reports only a crossing of its surface)");
+    if (inside)
+      return not_applicable("a segment starting in the box (ODE's ray reports only a crossing of its surface)");
     length = r.tmax * length_of(r.dir);
   }
   if (!std::isfinite(length)) return not_applicable("a ray length that overflows");

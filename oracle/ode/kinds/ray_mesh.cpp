@@ -1,6 +1,6 @@
 // ray_mesh's second opinion from ODE: a dGeomRay against the mesh as a dTriMesh (trimesh.h)
 // through dCollide, the ray asked for its closest hit (dGeomRaySetClosestHit), back faces not
-// culled; its answer the face of the contact (side1; no t is compared). As in ray_aabb.cpp, only
+// culled; its answer the face of the contact (side1; no t is compared). As for the ray-box party, only
 // rays with tmin = 0 are asked, a finite ray is a segment of length tmax |dir|, an infinite one
 // a ray of twice the distance from its origin to the farthest vertex (past every point it can
 // meet the mesh at). OPCODE's RayCollider tests the faces in single precision (vertices, origin
@@ -8,7 +8,7 @@
 // two-sided. A face whose determinant |e1 . (d x e2)| is at most 1e-6 min(|e1|^2, |e2|^2) (a
 // ray grazing it within about 1e-6 rad, or a face of zero area) is never hit, and a barycentric
 // coordinate of -0 is a miss (its sign bit is tested): beyond the band, on edges and grazing rays;
-// so is a direction below 1/DBL_MAX, which dSafeNormalize3 turns into NaN (ray_aabb.cpp).
+// so is a direction below 1/DBL_MAX, which dSafeNormalize3 turns into NaN.
 #include <algorithm>
 #include <cmath>
 

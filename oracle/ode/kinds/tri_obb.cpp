@@ -1,4 +1,5 @@
-// tri_obb's second opinions from ODE: none. not wired yet (ODE's trimesh-box collider would be one: a one-triangle dTriMesh against a dBox).
+// tri_obb's second opinions from ODE: none wired yet (ODE's trimesh-box collider would be one: a
+// one-triangle dTriMesh against a dBox).
 #include "oracle/ode/parties.h"
 
 namespace cc::ode_oracle {

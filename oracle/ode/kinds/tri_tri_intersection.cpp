@@ -1,4 +1,5 @@
-// tri_tri_intersection's second opinions from ODE: none. ODE's triangle contacts are points for dynamics, not the intersection.
+// tri_tri_intersection's second opinions from ODE: none. ODE's triangle contacts are points for
+// dynamics, not the intersection.
 #include "oracle/ode/parties.h"
 
 namespace cc::ode_oracle {
