@@ -499,7 +499,7 @@ int run(const CampaignArgs& args) {
 
 void add_campaign_command(CLI::App& app, int& exit_code) {
   auto args = std::make_shared<CampaignArgs>();
-  auto* cmd = app.add_subcommand("campaign", "Run a differential campaign: the library (or a subject) vs FCL/libccd and Bullet vs exact arithmetic");
+  auto* cmd = app.add_subcommand("campaign", "Run a differential campaign: the library (or a subject) vs FCL/libccd, Bullet and ODE vs exact arithmetic");
   cmd->add_option("--query", args->queries, "A query kind to run (repeatable; default: all)")->check(query_kind_name());
   cmd->add_option("--seconds", args->seconds, "Time budget in seconds")->capture_default_str()->check(finite_above(0, 1e6));
   cmd->add_option("--seed", args->seed, "Seed of the case generator")->capture_default_str()->check(seed_value());

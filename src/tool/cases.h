@@ -17,8 +17,8 @@ namespace cc::tool {
 /// Seconds a party may take on one case in the tool's own commands before it counts as hung.
 inline constexpr double kPartyTimeLimit = 20;
 
-/// The three answers to an input, from the library, the exact reference and the peers (FCL/libccd, Bullet).
-/// With a subject under test, through evaluate_surviving_crashes: a user's code may crash or hang.
+/// The three answers to an input, from the library, the exact reference and the peers (FCL/libccd, Bullet, ODE).
+/// A subject under test is asked in its own process (harness/processes/subject_process.h).
 harness::Evaluation evaluate_with_oracles(const harness::Input& input);
 /// The same through harness::evaluate_in_child, under kPartyTimeLimit: an input on which a party
 /// crashes or hangs does not end or damage the caller (e.g. a shrink). When the child dies, the

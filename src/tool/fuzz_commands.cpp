@@ -136,7 +136,7 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
         static const exact::ExactRationalReference exact;
         ask_library_into(e, input);
         e.exact = exact.judge(input);
-        e.opinions = {{"peers (FCL/libccd, Bullet)", Opinion::Status::failed, {}, how}};
+        e.opinions = {{"peers (FCL/libccd, Bullet, ODE)", Opinion::Status::failed, {}, how}};
         e.verdict.cls = CaseClass::oracle_crash;
       }
       write_new_case_file(path, case_of(input, e, provenance, note + "; " + how));

@@ -1,5 +1,5 @@
 // The oracles the tool wires into the harness: the exact rational reference and the peers
-// (FCL/libccd and Bullet).
+// (FCL/libccd, Bullet and ODE).
 #pragma once
 
 #include "harness/processes/campaign.h"

@@ -75,10 +75,20 @@ void restore_bands(std::vector<Opinion>& opinions, const SecondOpinion& second, 
 
 std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactReference& exact, const SecondOpinion& second,
                                             double timeout_seconds) {
+  // The child asks every party but the exact reference; the library again here, which is safe:
+  // crosscheck's own library returned there on this input, and a subject is asked in a process
+  // of its own (processes/subject_process.h), not this one's nor the child's.
   ChildEnd child;
   try {
-    child = run_in_child([&](int out) { return write_all(out, answers_to_json(evaluate(input, exact, &second)).dump()) ? 0 : 1; },
-                         timeout_seconds);
+    child = run_in_child(
+        [&](int out) {
+          Evaluation e;
+          if (subject_under_test() == nullptr) ask_library_into(e, input);
+          e.opinions = library_alternatives(input);
+          for (Opinion& o : second.opinions(input)) e.opinions.push_back(std::move(o));
+          return write_all(out, opinions_to_json(e.opinions).dump()) ? 0 : 1;
+        },
+        timeout_seconds);
   } catch (const std::system_error&) {
     return std::nullopt;
   }
@@ -86,10 +96,12 @@ std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactRefer
   const std::string& text = child.output;
   Evaluation e;
   try {
-    answers_from_json(Json::parse(text), second, kind_of(input), e);
+    e.opinions = opinions_from_json(Json::parse(text), "");
+    restore_bands(e.opinions, second, kind_of(input));
   } catch (const std::exception&) {
     return std::nullopt;
   }
+  ask_library_into(e, input);
   e.exact = exact.judge(input);
   judge_into(e, input);
   return e;

@@ -29,9 +29,9 @@ void judge_into(Evaluation& e, const Input& input);
 /// Asks the library, the exact reference and (when given) the second opinions, and classifies.
 Evaluation evaluate(const Input& input, const ExactReference& exact, const SecondOpinion* second);
 
-/// The same, first run whole in a child process, which passes the library's answer (or failure)
-/// and the opinions back (answers_to_json); the exact reference, which returned there, is asked
-/// again here. A party that crashes, or is cut short by a jump out of its code (see
+/// The same, the opinions asked first in a child process (crosscheck's own library too, to
+/// prove it returns), which passes them back (as case files store them, exactly); the library
+/// (a subject in its own process) and the exact reference are asked here. A party that crashes, or is cut short by a jump out of its code (see
 /// SecondOpinion::abandoned_calls), thus neither ends nor damages the caller. Nothing when the
 /// child did not answer (it crashed, or ran past timeout_seconds when that is not 0).
 std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactReference& exact, const SecondOpinion& second,

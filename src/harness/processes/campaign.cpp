@@ -56,7 +56,7 @@ std::string_view phase_name(int phase) {
   switch (phase) {
     case in_library: return "the library";
     case in_exact: return "the exact reference";
-    case in_second_opinion: return "the second opinions (FCL/libccd, Bullet)";
+    case in_second_opinion: return "the second opinions (FCL/libccd, Bullet, ODE)";
   }
   return "between cases";
 }
@@ -82,41 +82,14 @@ bool is_finding(const Verdict& v) {
          c == CaseClass::undecided;
 }
 
-// A worker's standard output and error go to files of its own: what FCL or Eigen print there
-// is counted per case, and its first line reported, instead of reaching the terminal raw.
-bool capture(int fd) {
-  FILE* file = std::tmpfile();
-  if (file == nullptr) return false;
-  const int copy = ::dup(::fileno(file));
-  std::fclose(file);
-  if (copy < 0 || ::dup2(copy, fd) < 0) return false;
-  ::close(copy);
-  return true;
-}
-
-// The first line written to the captured file `fd` since the last call, or nothing; the
-// capture starts empty again.
-std::optional<std::string> captured(int fd) {
-  if (::lseek(fd, 0, SEEK_END) <= 0) return std::nullopt;
-  char line[200] = {};
-  const ssize_t n = ::pread(fd, line, sizeof line - 1, 0);
-  if (::ftruncate(fd, 0) != 0 || ::lseek(fd, 0, SEEK_SET) != 0) return "(unreadable)";
-  std::string text(line, n > 0 ? static_cast<std::size_t>(n) : 0);
-  text = text.substr(0, text.find('\n'));
-  for (char& ch : text) {
-    if (static_cast<unsigned char>(ch) < 0x20) ch = ' ';
-  }
-  return text;
-}
-
 // What the case made anyone print: the worker's own output files (a peer's messages), then the
 // subject's (each call that printed is also the subject's failure).
 std::optional<std::string> printed_in_case(bool captured_output) {
   std::optional<std::string> said;
   if (captured_output) {
     std::fflush(stdout);
-    if (auto err = captured(STDERR_FILENO)) said = std::move(err);
-    if (auto out = captured(STDOUT_FILENO); out && !said) said = "standard output: " + *out;
+    if (auto err = take_captured_line(STDERR_FILENO)) said = std::move(err);
+    if (auto out = take_captured_line(STDOUT_FILENO); out && !said) said = "standard output: " + *out;
   }
   if (auto subject = take_subject_output(); subject && !said) said = "the subject's " + *subject;
   return said;
@@ -129,8 +102,10 @@ constexpr int kRetired = 3;
 // The worker: runs cases until the deadline, reporting tallies and findings on `out`.
 [[noreturn]] void run_worker(int worker, const CampaignOptions& options, const Oracles& oracles, Slot& slot, int out,
                              std::int64_t deadline_ns) {
+  // Its standard output and error go to files: what FCL or Eigen print there is counted per
+  // case, and its first line reported, instead of reaching the terminal raw.
   std::fflush(stdout);
-  const bool captured_output = capture(STDERR_FILENO) && capture(STDOUT_FILENO);
+  const bool captured_output = capture_to_file(STDERR_FILENO) && capture_to_file(STDOUT_FILENO);
   const auto exact = oracles.exact();
   const auto second = oracles.second();
   const int abandoned_before = second->abandoned_calls();  // inherited: a fresh worker cannot undo it
@@ -265,7 +240,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       if (auto e = evaluate_in_child(f.input, *exact, *second)) {
         f.evaluation = std::move(*e);
       } else {
-        f.crash = "the second opinions (FCL/libccd, Bullet) failed when asked again in a child process";
+        f.crash = "the second opinions (FCL/libccd, Bullet, ODE) failed when asked again in a child process";
         phase = in_second_opinion;
       }
     }

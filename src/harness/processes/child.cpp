@@ -198,4 +198,27 @@ bool write_all(int fd, std::string_view bytes) {
   return true;
 }
 
+bool capture_to_file(int fd) {
+  std::FILE* file = std::tmpfile();
+  if (file == nullptr) return false;
+  const int copy = ::dup(::fileno(file));
+  std::fclose(file);
+  if (copy < 0 || ::dup2(copy, fd) < 0) return false;
+  ::close(copy);
+  return true;
+}
+
+std::optional<std::string> take_captured_line(int fd) {
+  if (::lseek(fd, 0, SEEK_END) <= 0) return std::nullopt;
+  char line[201] = {};
+  const ssize_t n = ::pread(fd, line, sizeof line - 1, 0);
+  if (::ftruncate(fd, 0) != 0 || ::lseek(fd, 0, SEEK_SET) != 0) return "(unreadable)";
+  std::string text(line, n > 0 ? static_cast<std::size_t>(n) : 0);
+  text = text.substr(0, text.find('\n'));
+  for (char& ch : text) {
+    if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ch = ' ';
+  }
+  return text;
+}
+
 }  // namespace cc::harness

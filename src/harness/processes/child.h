@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -87,5 +88,14 @@ ChildEnd run_program(const std::vector<std::string>& argv, const ProgramIo& io =
 
 /// Writes all of `bytes` to `fd` (retrying short writes and EINTR); false on an error.
 bool write_all(int fd, std::string_view bytes);
+
+/// Points the descriptor `fd` (standard output or error) at a new unnamed temporary file, so
+/// that what a party prints there can be looked at (take_captured_line); false when it cannot.
+bool capture_to_file(int fd);
+
+/// The first line written to the file `fd` since it was last emptied (at most 200 bytes, control
+/// characters as spaces), the file emptied again; nothing when nothing was written (or `fd` is
+/// no file).
+std::optional<std::string> take_captured_line(int fd);
 
 }  // namespace cc::harness

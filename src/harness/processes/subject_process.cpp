@@ -150,22 +150,6 @@ std::string damaged_descriptor(const std::array<DescriptorId, kKept>& ids) {
   return {};
 }
 
-// The first line written to the output file `fd` since the last call (control characters as
-// spaces, at most 200 bytes), the file emptied again; nothing when nothing was written.
-std::optional<std::string> take_output(int fd) {
-  if (::lseek(fd, 0, SEEK_END) <= 0) return std::nullopt;
-  char line[201] = {};
-  const ssize_t n = ::pread(fd, line, sizeof line - 1, 0);
-  if (::ftruncate(fd, 0) != 0) return "(unreadable)";
-  ::lseek(fd, 0, SEEK_SET);
-  std::string text(line, n > 0 ? static_cast<std::size_t>(n) : 0);
-  text = text.substr(0, text.find('\n'));
-  for (char& ch : text) {
-    if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ch = ' ';
-  }
-  return text;
-}
-
 // Sets up the server's descriptors (above); false when one cannot be made.
 bool server_descriptors(int questions, int answers) {
   std::FILE* out = std::tmpfile();
@@ -201,7 +185,7 @@ bool server_descriptors(int questions, int answers) {
     std::_Exit(kServerGaveUp);
   }
   std::fflush(nullptr);
-  (void)take_output(STDOUT_FILENO), (void)take_output(STDERR_FILENO);  // what it said while loading
+  (void)take_captured_line(STDOUT_FILENO), (void)take_captured_line(STDERR_FILENO);  // what it said while loading
   const auto ids = descriptor_ids();
   for (;;) {
     char header[8];
@@ -236,7 +220,7 @@ bool server_descriptors(int questions, int answers) {
         std::_Exit(kServerGaveUp);
       }
       for (const int fd : {STDOUT_FILENO, STDERR_FILENO}) {
-        const auto said = take_output(fd);
+        const auto said = take_captured_line(fd);
         if (!said || reply.contains("printed")) continue;
         const std::string where = kDescriptorNames[static_cast<std::size_t>(fd)];
         if (!reply.contains("failure")) reply = {{"failure", "wrote to " + where + ": \"" + *said + "\""}};

@@ -97,7 +97,7 @@ TEST(Campaign, AnExitWithStatusZeroInTheMiddleOfACaseIsAFindingNotTheEndOfTheRun
   int exits = 0;
   for (const Finding& f : r.findings) {
     EXPECT_TRUE(exits_on(f.input)) << f.crash;
-    EXPECT_EQ(f.crash, "exited with status 0 in the second opinions (FCL/libccd, Bullet)");
+    EXPECT_EQ(f.crash, "exited with status 0 in the second opinions (FCL/libccd, Bullet, ODE)");
     EXPECT_EQ(f.evaluation.verdict.cls, CaseClass::oracle_crash);
     ++exits;
   }

@@ -91,6 +91,19 @@ TEST(SubjectProcess, TheBulletExampleAnswersTheKindsItExportsAndIsNamedByItsHash
   EXPECT_THROW(bullet->ask(TriTriInput{}), std::logic_error);
 }
 
+TEST(SubjectProcess, TheOdeExampleAnswersTheKindsItExports) {
+  const auto ode = load_subject(CROSSCHECK_ODE_SUBJECT, 20);
+  EXPECT_EQ(ode->identity().kinds,
+            (std::vector<std::string>{"ray_aabb", "sphere_sphere", "aabb_aabb", "obb_obb", "tri_tri", "mesh_mesh",
+                                      "mesh_mesh_first", "broadphase", "ray_mesh"}));
+  EXPECT_TRUE(ode->ask(AabbAabbInput{kUnit, {{0.5, 0.5, 0.5}, {2, 2, 2}}}).hit);
+  EXPECT_FALSE(ode->ask(AabbAabbInput{kUnit, {{1.5, 0, 0}, {2, 1, 1}}}).hit);
+  EXPECT_TRUE(ode->ask(SphereSphereInput{{{0, 0, 0}, 1}, {{1.5, 0, 0}, 1}}).hit);
+  EXPECT_FALSE(ode->ask(SphereSphereInput{{{0, 0, 0}, 1}, {{2.5, 0, 0}, 1}}).hit);
+  EXPECT_TRUE(ode->ask(RayAabbInput{{{-1, 0.5, 0.5}, {1, 0, 0}, 0, 3}, kUnit}).hit);
+  EXPECT_FALSE(ode->ask(RayAabbInput{{{-1, 2.5, 0.5}, {1, 0, 0}, 0, 3}, kUnit}).hit);
+}
+
 TEST(SubjectProcess, TheMeshKindsHandTheMeshesOverAndNameTheFaces) {
   const auto bullet = load_subject(CROSSCHECK_BULLET_SUBJECT, 20);
   Mesh two;  // face 0 in the plane z = 2, face 1 in z = 1, legs x, y in [0, 4]
