@@ -1,6 +1,7 @@
 // crosscheck kind-files [KIND]... [--source DIR] [--check]: for each query kind, the files of the
 // source tree that name it (its name as a word, or its input type), sorted by where they are:
-// its units (*/kinds/<kind>.h, .cpp in each layer), the registry, the README, its corpora
+// its units (*/kinds/<kind>.h, .cpp in each layer), the registry, the manual (the README and
+// docs/*.md), its corpora
 // folder, the units of kinds that build on it (they include its unit's header), the places not
 // counted (tests, which mirror the units; bench, whose rows are named after the library's
 // primitives; the library, src/collide, which has no query kinds: a file or an include path
@@ -140,8 +141,8 @@ int run(const KindFilesArgs& args) {
         category = "its units";
       } else if (rel == "src/harness/kinds/registry.h") {
         category = "the registry";
-      } else if (rel == "README.md") {
-        category = "the README";
+      } else if (rel == "README.md" || (rel.starts_with("docs/") && rel.ends_with(".md"))) {
+        category = "the manual";
       } else if (!unit.empty() && text.find("kinds/" + kind + ".h\"") != std::string::npos) {
         category = "units that build on it";
       } else if (const std::string why = not_counted_because(rel); !why.empty()) {
@@ -157,11 +158,11 @@ int run(const KindFilesArgs& args) {
       const auto it = where.find(category);
       return it == where.end() ? std::size_t{0} : it->second.size();
     };
-    const std::size_t places = count("the registry") + count("the README") + count("its corpora folder") +
+    const std::size_t places = count("the registry") + count("the manual") + count("its corpora folder") +
                                count("units that build on it") + static_cast<std::size_t>(elsewhere);
     std::printf("%s (or %s): named outside its units in %zu place%s%s\n", kind.c_str(), type.c_str(), places,
                 places == 1 ? "" : "s", elsewhere > 0 ? (", " + std::to_string(elsewhere) + " of them elsewhere").c_str() : "");
-    for (const char* category : {"its units", "the registry", "the README", "its corpora folder",
+    for (const char* category : {"its units", "the registry", "the manual", "its corpora folder",
                                  "units that build on it", "elsewhere"}) {
       const auto it = where.find(category);
       if (it == where.end()) continue;
@@ -184,7 +185,7 @@ void add_kind_files_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("kind-files", "List, per query kind, the files of the source tree that name it");
   cmd->add_option("kinds", args->kinds, "Query kinds (default: all)");
   cmd->add_option("--source", args->source, "The source tree")->capture_default_str();
-  cmd->add_flag("--check", args->check, "Exit 1 if a kind is named outside its units, the registry, the README and its corpora folder");
+  cmd->add_flag("--check", args->check, "Exit 1 if a kind is named outside its units, the registry, the manual (README, docs/) and its corpora folder");
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 
