@@ -68,6 +68,10 @@ TEST(OdeSecondOpinion, SpheresTouchingAndApartByOneUlp) {
   EXPECT_TRUE(says({{{0, 0, 0}, 1}, {{2, 0, 0}, 1}}));  // touching
   EXPECT_FALSE(says({{{0, 0, 0}, 1}, {{std::nextafter(2.0, 3.0), 0, 0}, 1}}));
   EXPECT_FALSE(says({{{0, 0, 0}, 1}, {{5, 0, 0}, 1}}));
+  for (const Vec3& apart : {Vec3{0, 2.5, 0}, Vec3{0, 0, 2.5}, Vec3{-1.5, 0, -1.5}}) {  // every coordinate counts
+    EXPECT_FALSE(says({{{0, 0, 0}, 1}, {apart, 1}})) << apart.x << " " << apart.y << " " << apart.z;
+  }
+  EXPECT_TRUE(says({{{0, 0, 0}, 1}, {{0, 0, 2}, 1}}));
 }
 
 TEST(OdeSecondOpinion, RaysThroughBesideAndShortOfABox) {
