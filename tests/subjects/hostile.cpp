@@ -3,8 +3,9 @@
 // fault is in the answer) and sphere_sphere (rightly), so that a run has something to judge;
 // the fault strikes in aabb_aabb, or while loading:
 //   EXITS         exit(0) on every call          EXITS_NONZERO  _exit(3) on every call
-//   ABORTS        abort() on every call          PRINTS         printf without a newline, and
-//                                                               a line on stderr, every call
+//   ABORTS        abort() on every call          PRINTS         printf without a newline (and a
+//                                                               byte not UTF-8), and a line on
+//                                                               stderr, every call
 //   CLOSES_FDS    closes descriptors 3..1023     WRITES_FDS     writes a byte to descriptors 3..63
 //   WRONG         touching boxes are a miss      LOAD_ABORTS    abort() in a constructor
 //   LOAD_EXITS    _exit(0) in a constructor      LOAD_HANGS     crosscheck_subject_version hangs
@@ -49,7 +50,7 @@ int crosscheck_aabb_aabb(const cc_aabb* a, const cc_aabb* b) {
 #elif defined(HOSTILE_ABORTS)
   std::abort();
 #elif defined(HOSTILE_PRINTS)
-  std::printf("checking boxes at %g", a->lo.x);
+  std::printf("checking boxes at %g \xff", a->lo.x);  // no newline, and a byte that is not UTF-8
   std::fprintf(stderr, "aabb_aabb called\n");
 #elif defined(HOSTILE_CLOSES_FDS)
   for (int fd = 3; fd < 1024; ++fd) close(fd);

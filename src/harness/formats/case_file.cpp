@@ -379,7 +379,8 @@ std::optional<std::filesystem::path> write_new_case_file(const std::filesystem::
   std::string temp = (dir / ('.' + path.filename().string() + ".tmp-XXXXXX")).string();
   const int fd = ::mkstemp(temp.data());
   if (fd < 0) throw failure(dir, "cannot create a file in the folder", errno);
-  const std::string text = case_to_json(c).dump(2) + "\n";
+  // A text from elsewhere (a subject's message, a note) may hold bytes that are not UTF-8.
+  const std::string text = case_to_json(c).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
   const bool written = write_all(fd, text) && ::fchmod(fd, 0644) == 0 && ::fsync(fd) == 0;
   const int write_error = errno;
   if (::close(fd) != 0 || !written) {

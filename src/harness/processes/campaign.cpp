@@ -50,6 +50,7 @@ struct Slot {
   // The worker's tallies live here too, so that none is lost when it dies.
   std::atomic<std::uint64_t> counts[kKinds][kClasses];
   std::atomic<std::int64_t> busy_ns[kKinds];
+  std::atomic<std::uint64_t> findings_sent{0};  // "F" lines the worker (and those before it) wrote
 };
 
 std::string_view phase_name(int phase) {
@@ -143,7 +144,8 @@ constexpr int kRetired = 3;
     }
     if (is_finding(e.verdict)) {  // with the answers, as case files store them (exactly)
       write_line(out, "F " + std::to_string(static_cast<int>(kind)) + " " + std::to_string(index) + " " +
-                          answers_to_json(e).dump());
+                          answers_to_json(e).dump(-1, ' ', false, Json::error_handler_t::replace));
+      slot.findings_sent += 1;  // once the write returned, whether it failed or not
     }
     if (second->abandoned_calls() > abandoned_before) {  // later cases must not pay for it
       ::close(out);
@@ -275,7 +277,8 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
     }
     result.findings.push_back(std::move(f));
   };
-  // A worker's line: "F <kind> <case index> <opinions>" (a finding) or "E <kind> <case index>
+  std::uint64_t findings_received = 0;
+  // A worker's line: "F <kind> <case index> <answers>" (a finding) or "E <kind> <case index>
   // <first line>" (a case that wrote to standard error).
   const auto handle_line = [&](const std::string& line) {
     std::istringstream in(line);
@@ -297,6 +300,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       answers = Json::parse(rest);
     } catch (const std::exception&) {
     }
+    ++findings_received;
     record_finding(kind, index, "", idle, answers);
   };
   // The tallies: the workers' shared counters plus the cases they died on.
@@ -403,6 +407,13 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
   result.seconds = static_cast<double>(now_ns() - start_ns) * 1e-9;
   result.tallies = tallies();
   result.interrupted = interrupts() > 0;
+  // Never lose a finding silently: one a worker sent that did not arrive is a problem of the run.
+  std::uint64_t findings_sent = 0;
+  for (int w = 0; w < options.workers; ++w) findings_sent += slots[w].findings_sent;
+  if (findings_sent > findings_received) {
+    result.problems.push_back(std::to_string(findings_sent - findings_received) +
+                              " findings of the workers never reached the campaign (a worker's report was cut off)");
+  }
   munmap(slots, sizeof(Slot) * static_cast<std::size_t>(options.workers));
   return result;
 }

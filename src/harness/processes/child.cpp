@@ -215,8 +215,10 @@ std::optional<std::string> take_captured_line(int fd) {
   if (::ftruncate(fd, 0) != 0 || ::lseek(fd, 0, SEEK_SET) != 0) return "(unreadable)";
   std::string text(line, n > 0 ? static_cast<std::size_t>(n) : 0);
   text = text.substr(0, text.find('\n'));
-  for (char& ch : text) {
-    if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f) ch = ' ';
+  for (char& ch : text) {  // printable ASCII only: it is shown, and stored in JSON
+    const auto byte = static_cast<unsigned char>(ch);
+    if (byte < 0x20 || byte == 0x7f) ch = ' ';
+    if (byte > 0x7f) ch = '?';
   }
   return text;
 }

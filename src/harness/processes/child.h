@@ -94,7 +94,7 @@ bool write_all(int fd, std::string_view bytes);
 bool capture_to_file(int fd);
 
 /// The first line written to the file `fd` since it was last emptied (at most 200 bytes, control
-/// characters as spaces), the file emptied again; nothing when nothing was written (or `fd` is
+/// characters as spaces, bytes beyond ASCII as '?'), the file emptied again; nothing when nothing was written (or `fd` is
 /// no file).
 std::optional<std::string> take_captured_line(int fd);
 

@@ -227,7 +227,9 @@ bool server_descriptors(int questions, int answers) {
         reply["printed"] = where + ": " + *said;
       }
     }
-    if (!write_to_pipe(kAnswers, framed(kAnswerMagic, reply.dump()))) {
+    // A message of the subject's (a loader's, a path) may hold bytes that are not UTF-8.
+    const std::string text = reply.dump(-1, ' ', false, Json::error_handler_t::replace);
+    if (!write_to_pipe(kAnswers, framed(kAnswerMagic, text))) {
       say(notes, "file descriptor 4 (its answers to crosscheck), which it does not own, cannot be written to");
       std::_Exit(kServerGaveUp);
     }

@@ -176,7 +176,7 @@ TEST(SubjectProcess, EachFaultIsThatCallsFailureAndTheNextCallIsAnsweredAgain) {
       {"exits", "exited with status 0"},
       {"exits_nonzero", "exited with status 3"},
       {"aborts", "was killed by signal 6 (Aborted)"},
-      {"prints", "wrote to standard output: \"checking boxes at 0\""},
+      {"prints", "wrote to standard output: \"checking boxes at 0 ?\""},
       {"closes_fds", "closed file descriptor 3 (crosscheck's questions), which it does not own"},
       {"writes_fds", "wrote to file descriptor 4 (its answers to crosscheck), which it does not own"},
   };
