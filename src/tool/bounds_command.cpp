@@ -9,6 +9,7 @@
 #include "harness/generation/generate.h"
 #include "harness/formats/mesh_files.h"
 #include "oracle/exact/exact_reference.h"
+#include "tool/output_file.h"
 #include "tool/commands.h"
 #include "tool/flag_checks.h"
 
@@ -75,8 +76,12 @@ int run(const BoundsArgs& args) {
                          {"largest_case", inputs(row.largest_case)}});
   }
   if (!args.json.empty()) {
-    std::ofstream out(args.json);
-    out << nlohmann::json{{"seed", args.seed}, {"cases", args.cases}, {"rows", rows_json}}.dump(2) << "\n";
+    const std::string why =
+        write_output_file(args.json, nlohmann::json{{"seed", args.seed}, {"cases", args.cases}, {"rows", rows_json}}.dump(2) + "\n");
+    if (!why.empty()) {
+      std::fprintf(stderr, "crosscheck bounds: %s\n", why.c_str());
+      return kExitIncomplete;
+    }
   }
   return ok ? 0 : kExitFound;
 }

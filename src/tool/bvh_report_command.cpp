@@ -21,6 +21,7 @@
 #include "collide/mesh_contacts.h"
 #include "oracle/exact/exact_meshes.h"
 #include "oracle/fcl/parties.h"
+#include "tool/output_file.h"
 #include "tool/commands.h"
 #include "tool/flag_checks.h"
 
@@ -369,13 +370,12 @@ int run(const ReportArgs& args) {
               "collision determination: FCL's contacts are the deepest vertices of one triangle below the other's\n"
               "plane, not points where the triangles meet; the distance says how far from a n b they lie.\n");
   if (!args.json.empty()) {
-    std::ofstream out(args.json);
-    out << Json{{"seed", args.seed}, {"random", args.random}, {"near", args.near}, {"exact_pairs", exact_pairs},
-                {"rows", rows}, {"lazy", lazy_rows}, {"contacts", contact_json}}.dump(2)
-        << "\n";
-    if (!out) {
-      std::fprintf(stderr, "crosscheck bvh-report: cannot write %s\n", args.json.c_str());
-      return kExitBadInput;
+    const std::string why = write_output_file(
+        args.json, Json{{"seed", args.seed}, {"random", args.random}, {"near", args.near}, {"exact_pairs", exact_pairs},
+                        {"rows", rows}, {"lazy", lazy_rows}, {"contacts", contact_json}}.dump(2) + "\n");
+    if (!why.empty()) {
+      std::fprintf(stderr, "crosscheck bvh-report: %s\n", why.c_str());
+      return kExitIncomplete;
     }
   }
   return 0;

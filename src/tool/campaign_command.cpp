@@ -28,6 +28,7 @@
 #include "harness/shrinking/shrink.h"
 #include "harness/shrinking/signature.h"
 #include "harness/model/subject.h"
+#include "tool/output_file.h"
 #include "tool/cases.h"
 #include "tool/child_process.h"
 #include "tool/commands.h"
@@ -478,11 +479,9 @@ int run(const CampaignArgs& args) {
   }
   int code = 0;
   if (!args.json.empty()) {
-    std::ofstream out(args.json);
-    out << result_json(r, s, r.interrupted ? last_interrupt() : 0).dump(2) << "\n";
-    out.close();
-    if (!out) {
-      std::fprintf(stderr, "crosscheck campaign: cannot write %s: %s\n", args.json.c_str(), std::strerror(errno));
+    const std::string why = write_output_file(args.json, result_json(r, s, r.interrupted ? last_interrupt() : 0).dump(2) + "\n");
+    if (!why.empty()) {
+      std::fprintf(stderr, "crosscheck campaign: %s\n", why.c_str());
       code = kExitIncomplete;
     }
   }

@@ -99,6 +99,7 @@ CLI::Validator query_kind_name() {
 std::string unwritable_file(const std::filesystem::path& path) {
   std::error_code ec;
   if (path.empty()) return "an empty path";
+  if (path == "-") return "";  // standard output
   if (std::filesystem::is_directory(path, ec)) return path.string() + " is a folder, not a file";
   const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   if (!std::filesystem::exists(folder, ec)) return "no folder " + folder.string() + " to write " + path.string() + " in";

@@ -33,7 +33,7 @@ std::string query_kind_names();
 
 /// Why a file cannot be written at `path` (a folder there, a missing or unwritable folder
 /// above it), or "" when it can: checked by creating the file (and removing it again unless it
-/// was there before). Nothing that exists is changed.
+/// was there before). Nothing that exists is changed. "-" (standard output) can be written.
 std::string unwritable_file(const std::filesystem::path& path);
 
 /// Why a folder cannot be written at `path` (a file there or above it, no permission), or ""

@@ -1,7 +1,9 @@
 // crosscheck: differential campaigns and case triage for the collision library.
 #include <CLI/CLI.hpp>
 
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <exception>
 #include <iostream>
 
@@ -25,6 +27,18 @@ bool is_subcommand(const CLI::App& app, const std::string& word) {
     if (c->check_name(word)) return true;
   }
   return false;
+}
+
+// The command's exit status, once what it printed has reached standard output: a write that
+// failed there (a full disk, a closed pipe) is an incomplete run (exit 3) with a message, unless
+// the status already says worse.
+int finished(const CLI::App& app, int exit_code) {
+  errno = 0;
+  if (std::fflush(stdout) == 0 && !std::ferror(stdout)) return exit_code;
+  const int error = errno;
+  std::fprintf(stderr, "crosscheck%s: cannot write standard output%s%s\n", command_name(app).c_str(),
+               error != 0 ? ": " : "", error != 0 ? std::strerror(error) : "");
+  return exit_code == 0 || exit_code == cc::tool::kExitFound ? cc::tool::kExitIncomplete : exit_code;
 }
 
 }  // namespace
@@ -62,11 +76,11 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     const int code = app.exit(e);
-    return code == 0 ? 0 : cc::tool::kExitBadInput;
+    return finished(app, code == 0 ? 0 : cc::tool::kExitBadInput);
   } catch (const std::exception& e) {
     // A command that meets input it cannot use ends here, never in an abort.
     std::fprintf(stderr, "crosscheck%s: %s\n", command_name(app).c_str(), e.what());
-    return cc::tool::kExitBadInput;
+    return finished(app, cc::tool::kExitBadInput);
   }
-  return exit_code;
+  return finished(app, exit_code);
 }

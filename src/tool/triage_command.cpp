@@ -8,6 +8,7 @@
 #include "harness/model/input.h"
 #include "oracle/exact/exact_reference.h"
 #include "harness/model/subject.h"
+#include "tool/output_file.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
 #include "tool/subject_option.h"
@@ -71,14 +72,14 @@ int run(const TriageArgs& args) {
     print_cost(c->input);
     std::printf("\n");
     if (!args.svg.empty()) {
-      std::ofstream out(args.svg);
-      out << svg_of(c->input, why,
-                    file + ": " + std::string(name(harness::kind_of(c->input))) + ", " + std::string(to_string(now.verdict.cls)));
-      if (!out) {
-        std::fprintf(stderr, "crosscheck triage: cannot write %s\n", args.svg.c_str());
-        return kExitBadInput;
+      const std::string failed = write_output_file(
+          args.svg, svg_of(c->input, why,
+                           file + ": " + std::string(name(harness::kind_of(c->input))) + ", " + std::string(to_string(now.verdict.cls))));
+      if (!failed.empty()) {
+        std::fprintf(stderr, "crosscheck triage: %s\n", failed.c_str());
+        return kExitIncomplete;
       }
-      std::printf("drawn in %s\n", args.svg.c_str());
+      if (args.svg != "-") std::printf("drawn in %s\n", args.svg.c_str());
     }
   }
   return status;

@@ -131,6 +131,8 @@ TEST(CampaignSignals, SigintToItsPidAloneStopsTheWorkersAndKeepsEverything) { in
 
 TEST(CampaignSignals, SigtermToItsPidAloneStopsTheWorkersAndKeepsEverything) { interrupt_and_check({SIGTERM}, 0, 8); }
 
+TEST(CampaignSignals, SighupToItsPidAloneStopsTheWorkersAndKeepsEverything) { interrupt_and_check({SIGHUP}, 0, 8); }
+
 TEST(CampaignSignals, ASecondSigintStoresTheRestAsFoundAtOnce) { interrupt_and_check({SIGINT, SIGINT}, 0.2, 3); }
 
 // With no time left to shrink, findings are stored as found and marked so, in the case file

@@ -17,6 +17,7 @@
 #include "harness/judging/median.h"
 #include "harness/model/input.h"
 #include "harness/model/mesh_collide.h"
+#include "tool/output_file.h"
 #include "tool/scenes/rock_slide.h"
 #include "oracle/exact/exact_meshes.h"
 #include "oracle/fcl/fcl_oracle.h"
@@ -228,18 +229,19 @@ int run_scene(const SceneArgs& args, harness::BvType bv_type) {
   }
   std::printf("(FCL: the manager's update and collide, with BVHModel<OBBRSSd> collide on each candidate, all contacts)\n");
   if (!args.boxes_case.empty()) {
-    std::ofstream out(args.boxes_case);
-    out << harness::input_to_json(harness::box_frames_input(std::move(fcl_boxes))).dump() << '\n';
-    if (!out) throw std::runtime_error("cannot write " + args.boxes_case);
+    const std::string why =
+        write_output_file(args.boxes_case, harness::input_to_json(harness::box_frames_input(std::move(fcl_boxes))).dump() + "\n");
+    if (!why.empty()) throw std::runtime_error(why);
   }
   if (!args.json.empty()) {
-    std::ofstream out(args.json);
-    out << harness::Json{{"objects", args.objects}, {"frames", args.frames}, {"seed", args.seed}, {"bv", args.bv},
-                         {"bounds", args.bounds}, {"median_broad_ms", median(broad_ms)}, {"median_narrow_ms", median(narrow_ms)},
-                         {"candidates_per_frame", per_frame(candidates)}, {"colliding_per_frame", per_frame(colliding)},
-                         {"triangle_pairs_per_frame", per_frame(tri_pairs)}, {"brute_force_mismatches", brute_mismatches},
-                         {"managers", managers_json}}.dump(2)
-        << "\n";
+    const std::string why = write_output_file(
+        args.json,
+        harness::Json{{"objects", args.objects}, {"frames", args.frames}, {"seed", args.seed}, {"bv", args.bv},
+                      {"bounds", args.bounds}, {"median_broad_ms", median(broad_ms)}, {"median_narrow_ms", median(narrow_ms)},
+                      {"candidates_per_frame", per_frame(candidates)}, {"colliding_per_frame", per_frame(colliding)},
+                      {"triangle_pairs_per_frame", per_frame(tri_pairs)}, {"brute_force_mismatches", brute_mismatches},
+                      {"managers", managers_json}}.dump(2) + "\n");
+    if (!why.empty()) throw std::runtime_error(why);
   }
   bool wrong = brute_mismatches > 0;
   for (const ManagerTally& t : tallies) wrong = wrong || t.classes.count(harness::CaseClass::impl_bug) > 0;
