@@ -103,7 +103,10 @@ TEST(OutputFailures, AnOutputFileIsWholeOrAsItWas) {
 TEST(OutputFailures, ACampaignWhoseReaderGoesAwayKeepsItsJsonAndFindings) {
   const TempFolder folder("crosscheck_output_pipe");
   const fs::path json = folder.path() / "run.json";
-  const Outcome r = shell("(" + campaign(folder.path(), json.string()) + "; echo $? > status) | head -1", folder.path());
+  std::string line = "(";
+  line += campaign(folder.path(), json.string());
+  line += "; echo $? > status) | head -1";
+  const Outcome r = shell(line, folder.path());
   EXPECT_EQ(r.out.rfind("crosscheck campaign: seed", 0), 0u) << r.out;
   ASSERT_TRUE(fs::exists(json)) << r.err;
   EXPECT_GT(harness::Json::parse(text_of(json))["queries"]["aabb_aabb"]["cases"].get<int>(), 100);
