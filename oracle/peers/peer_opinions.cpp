@@ -6,6 +6,7 @@ std::vector<harness::Opinion> PeerOpinions::opinions(const harness::Input& input
   std::vector<harness::Opinion> out = fcl_.opinions(input);
   for (harness::Opinion& o : bullet_.opinions(input)) out.push_back(std::move(o));
   for (harness::Opinion& o : ode_.opinions(input)) out.push_back(std::move(o));
+  for (harness::Opinion& o : chipmunk_.opinions(input)) out.push_back(std::move(o));
   return out;
 }
 
@@ -13,9 +14,12 @@ std::vector<harness::PartyBand> PeerOpinions::parties(harness::QueryKind kind) c
   std::vector<harness::PartyBand> out = fcl_.parties(kind);
   for (harness::PartyBand& p : bullet_.parties(kind)) out.push_back(std::move(p));
   for (harness::PartyBand& p : ode_.parties(kind)) out.push_back(std::move(p));
+  for (harness::PartyBand& p : chipmunk_.parties(kind)) out.push_back(std::move(p));
   return out;
 }
 
-int PeerOpinions::abandoned_calls() const { return fcl_.abandoned_calls() + bullet_.abandoned_calls() + ode_.abandoned_calls(); }
+int PeerOpinions::abandoned_calls() const {
+  return fcl_.abandoned_calls() + bullet_.abandoned_calls() + ode_.abandoned_calls() + chipmunk_.abandoned_calls();
+}
 
 }  // namespace cc::peers

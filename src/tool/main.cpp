@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "oracle/bullet/bullet_oracle.h"
+#include "oracle/chipmunk/chipmunk_oracle.h"
 #include "oracle/ode/ode_oracle.h"
 #include "oracle/fcl/fcl_oracle.h"
 #include "tool/commands.h"
@@ -44,12 +45,13 @@ int finished(const CLI::App& app, int exit_code) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"crosscheck: the collision library (or a subject) checked against FCL/libccd, Bullet, ODE and exact rational arithmetic"};
+  CLI::App app{"crosscheck: the collision library (or a subject) checked against FCL/libccd, Bullet, ODE, Chipmunk and exact rational arithmetic"};
   app.require_subcommand(1);
   app.set_version_flag("--version", std::string("crosscheck ") + CROSSCHECK_VERSION + " (commit " + CROSSCHECK_COMMIT +
                                         "), FCL " + std::string(cc::fcl_oracle::fcl_version()) +
                                         ", Bullet " + std::string(cc::bullet_oracle::bullet_version()) +
-                                        ", ODE " + std::string(cc::ode_oracle::ode_version()));
+                                        ", ODE " + std::string(cc::ode_oracle::ode_version()) +
+                                        ", Chipmunk " + std::string(cc::chipmunk_oracle::chipmunk_version()));
   app.footer("Query kinds: " + cc::tool::query_kind_names() +
              "\nExit status: 0 done, 1 an impl_bug found (or a replayed case changed), 2 bad input.");
   int exit_code = 0;
