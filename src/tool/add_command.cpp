@@ -7,6 +7,7 @@
 #include <iterator>
 #include <optional>
 
+#include "harness/formats/json_text.h"
 #include "oracle/exact/exact_reference.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
@@ -52,10 +53,10 @@ int run(const AddArgs& args) {
   harness::Input input;
   try {
     // Mesh files are found as they will be from the stored case: from its folder, or above it.
-    input = harness::input_from_json(*kind, harness::Json::parse(text), "",
+    input = harness::input_from_json(*kind, harness::parse_json_text(text), "",
                                      std::filesystem::path(args.corpora) / args.query);
-  } catch (const harness::Json::parse_error& e) {
-    std::fprintf(stderr, "crosscheck add: %s: %s\n", source.c_str(), e.what());
+  } catch (const harness::JsonTextError& e) {
+    std::fprintf(stderr, "crosscheck add: %s: %s: %s\n", source.c_str(), e.place().c_str(), e.what());
     return kExitBadInput;
   } catch (const harness::FormatError& e) {
     std::fprintf(stderr, "crosscheck add: %s%s: %s\n", source.c_str(), e.pointer().c_str(), e.what());

@@ -352,7 +352,7 @@ void print_findings(const CampaignResult& r, const Stored& s, int max_print) {
         where = storage.path + (storage.not_shrunk.empty() ? "" : " (not shrunk: " + storage.not_shrunk + ")");
         break;
       case Storage::How::failed: where = "NOT STORED: " + storage.failure; break;
-      default: where = "already stored (" + case_file_name(f.input) + ")";
+      default: where = "already stored (" + (storage.path.empty() ? case_file_name(f.input) : storage.path) + ")";
     }
     std::printf("%s %s case %llu%s: %s\n  -> %s\n", std::string(to_string(f.evaluation.verdict.cls)).c_str(),
                 std::string(name(f.kind)).c_str(), static_cast<unsigned long long>(f.case_index),

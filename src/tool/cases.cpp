@@ -76,9 +76,24 @@ std::optional<Case> read_case_or_report(const std::filesystem::path& path) {
   try {
     return read_case_file(path);
   } catch (const CaseFileError& e) {
-    std::fprintf(stderr, "crosscheck: %s\n", e.what());
+    std::fprintf(stderr, "crosscheck: %s\n", printable(e.what()).c_str());
     return std::nullopt;
   }
+}
+
+std::string printable(std::string_view text) {
+  std::string out;
+  for (const char ch : text) {
+    const auto byte = static_cast<unsigned char>(ch);
+    if (byte < 0x20 || byte == 0x7f) {
+      char escaped[8];
+      std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
+      out += escaped;
+    } else {
+      out += ch;
+    }
+  }
+  return out;
 }
 
 namespace {
@@ -119,12 +134,12 @@ std::string table(const Explanation& e) {
 
 std::string triage_text(const std::string& title, const Case& recorded, const Evaluation& now, const Explanation& why) {
   std::ostringstream out;
-  out << title << "\n";
+  out << printable(title) << "\n";
   out << "  query      " << name(kind_of(recorded.input)) << "\n";
   out << "  class      " << to_string(now.verdict.cls);
   if (now.verdict.cls != recorded.cls) out << "   (recorded: " << to_string(recorded.cls) << ")";
   out << "\n";
-  if (!recorded.note.empty()) out << "  note       " << recorded.note << "\n";
+  if (!recorded.note.empty()) out << "  note       " << printable(recorded.note) << "\n";
   out << "  inputs     " << input_to_json(recorded.input).dump() << "\n";
   out << "  library    " << answer_text(now.library);
   if (!now.verdict.parties.empty()) out << "   [" << to_string(now.verdict.parties[0].standing) << "]";
@@ -141,7 +156,7 @@ std::string triage_text(const std::string& title, const Case& recorded, const Ev
       out << answer_text(o.answer);
       if (p != now.verdict.parties.end()) out << "   [" << to_string(p->standing) << "]";
     } else {
-      out << (o.status == Opinion::Status::failed ? "failed: " : "n/a: ") << o.detail;
+      out << (o.status == Opinion::Status::failed ? "failed: " : "n/a: ") << printable(o.detail);
     }
     out << "\n";
   }
@@ -154,7 +169,9 @@ std::string triage_text(const std::string& title, const Case& recorded, const Ev
   if (!why.deciding.empty()) out << "  deciding   " << why.deciding << " = " << format_double(why.deciding_value) << "\n";
   for (const auto& [k, v] : why.facts) out << "  " << k << ": " << v << "\n";
   for (const PartyStanding& p : now.verdict.parties) {
-    if (p.standing == Standing::wrong || p.standing == Standing::within_band) out << "  why        " << p.party << ": " << p.why << "\n";
+    if (p.standing == Standing::wrong || p.standing == Standing::within_band) {
+      out << "  why        " << printable(p.party) << ": " << printable(p.why) << "\n";
+    }
   }
   if (!why.rows.empty()) out << "  " << why.title << " (> marks the deciding one):\n" << table(why);
   return out.str();

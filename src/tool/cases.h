@@ -34,6 +34,10 @@ harness::Case case_of(const harness::Input& input, const harness::Evaluation& e,
 /// returns nothing.
 std::optional<harness::Case> read_case_or_report(const std::filesystem::path& path);
 
+/// The text with every control character (a NUL, an escape, a newline) written as \xNN: what
+/// a file says (a note, a file's name) never reaches the terminal raw nor cuts the output.
+std::string printable(std::string_view text);
+
 /// The triage of a case: the answers, the class, the margin (also in ULPs of the deciding
 /// quantity) and the reasoning of the exact reference. `recorded` is the case as stored.
 std::string triage_text(const std::string& title, const harness::Case& recorded, const harness::Evaluation& now,

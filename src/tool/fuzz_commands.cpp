@@ -131,7 +131,8 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
       const std::string how = "crashed with signal " + std::to_string(full.signal);
       if (!library.succeeded()) {
         e.verdict.cls = CaseClass::impl_bug;
-        e.verdict.parties = {{"library", Standing::wrong, how}};
+        e.library_failure = how;  // one standing for a library that failed, as everywhere
+        e.verdict.parties = {{"library", Standing::failed, how}};
       } else {
         static const exact::ExactRationalReference exact;
         ask_library_into(e, input);

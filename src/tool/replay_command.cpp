@@ -69,8 +69,7 @@ int run(const ReplayArgs& args) {
     if (args.accept && now.verdict.parties[0].standing != Standing::wrong) {
       // Explicitly asked: record today's answers, keeping the note and the provenance.
       Case updated = case_of(c->input, now, c->provenance, c->note);
-      std::filesystem::remove(file);
-      write_new_case_file(file, updated);
+      replace_case_file(file, updated);  // the new file written whole, then renamed over the old
       std::printf("ACCEPTED %s\n", file.string().c_str());
       for (const std::string& w : what) std::printf("  - %s\n", w.c_str());
       continue;

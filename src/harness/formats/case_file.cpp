@@ -11,6 +11,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "harness/formats/input_file.h"
+#include "harness/formats/json_text.h"
 #include "harness/formats/number_text.h"
 #include "harness/processes/child.h"
 
@@ -152,18 +154,6 @@ std::uint64_t fnv1a(std::string_view s) {
 }
 
 // "line L, column C" of a byte offset in a text.
-std::string line_and_column(const std::string& content, std::size_t offset) {
-  std::size_t line = 1, column = 1;
-  for (std::size_t i = 0; i < std::min(offset, content.size()); ++i) {
-    if (content[i] == '\n') {
-      ++line;
-      column = 1;
-    } else {
-      ++column;
-    }
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(column);
-}
 
 }  // namespace
 
@@ -334,24 +324,21 @@ Case case_from_json(const Json& json, const std::filesystem::path& case_dir) {
 
 Case read_case_file(const std::filesystem::path& path) {
   const std::string file = path.string();
-  if (std::filesystem::is_directory(path)) throw CaseFileError(file, "", "a folder, not a case file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw CaseFileError(file, "", "cannot read the file");
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  if (in.bad()) throw CaseFileError(file, "", "cannot read the file");
-  return read_case_text(buffer.str(), file, path.parent_path());
+  std::string text;
+  try {
+    text = read_input_file(path, kMaxCaseFileBytes, "case file");
+  } catch (const InputFileError& e) {
+    throw CaseFileError(file, "", e.what());
+  }
+  return read_case_text(text, file, path.parent_path());
 }
 
 Case read_case_text(const std::string& content, const std::string& file, const std::filesystem::path& case_dir) {
   Json json;
   try {
-    json = Json::parse(content);
-  } catch (const Json::parse_error& e) {
-    std::string message = e.what();
-    const auto at = message.find("syntax error");
-    if (at != std::string::npos) message = message.substr(at);
-    throw CaseFileError(file, line_and_column(content, e.byte == 0 ? 0 : e.byte - 1), message);
+    json = parse_json_text(content);
+  } catch (const JsonTextError& e) {
+    throw CaseFileError(file, e.place(), e.what());
   }
   try {
     return case_from_json(json, case_dir);
@@ -367,26 +354,46 @@ std::string case_file_name(const Input& input) {
   return std::string(hex) + ".json";
 }
 
-std::optional<std::filesystem::path> write_new_case_file(const std::filesystem::path& path, const Case& c) {
+namespace {
+
+CaseFileError file_failure(const std::filesystem::path& where, const std::string& what, int error) {
+  return CaseFileError(where.string(), "", what + ": " + std::strerror(error));
+}
+
+// The case written whole into a new temporary file beside `path` (its folders made), not named
+// *.json, so that a reader of the folder never takes it for a case. Returns its path.
+std::string write_temporary_case_file(const std::filesystem::path& path, const Case& c) {
   const std::filesystem::path dir = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
-  const auto failure = [](const std::filesystem::path& where, const std::string& what, int error) {
-    return CaseFileError(where.string(), "", what + ": " + std::strerror(error));
-  };
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw CaseFileError(path.string(), "", "cannot create the folder " + dir.string() + ": " + ec.message());
-  // Not named *.json: a reader of the folder never takes it for a case.
   std::string temp = (dir / ('.' + path.filename().string() + ".tmp-XXXXXX")).string();
   const int fd = ::mkstemp(temp.data());
-  if (fd < 0) throw failure(dir, "cannot create a file in the folder", errno);
+  if (fd < 0) throw file_failure(dir, "cannot create a file in the folder", errno);
   // A text from elsewhere (a subject's message, a note) may hold bytes that are not UTF-8.
   const std::string text = case_to_json(c).dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
   const bool written = write_all(fd, text) && ::fchmod(fd, 0644) == 0 && ::fsync(fd) == 0;
   const int write_error = errno;
   if (::close(fd) != 0 || !written) {
     ::unlink(temp.c_str());
-    throw failure(temp, "cannot write the file", write_error);
+    throw file_failure(temp, "cannot write the file", write_error);
   }
+  return temp;
+}
+
+}  // namespace
+
+void replace_case_file(const std::filesystem::path& path, const Case& c) {
+  const std::string temp = write_temporary_case_file(path, c);
+  if (::rename(temp.c_str(), path.c_str()) != 0) {
+    const int error = errno;
+    ::unlink(temp.c_str());
+    throw file_failure(path, "cannot replace the file", error);
+  }
+}
+
+std::optional<std::filesystem::path> write_new_case_file(const std::filesystem::path& path, const Case& c) {
+  const std::string temp = write_temporary_case_file(path, c);
   const std::string stem = path.stem().string(), extension = path.extension().string();
   const std::string key = Json{{"query", name(kind_of(c.input))}, {"inputs", input_to_json(c.input)}}.dump();
   for (int n = 1;; ++n) {
@@ -399,7 +406,7 @@ std::optional<std::filesystem::path> write_new_case_file(const std::filesystem::
     const int error = errno;
     if (error != EEXIST) {
       ::unlink(temp.c_str());
-      throw failure(target, "cannot create the file", error);
+      throw file_failure(target, "cannot create the file", error);
     }
     // Taken: by this very case (nothing to write), or by another whose name is the same hash.
     try {

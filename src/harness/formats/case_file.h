@@ -88,6 +88,11 @@ std::string case_file_name(const Input& input);
 /// and the reason, when it cannot be written.
 std::optional<std::filesystem::path> write_new_case_file(const std::filesystem::path& path, const Case& c);
 
+/// Writes the case over the file at `path`: into a temporary file beside it first, then renamed
+/// over it, so that a failed write leaves the old file as it was. Throws CaseFileError, naming
+/// the file and the reason.
+void replace_case_file(const std::filesystem::path& path, const Case& c);
+
 /// Every case file (*.json) under the directories given, recursively, sorted.
 std::vector<std::filesystem::path> case_files_under(const std::vector<std::filesystem::path>& roots);
 

@@ -4,8 +4,9 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
 #include <sstream>
+
+#include "harness/formats/input_file.h"
 
 namespace cc::harness {
 namespace {
@@ -88,15 +89,18 @@ std::vector<Vec3> exact_vertices(const std::filesystem::path& path, const std::s
 }  // namespace
 
 Mesh read_obj_file(const std::filesystem::path& path) {
-  if (std::filesystem::is_directory(path)) fail(path, "a folder, not a mesh file");
-  std::ifstream file(path, std::ios::binary);
-  if (!file) fail(path, "cannot open the file");
-  std::ostringstream buffer;
-  buffer << file.rdbuf();
-  return read_obj_text(buffer.str(), path);
+  std::string text;
+  try {
+    text = read_input_file(path, kMaxMeshFileBytes, "mesh file");
+  } catch (const InputFileError& e) {
+    fail(path, e.what());
+  }
+  return read_obj_text(text, path);
 }
 
-Mesh read_obj_text(const std::string& text, const std::filesystem::path& path) {
+Mesh read_obj_text(const std::string& with_mark, const std::filesystem::path& path) {
+  // A UTF-8 byte-order mark before the first line is no part of it.
+  const std::string text = with_mark.starts_with("\xEF\xBB\xBF") ? with_mark.substr(3) : with_mark;
   const std::vector<Vec3> vertices = exact_vertices(path, text);
 
   tinyobj::ObjReaderConfig config;

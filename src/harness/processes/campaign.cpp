@@ -267,7 +267,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
         f.evaluation.exact.margin = NAN;
         f.evaluation.exact.note = phase == in_library ? "not computed: " + f.crash : f.crash;
         f.evaluation.verdict.cls = phase == in_library ? CaseClass::impl_bug : CaseClass::undecided;
-        f.evaluation.verdict.parties = {{"library", phase == in_library ? Standing::wrong : Standing::not_applicable, f.crash}};
+        f.evaluation.verdict.parties = {{"library", phase == in_library ? Standing::failed : Standing::not_applicable, f.crash}};
       }
     }
     if (!crash.empty()) {

@@ -137,6 +137,17 @@ TEST(ObjFile, FacesAreTheFileFaceLinesFromZero) {
   }
 }
 
+TEST(ObjFile, AByteOrderMarkIsNoPartOfTheFirstVertex) {
+  const std::string body = "v 0.5 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const Mesh marked = read_obj_text("\xEF\xBB\xBF" + body, "marked.obj");
+  EXPECT_EQ(marked, read_obj_text(body, "plain.obj"));
+  EXPECT_EQ(marked.vertices.front(), (Vec3{0.5, 0, 0}));
+}
+
+TEST(ObjFile, ADeviceIsRefusedAtOnce) {
+  EXPECT_THROW(read_obj_file("/dev/zero"), MeshFileError);
+}
+
 TEST(ObjFile, SkipsFclsHeaderLine) {
   // FCL's files begin with "<vertices> <faces>", which is not OBJ.
   const auto first = words_of_lines(kMeshes / "env.obj").front();
