@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/program_run.h"
 #include "harness/formats/case_file.h"
-#include "harness/processes/child.h"
 #include "temp_folder.h"
 
 namespace cc::test {
@@ -19,23 +19,8 @@ namespace {
 
 namespace fs = std::filesystem;
 
-std::string text_of(const fs::path& file) {
-  std::ifstream in(file);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-struct Outcome {
-  int status = -1;
-  std::string out, err;
-};
-
 // A shell command line run in `folder`, its output and error kept apart.
-Outcome shell(const std::string& line, const fs::path& folder) {
-  const fs::path out = folder / "stdout", err = folder / "stderr";
-  fs::remove(out), fs::remove(err);
-  const harness::ChildEnd end = harness::run_program({"sh", "-c", line}, {folder, out, err}, 120);
-  return {end.signal != 0 ? 128 + end.signal : end.status, text_of(out), text_of(err)};
-}
+Outcome shell(const std::string& line, const fs::path& folder) { return run({"sh", "-c", line}, folder, folder); }
 
 const std::string kTool = CROSSCHECK_BINARY;
 const std::string kCorpora = std::string(CROSSCHECK_SOURCE_DIR) + "/corpora";

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/program_run.h"
 #include "harness/formats/case_file.h"
-#include "harness/processes/child.h"
 #include "temp_folder.h"
 
 namespace cc::test {
@@ -26,24 +26,11 @@ std::string subject(const std::string& fault) {
   return std::string(CROSSCHECK_SUBJECTS_DIR) + "/libtest_subject_hostile_" + fault + ".so";
 }
 
-std::string text_of(const fs::path& file) {
-  std::ifstream in(file);
-  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-}
-
-struct Outcome {
-  int status = -1;
-  std::string out, err;
-};
-
 // `crosscheck args...` from the source tree, its output and error kept apart.
 Outcome crosscheck(const std::vector<std::string>& args, const fs::path& folder) {
   std::vector<std::string> argv = {CROSSCHECK_BINARY};
   argv.insert(argv.end(), args.begin(), args.end());
-  const fs::path out = folder / "stdout", err = folder / "stderr";
-  fs::remove(out), fs::remove(err);
-  const harness::ChildEnd end = harness::run_program(argv, {CROSSCHECK_SOURCE_DIR, out, err}, 120);
-  return {end.signal != 0 ? 128 + end.signal : end.status, text_of(out), text_of(err)};
+  return run(argv, CROSSCHECK_SOURCE_DIR, folder);
 }
 
 std::vector<fs::path> case_files(const fs::path& folder) {
