@@ -1,5 +1,8 @@
 #include "harness/formats/input_json.h"
 
+#include <cmath>
+#include <limits>
+
 #include "collide/kdop.h"
 #include "harness/formats/mesh_files.h"
 #include "harness/formats/number_text.h"
@@ -176,6 +179,25 @@ class Members {
     if (!j.is_number_integer()) throw FormatError(path(name), "expected an integer");
     return j.get<std::int64_t>();
   }
+  // A whole number in [lo, hi]: a value out of range is refused, never clamped.
+  int integer_in(const std::string& name, int lo, int hi) const {
+    const Json& j = member(name);
+    const bool whole = j.is_number_integer() && !(j.is_number_unsigned() && j.get<std::uint64_t>() > std::uint64_t{1} << 62);
+    const std::int64_t value = whole ? j.get<std::int64_t>() : 0;
+    if (!whole || value < lo || value > hi) {
+      throw FormatError(path(name), "must be a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) +
+                                        "]; got " + j.dump());
+    }
+    return static_cast<int>(value);
+  }
+  // A finite number of at least `lo` (a NaN or an infinity refused).
+  double finite_at_least(const std::string& name, double lo) const {
+    const double x = number(name);
+    if (!(std::isfinite(x) && x >= lo)) {
+      throw FormatError(path(name), "must be a finite number of at least " + format_double(lo) + "; got " + format_double(x));
+    }
+    return x;
+  }
   // A name from a fixed set (an enum's to_string).
   template <class E, std::size_t N>
   E choice(const std::string& name, const E (&options)[N]) const {
@@ -216,16 +238,18 @@ void read(const Json& j, const std::string& p, MeshRef& out, Plain, const Contex
     ProceduralMesh recipe;
     recipe.shape = r.choice("procedural", kShapes);
     recipe.seed = static_cast<std::uint64_t>(r.integer("seed"));
-    recipe.resolution = static_cast<int>(r.integer("resolution"));
-    recipe.size = r.number("size");
-    recipe.thickness = r.has("thickness") ? r.number("thickness") : 0.0;
-    recipe.degenerate_percent = r.has("degenerate_percent") ? static_cast<int>(r.integer("degenerate_percent")) : 0;
+    // The generator's own ranges (collide/procedural_mesh.h), refused rather than clamped.
+    recipe.resolution = r.integer_in("resolution", 1, 200);
+    recipe.size = r.finite_at_least("size", 0);
+    recipe.thickness = r.has("thickness") ? r.finite_at_least("thickness", 0) : 0.0;
+    recipe.degenerate_percent = r.has("degenerate_percent") ? r.integer_in("degenerate_percent", 0, 100) : 0;
     out = procedural_mesh(recipe);
     return;
   }
   if (r.has("triangles")) {
     const Json& list = r.member("triangles");
     if (!list.is_array()) throw FormatError(r.path("triangles"), "expected an array of triangles");
+    if (list.empty()) throw FormatError(r.path("triangles"), "a mesh needs at least one triangle");
     Mesh mesh;
     for (std::size_t i = 0; i < list.size(); ++i) {
       const std::string at = r.path("triangles") + "/" + std::to_string(i);
@@ -255,7 +279,7 @@ void read(const Json& j, const std::string& p, LibraryBvh& l, Plain, const Conte
   if (r.has("build")) l.build.strategy = r.choice("build", kStrategies);
   if (r.has("split_axis")) l.build.axis = r.choice("split_axis", kAxes);
   if (r.has("split_point")) l.build.point = r.choice("split_point", kPoints);
-  if (r.has("leaf_size")) l.build.leaf_size = static_cast<int>(r.integer("leaf_size"));
+  if (r.has("leaf_size")) l.build.leaf_size = r.integer_in("leaf_size", 1, std::numeric_limits<int>::max());
   if (r.has("update")) l.update = r.choice("update", kUpdates);
   if (r.has("descent")) l.descent = r.choice("descent", kDescents);
 }
