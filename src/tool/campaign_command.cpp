@@ -503,9 +503,10 @@ void add_campaign_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--seconds", args->seconds, "Time budget in seconds")->capture_default_str()->check(finite_above(0, 1e6));
   cmd->add_option("--seed", args->seed, "Seed of the case generator")->capture_default_str()->check(seed_value());
   cmd->add_option("--workers", args->workers, "Worker processes")->capture_default_str()->check(whole_in(1, kMaxWorkers));
-  cmd->add_option("--timeout", args->timeout, "Seconds after which a case counts as a hang")
+  // At least a second: a shorter limit calls a case's honest work (a mesh, a slow peer) a hang.
+  cmd->add_option("--timeout", args->timeout, "Seconds after which a case counts as a hang (at least 1)")
       ->capture_default_str()
-      ->check(finite_above(0, 86400));
+      ->check(finite_in(1, 86400));
   cmd->add_option("--out-of-contract", args->out_of_contract, "Percent of cases generated out of contract")
       ->capture_default_str()
       ->check(whole_in(0, 100));

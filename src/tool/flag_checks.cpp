@@ -1,7 +1,10 @@
 #include "tool/flag_checks.h"
 
 #include <fcntl.h>
+#include <limits.h>
 #include <stdlib.h>
+#include <sys/stat.h>
+#include <sys/statvfs.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -36,6 +39,51 @@ std::string got(const std::string& text) { return "; got \"" + text + "\""; }
 
 // The text of errno, for a probe that failed.
 std::string system_error_text() { return std::strerror(errno); }
+
+// Less free space than this where output goes is refused up front: a run would end with
+// nothing stored.
+constexpr unsigned long long kLeastFreeBytes = 1 << 20;
+
+// Why `path` cannot be reached at all, or "": longer than the system allows (the whole path or
+// one name), or a symbolic link on the way that loops or leads nowhere. Names that do not exist
+// yet are fine (they will be made).
+std::string unreachable(const std::filesystem::path& path) {
+  const std::string whole = std::filesystem::absolute(path).string();
+  if (whole.size() >= PATH_MAX) {
+    return "the path is " + std::to_string(whole.size()) + " characters long, over the system's limit of " +
+           std::to_string(PATH_MAX - 1);
+  }
+  for (const auto& name : path) {
+    if (name.string().size() > NAME_MAX) {
+      return "the name \"" + name.string().substr(0, 20) + "...\" is " + std::to_string(name.string().size()) +
+             " characters long, over the system's limit of " + std::to_string(NAME_MAX);
+    }
+  }
+  std::filesystem::path prefix;
+  for (const auto& name : path) {
+    prefix /= name;
+    struct stat link {};
+    if (::lstat(prefix.c_str(), &link) != 0) return "";  // missing from here on: made later
+    if (!S_ISLNK(link.st_mode)) continue;
+    struct stat target {};
+    if (::stat(prefix.c_str(), &target) == 0) continue;
+    if (errno == ELOOP) return prefix.string() + " is a loop of symbolic links";
+    std::error_code ec;
+    return prefix.string() + " is a symbolic link to " + std::filesystem::read_symlink(prefix, ec).string() +
+           ", which does not exist";
+  }
+  return "";
+}
+
+// Why output cannot go into the existing folder `folder` for want of space, or "".
+std::string too_little_space(const std::filesystem::path& folder) {
+  struct statvfs disk {};
+  if (::statvfs(folder.c_str(), &disk) != 0) return "";  // not known: the writes will tell
+  const unsigned long long free_bytes = static_cast<unsigned long long>(disk.f_bavail) * disk.f_frsize;
+  if (free_bytes >= kLeastFreeBytes) return "";
+  return "only " + std::to_string(free_bytes) + " bytes are free on the disk of " + folder.string() +
+         " (at least 1 MiB is needed)";
+}
 
 }  // namespace
 
@@ -100,6 +148,7 @@ std::string unwritable_file(const std::filesystem::path& path) {
   std::error_code ec;
   if (path.empty()) return "an empty path";
   if (path == "-") return "";  // standard output
+  if (std::string why = unreachable(path); !why.empty()) return why;
   if (std::filesystem::is_directory(path, ec)) return path.string() + " is a folder, not a file";
   const std::filesystem::path folder = path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   if (!std::filesystem::exists(folder, ec)) return "no folder " + folder.string() + " to write " + path.string() + " in";
@@ -108,14 +157,17 @@ std::string unwritable_file(const std::filesystem::path& path) {
   // O_NONBLOCK: a FIFO without a reader is refused instead of waited on.
   const int fd = ::open(path.c_str(), O_NONBLOCK | (existed ? O_WRONLY : (O_WRONLY | O_CREAT | O_EXCL)), 0644);
   if (fd < 0) return "cannot write " + path.string() + ": " + system_error_text();
+  struct stat written {};
+  const bool regular = ::fstat(fd, &written) == 0 && S_ISREG(written.st_mode);
   ::close(fd);
   if (!existed) ::unlink(path.c_str());
-  return "";
+  return regular ? too_little_space(folder) : "";
 }
 
 std::string unwritable_folder(const std::filesystem::path& path) {
   std::error_code ec;
   if (path.empty()) return "an empty path";
+  if (std::string why = unreachable(path); !why.empty()) return why;
   // The folder itself, or the nearest ancestor that exists (where create_directories starts).
   std::filesystem::path existing = path;
   while (!std::filesystem::exists(existing, ec)) {
@@ -132,7 +184,7 @@ std::string unwritable_folder(const std::filesystem::path& path) {
   std::string probe = (existing / ".crosscheck-probe-XXXXXX").string();
   if (::mkdtemp(probe.data()) == nullptr) return "cannot write in " + existing.string() + ": " + system_error_text();
   ::rmdir(probe.c_str());
-  return "";
+  return too_little_space(existing);
 }
 
 CLI::Validator writable_file() {

@@ -32,12 +32,15 @@ CLI::Validator query_kind_name();
 std::string query_kind_names();
 
 /// Why a file cannot be written at `path` (a folder there, a missing or unwritable folder
-/// above it), or "" when it can: checked by creating the file (and removing it again unless it
-/// was there before). Nothing that exists is changed. "-" (standard output) can be written.
+/// above it, a path or name longer than the system allows, a symbolic link on the way that
+/// loops or leads nowhere, less than 1 MiB free on its disk), or "" when it can: checked by
+/// creating the file (and removing it again unless it was there before). Nothing that exists
+/// is changed. "-" (standard output) and devices (no disk to fill) can be written.
 std::string unwritable_file(const std::filesystem::path& path);
 
-/// Why a folder cannot be written at `path` (a file there or above it, no permission), or ""
-/// when it can: the folder, or its nearest existing ancestor, takes a probe that is removed.
+/// Why a folder cannot be written at `path` (a file there or above it, no permission, the
+/// length, symbolic links and free space as for a file), or "" when it can: the folder, or its
+/// nearest existing ancestor, takes a probe that is removed.
 std::string unwritable_folder(const std::filesystem::path& path);
 
 /// Validators of the two above, for output flags.

@@ -2,13 +2,19 @@
 # that its output (stdout and stderr) names the culprit. A line is
 #   STATUS | CULPRIT | ARGUMENTS [| STDIN]
 # ARGUMENTS are split as a shell would; @DATA@ is tests/data, @HERE@ this folder, @CORPORA@ the
-# corpora folder and @WORK@ a fresh scratch folder (WORK). A run that ends by a signal (a crash)
+# corpora folder and @WORK@ a fresh scratch folder (WORK), which holds symbolic links `loop` (to
+# itself) and `dangling` (to nowhere/x); @LONG_PATH@ is a relative path of 5,000 characters and
+# @LONG_NAME@ a name of 300. A run that ends by a signal (a crash)
 # or with another status fails the test, as does one past 60 s; every failing line is listed
 # before the test fails.
 cmake_minimum_required(VERSION 3.25)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/empty)
 file(WRITE ${WORK}/blocked/obb_obb "")  # a folder for case files whose query folder is a file
+file(CREATE_LINK loop ${WORK}/loop SYMBOLIC)
+file(CREATE_LINK nowhere/x ${WORK}/dangling SYMBOLIC)
+string(REPEAT "a/" 2500 long_path)
+string(REPEAT "n" 300 long_name)
 # The table's lines as a list: brackets and semicolons hidden first (both would change how a
 # CMake list splits), and brought back line by line.
 file(READ ${TABLE} text)
@@ -29,6 +35,8 @@ foreach(line IN LISTS lines)
   string(REPLACE "@HERE@" "${CMAKE_CURRENT_LIST_DIR}" line "${line}")
   string(REPLACE "@CORPORA@" "${CORPORA}" line "${line}")
   string(REPLACE "@WORK@" "${WORK}" line "${line}")
+  string(REPLACE "@LONG_PATH@" "${long_path}" line "${line}")
+  string(REPLACE "@LONG_NAME@" "${long_name}" line "${line}")
   if(NOT line MATCHES "^([0-9]+) \\| ([^|]*) \\|[ ]?([^|]*)( \\| (.*))?$")
     message(SEND_ERROR "${TABLE}: a line not of the form STATUS | CULPRIT | ARGUMENTS [| STDIN]: ${line}")
     continue()
