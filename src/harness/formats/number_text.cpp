@@ -7,7 +7,9 @@
 namespace cc::harness {
 
 std::string format_double(double x) {
-  if (std::isnan(x)) return "nan";
+  // A NaN's sign is kept (x86's arithmetic makes -nan, e.g. inf - inf, and a peer may tell
+  // them apart); its payload is not.
+  if (std::isnan(x)) return std::signbit(x) ? "-nan" : "nan";
   if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
   char buffer[64];
   const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);  // shortest round trip
@@ -15,7 +17,8 @@ std::string format_double(double x) {
 }
 
 std::optional<double> parse_double(std::string_view text) {
-  if (text == "nan") return std::numeric_limits<double>::quiet_NaN();
+  if (text == "nan" || text == "+nan") return std::numeric_limits<double>::quiet_NaN();
+  if (text == "-nan") return -std::numeric_limits<double>::quiet_NaN();
   if (text == "inf" || text == "+inf") return std::numeric_limits<double>::infinity();
   if (text == "-inf") return -std::numeric_limits<double>::infinity();
   if (!text.empty() && text.front() == '+') text.remove_prefix(1);

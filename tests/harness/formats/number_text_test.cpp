@@ -34,6 +34,15 @@ TEST(ParseDouble, ReadsBackEveryDoubleExactly) {
   }
   EXPECT_TRUE(std::isnan(*parse_double("nan")));
   EXPECT_EQ(*parse_double("-inf"), -INFINITY);
+  // A NaN keeps its sign (x86's inf - inf is -nan): a peer may answer the two differently.
+  volatile double inf = INFINITY;
+  const double made = inf - inf;
+  ASSERT_TRUE(std::isnan(made));
+  EXPECT_EQ(format_double(made), std::signbit(made) ? "-nan" : "nan");
+  EXPECT_EQ(format_double(-made), std::signbit(made) ? "nan" : "-nan");
+  EXPECT_FALSE(std::signbit(*parse_double("nan")));
+  EXPECT_TRUE(std::signbit(*parse_double("-nan")));
+  EXPECT_TRUE(std::isnan(*parse_double("-nan")));
   EXPECT_EQ(*parse_double("+2.5"), 2.5);
 }
 
