@@ -17,7 +17,7 @@ constexpr double kChipmunkTimeLimit = 10;  // seconds of CPU time: the guard is 
 harness::Opinion chipmunk_call(const std::function<harness::Opinion()>& f) {
   harness::Opinion o;
   const fcl_oracle::Guarded outcome = fcl_oracle::run_guarded(kChipmunkTimeLimit, [&] { o = f(); });
-  if (outcome == fcl_oracle::Guarded::timed_out) return harness::failed("did not return within 10 s of CPU time");
+  if (outcome == fcl_oracle::Guarded::timed_out) return harness::timed_out("did not return within 10 s of CPU time");
   if (outcome == fcl_oracle::Guarded::aborted) {
     return harness::failed("aborted: a failed Chipmunk assertion (its message is on stderr)");
   }

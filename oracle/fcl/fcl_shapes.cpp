@@ -29,7 +29,7 @@ Opinion fcl_shape_triangle(const Vec3& half, const Mat3& axes, const Vec3& cente
   const bool returned = run_with_time_limit(kLibccdTimeLimit, [&] {
     hit = solver.shapeTriangleIntersect(box, tf, to_fcl(t.v[0]), to_fcl(t.v[1]), to_fcl(t.v[2]), nullptr, nullptr, nullptr);
   });
-  if (!returned) return failed("did not return within " + std::to_string(kLibccdTimeLimit) + " s (libccd's MPR loop)");
+  if (!returned) return timed_out("did not return within " + std::to_string(kLibccdTimeLimit) + " s (libccd's MPR loop)");
   return answered(hit);
 }
 

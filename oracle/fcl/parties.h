@@ -16,6 +16,7 @@ using harness::answered;
 using harness::Band;
 using harness::BandSides;
 using harness::failed;
+using harness::timed_out;
 using harness::not_applicable;
 using harness::Opinion;
 using harness::Party;

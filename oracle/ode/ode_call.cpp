@@ -60,7 +60,7 @@ harness::Opinion ode_call(const std::function<harness::Opinion()>& f) {
   t_guarded = true;
   const fcl_oracle::Guarded outcome = fcl_oracle::run_guarded(kOdeTimeLimit, [&] { o = f(); });
   t_guarded = false;
-  if (outcome == fcl_oracle::Guarded::timed_out) return harness::failed("did not return within 10 s of CPU time");
+  if (outcome == fcl_oracle::Guarded::timed_out) return harness::timed_out("did not return within 10 s of CPU time");
   if (outcome == fcl_oracle::Guarded::aborted) {
     return harness::failed(t_message.empty() ? std::string("aborted") : t_message);
   }

@@ -62,7 +62,7 @@ int run(const AddArgs& args) {
     std::fprintf(stderr, "crosscheck add: %s%s: %s\n", source.c_str(), e.pointer().c_str(), e.what());
     return kExitBadInput;
   }
-  const harness::Evaluation e = evaluate_with_oracles(input);
+  const harness::Evaluation e = evaluate_surviving_crashes(input);
   const harness::Case c = case_of(input, e, harness::Provenance{}, args.note);
   const auto path = std::filesystem::path(args.corpora) / args.query / harness::case_file_name(input);
   std::optional<std::filesystem::path> written;

@@ -169,7 +169,7 @@ int shrink_and_store(const Finding& f, const CampaignArgs& args, const std::vect
   if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, STDERR_FILENO);
   std::signal(SIGINT, SIG_IGN);  // the terminal's Ctrl-C is the supervisor's to judge
   std::signal(SIGTERM, SIG_DFL);
-  const ShrinkResult r = shrink(f.input, f.evaluation, evaluate_with_oracles, 3000, seconds, args.corpora);
+  const ShrinkResult r = shrink(f.input, f.evaluation, evaluate_surviving_crashes, 3000, seconds, args.corpora);
   sigset_t term;
   sigemptyset(&term);
   sigaddset(&term, SIGTERM);
@@ -400,7 +400,8 @@ Json result_json(const CampaignResult& r, const Stored& s, int signal) {
                        {"grouped", s.grouped}, {"over_cap", s.over_cap}, {"failed", s.failed}};
   Json j = {{"seed", r.seed},         {"seconds", r.seconds}, {"workers", r.workers},
             {"interrupted", r.interrupted}, {"queries", queries}, {"findings", findings},
-            {"stored", stored},       {"problems", r.problems}, {"cases_writing_to_stderr", r.noisy_cases}};
+            {"stored", stored},       {"problems", r.problems}, {"cases_writing_to_stderr", r.noisy_cases},
+            {"cases_asked_again", r.asked_again}};
   if (signal != 0) j["signal"] = signal;
   return j;
 }
@@ -458,6 +459,10 @@ int run(const CampaignArgs& args) {
   if (r.noisy_cases > 0) {
     std::printf("\n%llu cases wrote to standard output or error (a peer's messages, or the subject's, captured); the first, %s\n",
                 static_cast<unsigned long long>(r.noisy_cases), elided(r.first_noise, 160).c_str());
+  }
+  if (r.asked_again > 0) {
+    std::printf("\n%llu case%s asked again: a worker was killed in it by another process (an interruption, not a finding)\n",
+                static_cast<unsigned long long>(r.asked_again), r.asked_again == 1 ? " was" : "s were");
   }
   if (r.interrupted) std::printf("\n(interrupted after %.1f s)\n", r.seconds);
   if (args.max_new > 0 && !r.findings.empty()) {

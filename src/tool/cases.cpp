@@ -31,31 +31,26 @@ const peers::PeerOpinions& peer_opinions() {
 
 }  // namespace
 
-Evaluation evaluate_with_oracles(const Input& input) { return evaluate(input, exact_reference(), &peer_opinions()); }
-
 Evaluation evaluate_surviving_crashes(const Input& input) {
-  if (auto e = evaluate_in_child(input, exact_reference(), peer_opinions(), kPartyTimeLimit)) return *e;
-  // The child crashed or hung: the library alone, in a child of its own, tells whose fault.
-  const ChildEnd library = run_in_child(
-      [&](int) {
-        try {
-          (void)ask_library(input);
-        } catch (const std::exception&) {  // an answer that is no answer is not a crash
-        }
-        return 0;
-      },
-      kPartyTimeLimit);
-  Evaluation e;
-  e.exact = exact_reference().judge(input);
-  if (!library.succeeded()) {
-    e.library_failure = "the library " + library.what() + " (in a child process)";
-    e.verdict.cls = CaseClass::impl_bug;
-    e.verdict.parties = {{"library", Standing::failed, e.library_failure}};
-    return e;
+  std::string how;
+  if (auto e = evaluate_in_child(input, exact_reference(), peer_opinions(), kPartyTimeLimit, &how)) return *e;
+  // The child died: crosscheck's library alone, in a child of its own, tells whose fault. (A
+  // subject is asked in its own server, whose failures are its answer's: the child never asks it.)
+  if (subject_under_test() == nullptr) {
+    const ChildEnd library = run_in_child(
+        [&](int) {
+          try {
+            (void)ask_library(input);
+          } catch (const std::exception&) {  // an answer that is no answer is not a crash
+          }
+          return 0;
+        },
+        kPartyTimeLimit);
+    if (!library.succeeded()) {
+      return evaluation_after_death(input, exact_reference(), peer_opinions(), DiedIn::library, library.what());
+    }
   }
-  e.verdict.cls = CaseClass::oracle_crash;
-  e.verdict.parties = {{"library", Standing::not_applicable, "an oracle crashed on this input (in a child process)"}};
-  return e;
+  return evaluation_after_death(input, exact_reference(), peer_opinions(), DiedIn::second_opinions, how);
 }
 
 Case case_of(const Input& input, const Evaluation& e, Provenance provenance, std::string note) {
@@ -156,7 +151,10 @@ std::string triage_text(const std::string& title, const Case& recorded, const Ev
       out << answer_text(o.answer);
       if (p != now.verdict.parties.end()) out << "   [" << to_string(p->standing) << "]";
     } else {
-      out << (o.status == Opinion::Status::failed ? "failed: " : "n/a: ") << printable(o.detail);
+      out << (o.status == Opinion::Status::failed      ? "failed: "
+              : o.status == Opinion::Status::timed_out ? "timed out: "
+                                                       : "n/a: ")
+          << printable(o.detail);
     }
     out << "\n";
   }

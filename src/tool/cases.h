@@ -17,13 +17,15 @@ namespace cc::tool {
 /// Seconds a party may take on one case in the tool's own commands before it counts as hung.
 inline constexpr double kPartyTimeLimit = 20;
 
-/// The three answers to an input, from the library, the exact reference and the peers (FCL/libccd, Bullet, ODE).
-/// A subject under test is asked in its own process (harness/processes/subject_process.h).
-harness::Evaluation evaluate_with_oracles(const harness::Input& input);
-/// The same through harness::evaluate_in_child, under kPartyTimeLimit: an input on which a party
-/// crashes or hangs does not end or damage the caller (e.g. a shrink). When the child dies, the
-/// library is asked alone in a child: if it crashes or hangs, an impl_bug (its failure recorded,
-/// the exact reference's verdict kept, no opinion invented); else an oracle_crash.
+/// The three answers to an input, from the library, the exact reference and the peers
+/// (FCL/libccd, Bullet, ODE, Chipmunk), as every command asks them: every party but the exact
+/// reference first in a child (harness::evaluate_in_child, under kPartyTimeLimit), so that a
+/// party that crashes or hangs neither ends nor damages the caller, and no call leaves anything
+/// behind in it (each case is answered as a fresh process answers it). A subject under test is
+/// asked in its own process (harness/processes/subject_process.h). When the child dies,
+/// crosscheck's library is asked alone in a child, and the case is rebuilt as the campaign
+/// rebuilds it (harness::evaluation_after_death): in the library if it fails there, else in
+/// the second opinions.
 harness::Evaluation evaluate_surviving_crashes(const harness::Input& input);
 
 /// A case holding an input and its evaluation.

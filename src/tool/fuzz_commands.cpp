@@ -1,7 +1,8 @@
 // crosscheck fuzz-seeds: the seed corpora of the fuzz targets, corpora/<query>/seed/: every case
 // file of that query as a record, and generated cases.
 // crosscheck fuzz-case QUERY FILE...: fuzz inputs as case files (unshrunk; `crosscheck shrink`
-// minimises them), each answered in a child process so that a crash is recorded, not suffered.
+// minimises them), each answered as every command answers a case (tool/cases.h), so that a crash
+// is recorded, not suffered.
 
 #include <cstdio>
 #include <fstream>
@@ -104,47 +105,16 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
     const Provenance provenance{"fuzz", std::nullopt, std::nullopt, hex(bytes)};
     const auto path = std::filesystem::path(args.out) / args.query / case_file_name(input);
     const std::string note = "untriaged: from fuzz input " + std::filesystem::path(file).filename().string();
-    // A full answer in a child; if that child dies, find out which party it was.
-    // A case file that cannot be written is bad input (its message on the output), not a crash.
-    constexpr int kNotStored = 254;
-    const ChildEnd full = run_in_child([&](int out) {
-      const Evaluation e = evaluate_with_oracles(input);
-      try {
-        write_new_case_file(path, case_of(input, e, provenance, note));
-      } catch (const CaseFileError& error) {
-        return write_all(out, error.what()) ? kNotStored : 255;
-      }
-      if (!write_all(out, finding_key(input, e))) return 255;
-      return static_cast<int>(e.verdict.cls);
-    });
-    if (full.status == kNotStored) {
-      std::fprintf(stderr, "crosscheck fuzz-case: %s\n", full.output.c_str());
+    // Every party answers in a child (a crash is recorded, not suffered); a case file that
+    // cannot be written is bad input.
+    const Evaluation e = evaluate_surviving_crashes(input);
+    try {
+      write_new_case_file(path, case_of(input, e, provenance, note));
+    } catch (const CaseFileError& error) {
+      std::fprintf(stderr, "crosscheck fuzz-case: %s\n", printable(error.what()).c_str());
       return kExitBadInput;
     }
-    std::string what;
-    if (full.signal != 0) {
-      const ChildEnd library = run_in_child([&](int) {
-        (void)ask_library(input);
-        return 0;
-      });
-      Evaluation e;
-      const std::string how = "crashed with signal " + std::to_string(full.signal);
-      if (!library.succeeded()) {
-        e.verdict.cls = CaseClass::impl_bug;
-        e.library_failure = how;  // one standing for a library that failed, as everywhere
-        e.verdict.parties = {{"library", Standing::failed, how}};
-      } else {
-        static const exact::ExactRationalReference exact;
-        ask_library_into(e, input);
-        e.exact = exact.judge(input);
-        e.opinions = {{"peers (FCL/libccd, Bullet, ODE)", Opinion::Status::failed, {}, how}};
-        e.verdict.cls = CaseClass::oracle_crash;
-      }
-      write_new_case_file(path, case_of(input, e, provenance, note + "; " + how));
-      what = std::string(to_string(e.verdict.cls)) + " " + path.string() + " crash " + how;
-    } else {
-      what = std::string(to_string(static_cast<CaseClass>(full.status))) + " " + path.string() + " " + full.output;
-    }
+    const std::string what = std::string(to_string(e.verdict.cls)) + " " + path.string() + " " + finding_key(input, e);
     // The input, its class, its case file, and the kind of finding it is (for grouping).
     std::printf("%s %s\n", file.c_str(), what.c_str());
   }

@@ -29,7 +29,7 @@ int run(const ShrinkArgs& args) {
                  std::string(name(harness::kind_of(c->input))).c_str());
     return kExitBadInput;
   }
-  const harness::Evaluation start = evaluate_with_oracles(c->input);
+  const harness::Evaluation start = evaluate_surviving_crashes(c->input);
   // Candidates run in a child first: one that crashes an oracle is rejected, not fatal.
   const harness::ShrinkResult r = harness::shrink(c->input, start, evaluate_surviving_crashes, args.attempts, args.seconds,
                                                      std::filesystem::path(args.file).parent_path());

@@ -66,7 +66,7 @@ int run(const TriageArgs& args) {
       status = kExitBadInput;
       continue;
     }
-    const harness::Evaluation now = evaluate_with_oracles(c->input);
+    const harness::Evaluation now = evaluate_surviving_crashes(c->input);
     const harness::Explanation why = exact.explain(c->input);
     std::printf("%s", triage_text(file, *c, now, why).c_str());
     print_cost(c->input);

@@ -122,7 +122,7 @@ Opinion fcl_broadphase(const std::string& manager, const harness::BroadphaseInpu
   // costs the whole limit.
   Opinion o;
   if (!run_with_time_limit(kBroadphaseTimeLimit, [&] { o = run_manager(manager, in); })) {
-    return failed("did not return within 50 ms of CPU time");
+    return timed_out("did not return within 50 ms of CPU time");
   }
   return o;
 }

@@ -29,7 +29,7 @@ Opinion fcl_continuous_collide(const harness::MovingObbInput& in) {
   fcl::ContinuousCollisionResultd result;
   const Guarded outcome =
       run_guarded(kLibccdTimeLimit * 10, [&] { fcl::continuousCollide(&a, a0, a1, &b, b0, b1, request, result); });
-  if (outcome == Guarded::timed_out) return failed("did not return within its time limit");
+  if (outcome == Guarded::timed_out) return timed_out("did not return within its time limit");
   if (outcome == Guarded::aborted) return failed("aborted (a failed assertion in FCL's libccd code)");
   return answered(result.is_collide);
 }

@@ -58,7 +58,7 @@ Opinion segment_box(const harness::RayAabbInput& in, Algorithm intersect) {
   ccd.mpr_tolerance = 1e-6;  // as FCL configures it for collision queries
   int result = 0;
   if (!run_with_time_limit(kLibccdTimeLimit, [&] { result = intersect(&s, &in.box, &ccd); })) {
-    return failed("did not return within " + std::to_string(kLibccdTimeLimit) + " s (a libccd loop)");
+    return timed_out("did not return within " + std::to_string(kLibccdTimeLimit) + " s (a libccd loop)");
   }
   return answered(result != 0);
 }

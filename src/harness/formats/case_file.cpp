@@ -33,6 +33,7 @@ std::string_view status_name(Opinion::Status s) {
     case Opinion::Status::answered: return "answered";
     case Opinion::Status::not_applicable: return "n/a";
     case Opinion::Status::failed: return "failed";
+    case Opinion::Status::timed_out: return "timed out";
   }
   return "?";
 }
@@ -197,8 +198,10 @@ std::vector<Opinion> opinions_from_json(const Json& opinions, const std::string&
       o.status = Opinion::Status::not_applicable;
     } else if (status == "failed") {
       o.status = Opinion::Status::failed;
+    } else if (status == "timed out") {
+      o.status = Opinion::Status::timed_out;
     } else {
-      throw FormatError(p + "/status", "expected \"answered\", \"n/a\" or \"failed\"");
+      throw FormatError(p + "/status", "expected \"answered\", \"n/a\", \"failed\" or \"timed out\"");
     }
     o.detail = opinions[i].contains("detail") ? text(opinions[i]["detail"], p + "/detail") : "";
     out.push_back(o);

@@ -266,7 +266,7 @@ Verdict classify(const Band& band_of_library, Judged judged, const Answer& libra
     for (const Opinion& o : opinions) {
       if (is_library_party(o.party) || o.status == Opinion::Status::not_applicable) {
         v.parties.push_back({o.party, Standing::not_applicable, o.detail.empty() ? exact.note : o.detail});
-      } else if (o.status == Opinion::Status::failed) {
+      } else if (o.status == Opinion::Status::failed || o.status == Opinion::Status::timed_out) {
         v.parties.push_back({o.party, Standing::failed, o.detail});
       } else if (exact.contract == Contract::unspecified && exact.decided && o.band) {
         Band band = *o.band;
@@ -300,7 +300,7 @@ Verdict classify(const Band& band_of_library, Judged judged, const Answer& libra
       v.parties.push_back({o.party, Standing::not_applicable, o.detail});
       continue;
     }
-    if (o.status == Opinion::Status::failed) {
+    if (o.status == Opinion::Status::failed || o.status == Opinion::Status::timed_out) {
       v.parties.push_back({o.party, Standing::failed, o.detail});
       (is_library_party(o.party) ? library_wrong : any_failed) = true;  // the library's own failure is a bug
       continue;

@@ -1,5 +1,6 @@
 #include "harness/judging/evaluate.h"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <system_error>
@@ -64,6 +65,48 @@ Evaluation evaluate(const Input& input, const ExactReference& exact, const Secon
   return e;
 }
 
+std::string_view died_in_name(DiedIn where) {
+  switch (where) {
+    case DiedIn::library: return "the library";
+    case DiedIn::exact: return "the exact reference";
+    case DiedIn::second_opinions: return "the second opinions (FCL/libccd, Bullet, ODE)";
+  }
+  return "?";
+}
+
+Evaluation evaluation_after_death(const Input& input, const ExactReference& exact, const SecondOpinion& second,
+                                  DiedIn where, const std::string& how) {
+  const std::string failure = how + " in " + std::string(died_in_name(where));
+  Evaluation e;
+  if (where == DiedIn::library) {
+    e.library_failure = failure;
+  } else {
+    ask_library_into(e, input);
+  }
+  if (where == DiedIn::exact) {  // nothing is invented for the party that died
+    e.exact.decided = false;
+    e.exact.margin = NAN;
+    e.exact.note = failure;
+    e.verdict.cls = CaseClass::undecided;
+    e.verdict.parties = {{"library", Standing::not_applicable, failure}};
+    return e;
+  }
+  e.exact = exact.judge(input);
+  if (where == DiedIn::second_opinions) {
+    for (const PartyBand& party : second.parties(kind_of(input))) {
+      Opinion o;
+      o.party = party.party;
+      o.status = is_time_out(how) ? Opinion::Status::timed_out : Opinion::Status::failed;
+      o.detail = failure;
+      o.band = party.band;
+      e.opinions.push_back(std::move(o));
+    }
+  }
+  judge_into(e, input);
+  if (where == DiedIn::second_opinions && e.verdict.cls != CaseClass::impl_bug) e.verdict.cls = CaseClass::oracle_crash;
+  return e;
+}
+
 void restore_bands(std::vector<Opinion>& opinions, const SecondOpinion& second, QueryKind kind) {
   const std::vector<PartyBand> declared = second.parties(kind);
   for (Opinion& o : opinions) {
@@ -74,10 +117,14 @@ void restore_bands(std::vector<Opinion>& opinions, const SecondOpinion& second, 
 }
 
 std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactReference& exact, const SecondOpinion& second,
-                                            double timeout_seconds) {
+                                            double timeout_seconds, std::string* how) {
   // The child asks every party but the exact reference; the library again here, which is safe:
   // crosscheck's own library returned there on this input, and a subject is asked in a process
   // of its own (processes/subject_process.h), not this one's nor the child's.
+  const auto fail = [how](std::string what) {
+    if (how != nullptr) *how = std::move(what);
+    return std::nullopt;
+  };
   ChildEnd child;
   try {
     child = run_in_child(
@@ -89,17 +136,17 @@ std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactRefer
           return write_all(out, opinions_to_json(e.opinions).dump()) ? 0 : 1;
         },
         timeout_seconds);
-  } catch (const std::system_error&) {
-    return std::nullopt;
+  } catch (const std::system_error& error) {
+    return fail(std::string("could not be started: ") + error.what());
   }
-  if (!child.succeeded()) return std::nullopt;
+  if (!child.succeeded()) return fail(child.what());
   const std::string& text = child.output;
   Evaluation e;
   try {
     e.opinions = opinions_from_json(Json::parse(text), "");
     restore_bands(e.opinions, second, kind_of(input));
   } catch (const std::exception&) {
-    return std::nullopt;
+    return fail("passed back answers that do not read");
   }
   ask_library_into(e, input);
   e.exact = exact.judge(input);

@@ -35,6 +35,8 @@ inline Opinion answered(Answer answer) { return said(Opinion::Status::answered, 
 inline Opinion answered(bool hit) { return answered(Answer::of(hit)); }
 inline Opinion not_applicable(std::string why) { return said(Opinion::Status::not_applicable, {}, std::move(why)); }
 inline Opinion failed(std::string what) { return said(Opinion::Status::failed, {}, std::move(what)); }
+/// Cut off at its time limit (`what`: which limit), never an answer (Opinion::Status::timed_out).
+inline Opinion timed_out(std::string what) { return said(Opinion::Status::timed_out, {}, std::move(what)); }
 
 /// Every party's opinion of `in`, in order, each with its name and band; a C++ exception from a
 /// party's call is a failed opinion.

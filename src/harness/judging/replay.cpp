@@ -19,11 +19,21 @@ std::string text_of(const Opinion& o) {
     case Opinion::Status::answered: return text_of(o.answer);
     case Opinion::Status::not_applicable: return "n/a";
     case Opinion::Status::failed: return "failed";
+    case Opinion::Status::timed_out: return "timed out";
   }
   return "?";
 }
+bool timed_out(const Opinion& o) { return o.status == Opinion::Status::timed_out; }
+// A time-out on either side is no change: it depends on the machine, not on the party.
 bool same(const Opinion& a, const Opinion& b) {
+  if (timed_out(a) || timed_out(b)) return true;
   return a.status == b.status && (a.status != Opinion::Status::answered || answer_json(a.answer) == answer_json(b.answer));
+}
+// Whether some party (the library included) timed out in the record or now: a class that
+// changed with it is no change either.
+bool any_time_out(const Case& c, const Evaluation& now) {
+  const auto in = [](const std::vector<Opinion>& os) { return std::any_of(os.begin(), os.end(), timed_out); };
+  return is_time_out(c.library_failure) || is_time_out(now.library_failure) || in(c.opinions) || in(now.opinions);
 }
 
 std::string contract_text(const ExactVerdict& v) {
@@ -38,7 +48,8 @@ std::vector<std::string> replay_changes(const Case& c, const Evaluation& now) {
   const auto library_text = [](const Answer& a, const std::string& failure) {
     return failure.empty() ? text_of(a) : "failed: " + failure;
   };
-  const bool library_same = answer_json(now.library) == answer_json(c.library) && now.library_failure == c.library_failure;
+  const bool library_same = is_time_out(c.library_failure) || is_time_out(now.library_failure) ||
+                            (answer_json(now.library) == answer_json(c.library) && now.library_failure == c.library_failure);
   // A library wrong as recorded (an impl_bug kept, with the same answer) has not changed.
   const bool known_bug = c.cls == CaseClass::impl_bug && now.verdict.cls == CaseClass::impl_bug && library_same;
   if (now.verdict.parties[0].standing == Standing::wrong && !known_bug) {
@@ -73,7 +84,7 @@ std::vector<std::string> replay_changes(const Case& c, const Evaluation& now) {
       out.push_back(after.party + " is not in the record: now " + text_of(after));
     }
   }
-  if (now.verdict.cls != c.cls) {
+  if (now.verdict.cls != c.cls && !any_time_out(c, now)) {
     out.push_back("class changed: recorded " + std::string(to_string(c.cls)) + ", now " + std::string(to_string(now.verdict.cls)));
   }
   return out;

@@ -13,7 +13,8 @@ namespace cc::harness {
 /// case was recorded an impl_bug with the same answer or failure: a known bug, unchanged); any party's
 /// whole answer (hit, parameters, pairs, frames; doubles bit for bit) or status changed, the
 /// library's and the exact reference's included; the exact contract, decidedness or margin
-/// changed; a recorded party gone or a party not in the record; the class changed.
+/// changed; a recorded party gone or a party not in the record; the class changed. A party (the
+/// library too) that timed out in the record or now has not changed, nor has the class then.
 std::vector<std::string> replay_changes(const Case& recorded, const Evaluation& now);
 
 }  // namespace cc::harness

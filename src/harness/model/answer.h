@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -35,7 +36,10 @@ struct Answer {
 /// The answer of one party other than the library's own call (the library's other ways, a
 /// second opinion) to one query.
 struct Opinion {
-  enum class Status { answered, not_applicable, failed };
+  /// timed_out: cut off at its time limit. Whether a call returns in time depends on the
+  /// machine and its load, so a time-out is never taken as an answer, and replay does not count
+  /// a time-out on either side as a change.
+  enum class Status { answered, not_applicable, failed, timed_out };
   std::string party;  // e.g. "fcl.OBBd::overlap"
   Status status = Status::not_applicable;
   Answer answer;
@@ -44,5 +48,10 @@ struct Opinion {
   /// of today gives it.
   std::optional<Band> band = std::nullopt;
 };
+
+/// The start of the failure text of the library (or a subject) cut off at its time limit, which
+/// replay takes as it takes an opinion's Status::timed_out.
+inline constexpr std::string_view kTimedOut = "timed out";
+inline bool is_time_out(std::string_view failure) { return failure.substr(0, kTimedOut.size()) == kTimedOut; }
 
 }  // namespace cc::harness

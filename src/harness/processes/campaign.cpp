@@ -51,15 +51,41 @@ struct Slot {
   std::atomic<std::uint64_t> counts[kKinds][kClasses];
   std::atomic<std::int64_t> busy_ns[kKinds];
   std::atomic<std::uint64_t> findings_sent{0};  // "F" lines the worker (and those before it) wrote
+  // A fatal signal another process sent the worker (its handler notes it), not one it raised.
+  std::atomic<int> outside_signal{0};
+  // The case to ask again, first, when a worker was killed from outside in it; kept after it
+  // is asked, so that a second such death in the same case is that case's finding.
+  std::atomic<bool> ask_again{false};
+  std::atomic<int> again_kind{-1};
+  std::atomic<std::uint64_t> again_index{0};
 };
 
-std::string_view phase_name(int phase) {
-  switch (phase) {
-    case in_library: return "the library";
-    case in_exact: return "the exact reference";
-    case in_second_opinion: return "the second opinions (FCL/libccd, Bullet, ODE)";
+// The slot of this worker, for its signal handler.
+Slot* g_worker_slot = nullptr;
+
+// A fatal signal in a worker: noted in its slot when another process sent it (kill, not a
+// fault nor the worker's own abort), then taken as it would have been (the handler is reset on
+// entry; a fault's instruction faults again on return).
+void note_fatal_signal(int signal, siginfo_t* info, void*) {
+  const bool sent = info->si_code == SI_USER || info->si_code == SI_QUEUE || info->si_code == SI_TKILL;
+  if (sent && info->si_pid != ::getpid() && g_worker_slot != nullptr) g_worker_slot->outside_signal = signal;
+  if (sent) ::raise(signal);  // pending until the handler returns, then the default action
+}
+
+void note_fatal_signals(Slot& slot) {
+  g_worker_slot = &slot;
+  slot.outside_signal = 0;
+  struct sigaction action {};
+  action.sa_sigaction = note_fatal_signal;
+  action.sa_flags = SA_SIGINFO | SA_RESETHAND;
+  sigemptyset(&action.sa_mask);
+  for (const int s : {SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, SIGTRAP, SIGSYS, SIGUSR1, SIGUSR2, SIGALRM, SIGQUIT}) {
+    sigaction(s, &action, nullptr);
   }
-  return "between cases";
+}
+
+DiedIn died_in(int phase) {
+  return phase == in_library ? DiedIn::library : (phase == in_exact ? DiedIn::exact : DiedIn::second_opinions);
 }
 
 void write_line(int fd, const std::string& line) { write_all(fd, line + "\n"); }
@@ -107,6 +133,7 @@ constexpr int kRetired = 3;
   // case, and its first line reported, instead of reaching the terminal raw.
   std::fflush(stdout);
   const bool captured_output = capture_to_file(STDERR_FILENO) && capture_to_file(STDOUT_FILENO);
+  note_fatal_signals(slot);
   const auto exact = oracles.exact();
   const auto second = oracles.second();
   const int abandoned_before = second->abandoned_calls();  // inherited: a fresh worker cannot undo it
@@ -116,9 +143,15 @@ constexpr int kRetired = 3;
     for (QueryKind k : options.kinds) {
       if (slot.busy_ns[static_cast<std::size_t>(k)] < slot.busy_ns[static_cast<std::size_t>(kind)]) kind = k;
     }
+    std::uint64_t index = 0;
+    if (slot.ask_again.exchange(false)) {  // the case its predecessor was killed in from outside
+      kind = static_cast<QueryKind>(slot.again_kind.load());
+      index = slot.again_index;
+    } else {
+      const std::uint64_t n = slot.next[static_cast<std::size_t>(kind)].fetch_add(1);
+      index = static_cast<std::uint64_t>(worker) + static_cast<std::uint64_t>(options.workers) * n;
+    }
     const auto kind_number = static_cast<std::size_t>(kind);
-    const std::uint64_t n = slot.next[kind_number].fetch_add(1);
-    const std::uint64_t index = static_cast<std::uint64_t>(worker) + static_cast<std::uint64_t>(options.workers) * n;
     const std::int64_t start = now_ns();
     slot.kind = static_cast<int>(kind);
     slot.case_index = index;
@@ -242,33 +275,14 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       if (auto e = evaluate_in_child(f.input, *exact, *second)) {
         f.evaluation = std::move(*e);
       } else {
-        f.crash = "the second opinions (FCL/libccd, Bullet, ODE) failed when asked again in a child process";
-        phase = in_second_opinion;
+        const std::string how = "died when asked again in a child process";
+        f.evaluation = evaluation_after_death(f.input, *exact, *second, DiedIn::second_opinions, how);
+        f.crash = how + " in " + std::string(died_in_name(DiedIn::second_opinions));
       }
     }
-    if (!f.crash.empty()) {
-      // Rebuild what can be rebuilt without the party that died.
-      if (phase != in_library) ask_library_into(f.evaluation, f.input);
-      if (phase != in_exact && phase != in_library) f.evaluation.exact = exact->judge(f.input);
-      if (phase == in_second_opinion) {
-        for (const PartyBand& party : second->parties(kind)) {
-          Opinion o = failed(f.crash);
-          o.party = party.party;
-          o.band = party.band;
-          f.evaluation.opinions.push_back(std::move(o));
-        }
-        judge_into(f.evaluation, f.input);
-        if (f.evaluation.verdict.cls != CaseClass::impl_bug) f.evaluation.verdict.cls = CaseClass::oracle_crash;
-      } else {
-        // Nothing is invented for the parties that were not asked: the exact reference is
-        // marked not computed, the second opinions are absent.
-        if (phase == in_library) f.evaluation.library_failure = f.crash;
-        f.evaluation.exact.decided = false;
-        f.evaluation.exact.margin = NAN;
-        f.evaluation.exact.note = phase == in_library ? "not computed: " + f.crash : f.crash;
-        f.evaluation.verdict.cls = phase == in_library ? CaseClass::impl_bug : CaseClass::undecided;
-        f.evaluation.verdict.parties = {{"library", phase == in_library ? Standing::failed : Standing::not_applicable, f.crash}};
-      }
+    if (!crash.empty()) {  // rebuilt without the party that died, as every command rebuilds it
+      f.evaluation = evaluation_after_death(f.input, *exact, *second, died_in(phase), crash);
+      f.crash = crash + " in " + std::string(died_in_name(died_in(phase)));
     }
     if (!crash.empty()) {
       KindTally& t = crashed[kind];
@@ -363,17 +377,31 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       const bool retired = end.status == kRetired && slot.phase == idle;
       // Ended by the SIGTERM or SIGKILL that stopped the run: its last case is not a finding.
       const bool stopped = w.stopped || (stop_ns != 0 && !slot.hung && end.signal == SIGTERM);
+      // Killed from outside (a SIGKILL the supervisor did not send, a signal another process
+      // sent): an interruption, not the case's fault. The case is asked again, once: a second
+      // such death in it is its finding (an out-of-memory kill, say).
+      const bool from_outside = !stopped && !retired && end.signal != 0 && !slot.hung &&
+                                (end.signal == SIGKILL || slot.outside_signal == end.signal);
+      const bool asked_before = slot.again_kind == slot.kind && slot.again_index == slot.case_index;
+      const bool interrupted = from_outside && (slot.phase == idle || !asked_before);
+      if (interrupted && slot.phase != idle) {
+        slot.again_kind = slot.kind.load();
+        slot.again_index = slot.case_index.load();
+        slot.ask_again = true;
+        slot.phase = idle;
+        ++result.asked_again;
+      }
       // An exit in the middle of a case, whatever its status (0 too), is a death in that case.
-      const bool died = (!end.succeeded() || slot.phase != idle) && !retired && !stopped;
-      if (retired && !stopping()) {
+      const bool died = (!end.succeeded() || slot.phase != idle) && !retired && !stopped && !interrupted;
+      // A worker that ended early without dying (retired, interrupted) is replaced.
+      if (!died && !stopped && !stopping()) {
         if (spawn(static_cast<int>(i))) continue;
       }
       if (died) {
         std::string what = end.what();
-        if (slot.hung) what = "hung for more than " + format_seconds(options.case_timeout_seconds);
-        const int phase = slot.phase;
-        record_finding(static_cast<QueryKind>(slot.kind.load()), slot.case_index,
-                       what + " in " + std::string(phase_name(phase)), phase, std::nullopt);
+        if (from_outside) what += ", sent by another process, in the case asked again after the same";
+        if (slot.hung) what = std::string(kTimedOut) + ": hung for more than " + format_seconds(options.case_timeout_seconds);
+        record_finding(static_cast<QueryKind>(slot.kind.load()), slot.case_index, what, slot.phase, std::nullopt);
         slot.phase = idle;
         slot.hung = false;
         if (!stopping() && spawn(static_cast<int>(i))) continue;  // its counters skip the case it died on

@@ -55,6 +55,7 @@ struct CampaignResult {
   bool interrupted = false;  // by SIGINT or SIGTERM (see interrupts.h): the workers were stopped
   std::vector<std::string> problems;  // what went wrong in the supervision (a fork that failed)
   std::uint64_t noisy_cases = 0;       // cases on which a party wrote to standard error
+  std::uint64_t asked_again = 0;       // cases asked again: their worker was killed from outside
   std::string first_noise;             // the first line one of them wrote, with its case
   std::map<QueryKind, KindTally> tallies;
   /// impl_bug, oracle_defect, oracle_crash and undecided cases, and out_of_contract ones where a

@@ -22,7 +22,7 @@ extern char** environ;
 namespace cc::harness {
 
 std::string ChildEnd::what() const {
-  if (timed_out) return "ran past its time limit";
+  if (timed_out) return "timed out: ran past its time limit";
   if (stopped) return "was stopped";
   if (signal != 0) return "killed by signal " + std::to_string(signal) + " (" + strsignal(signal) + ")";
   return "exited with status " + std::to_string(status);

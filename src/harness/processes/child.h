@@ -35,8 +35,8 @@ struct ChildEnd {
 
   /// True when it exited with status 0.
   bool succeeded() const { return status == 0; }
-  /// "exited with status N", "killed by signal N (name)", "ran past its time limit" or "was
-  /// stopped".
+  /// "exited with status N", "killed by signal N (name)", "timed out: ran past its time limit"
+  /// (harness::is_time_out) or "was stopped".
   std::string what() const;
 };
 

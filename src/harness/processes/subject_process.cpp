@@ -289,7 +289,7 @@ class IsolatedSubject final : public Subject {
     const auto deadline = Clock::now() + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(call_seconds_));
     char header[8];
     switch (read_until(server_.answers, header, sizeof header, deadline)) {
-      case Read::timed_out: throw SubjectFailure(end_server("ran past its time limit of " + seconds_text() + " s"));
+      case Read::timed_out: throw SubjectFailure(end_server(std::string(kTimedOut) + ": ran past its time limit of " + seconds_text() + " s"));
       case Read::ended: throw SubjectFailure(end_server());
       case Read::whole: break;
     }

@@ -1,17 +1,21 @@
 // The campaign's supervision: a second opinion that crashes or hangs on some cases costs the
 // campaign a worker, not the run; each such case is recorded as a finding and can be rebuilt. A
 // worker whose second opinion abandoned a call is replaced before its next case, and a finding's
-// second opinions are those its worker got, never asked in the campaign's own process.
+// second opinions are those its worker got, never asked in the campaign's own process. A worker
+// killed by another process is interrupted, not blamed: its case is asked again.
 #include "harness/processes/campaign.h"
 
 #include <gtest/gtest.h>
 #include <unistd.h>
 
 #include <csignal>
+#include <filesystem>
+#include <fstream>
 #include <functional>
 
 #include "harness/formats/input_json.h"
 #include "harness/model/library.h"
+#include "harness/processes/interrupts.h"
 #include "oracle/exact/exact_reference.h"
 
 namespace cc::harness {
@@ -238,6 +242,112 @@ TEST(Campaign, InventsNoAnswerForAPartyThatCrashed) {
     EXPECT_TRUE(f.evaluation.library_failure.empty());  // the library answered before
   }
   EXPECT_GT(crashes, 0);
+}
+
+bool killed_on(const Input& in) { return fingerprint(in) % 1999 == 5; }
+
+// Answers like FCL's AABB test, but on a few inputs another process (a grandchild it starts)
+// sends its worker `Signal` (and waits for it): the first time only, or every time. Which cases were hit is kept in
+// files of `folder`, which outlive the worker.
+template <int Signal, bool EveryTime>
+class KilledFromOutside final : public SecondOpinion {
+ public:
+  explicit KilledFromOutside(std::filesystem::path folder) : folder_(std::move(folder)) {}
+  std::vector<Opinion> opinions(const Input& in) const override {
+    if (killed_on(in)) {
+      const auto mark = folder_ / std::to_string(fingerprint(in));
+      const bool first = !std::filesystem::exists(mark);
+      std::ofstream(mark, std::ios::app) << "x";
+      if (first || EveryTime) {
+        if (fork() == 0) {
+          kill(getppid(), Signal);
+          _exit(0);
+        }
+        while (interrupts() == 0) pause();  // a fatal signal ends it here; SIGTERM asks it to stop
+      }
+    }
+    return {{"fcl.AABBd::overlap", Opinion::Status::answered, ask_library(in), "", kBand}};
+  }
+  std::vector<PartyBand> parties(QueryKind) const override { return {{"fcl.AABBd::overlap", kBand}}; }
+
+ private:
+  std::filesystem::path folder_;
+};
+
+// The number of cases killed at least once, and of kills, as the marks in `folder` tell.
+std::pair<int, int> kills_in(const std::filesystem::path& folder) {
+  int cases = 0, kills = 0;
+  for (const auto& f : std::filesystem::directory_iterator(folder)) {
+    ++cases;
+    kills += static_cast<int>(std::filesystem::file_size(f.path()));
+  }
+  return {cases, kills};
+}
+
+template <int Signal>
+void check_asked_again_once() {
+  const auto folder = std::filesystem::path(::testing::TempDir()) / ("killed_once_" + std::to_string(Signal));
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  CampaignOptions options;
+  options.seconds = 2;
+  options.seed = 11;
+  options.out_of_contract_percent = 0;
+  const CampaignResult r = aabb_campaign<KilledFromOutside<Signal, false>>(options, folder);
+  const auto [cases, kills] = kills_in(folder);
+  ASSERT_GT(cases, 0) << "no case met the kill";
+  // Each case killed was asked again and answered: no finding, no case lost.
+  EXPECT_TRUE(r.findings.empty()) << r.findings.front().crash;
+  EXPECT_EQ(kills, 2 * cases) << "each case killed is asked again once";
+  // The last one may have been cut off by the end of the run before it was asked again.
+  EXPECT_GE(r.asked_again, static_cast<std::uint64_t>(cases - 1));
+  EXPECT_LE(r.asked_again, static_cast<std::uint64_t>(cases));
+  EXPECT_EQ(r.tallies.at(QueryKind::aabb_aabb).count(CaseClass::oracle_crash), 0u);
+  std::filesystem::remove_all(folder);
+}
+
+TEST(Campaign, AWorkerSentSigsegvByAnotherProcessIsAskedAgainNotBlamed) { check_asked_again_once<SIGSEGV>(); }
+TEST(Campaign, AWorkerSentSigkillByAnotherProcessIsAskedAgainNotBlamed) { check_asked_again_once<SIGKILL>(); }
+
+// SIGTERM asks a worker to stop after its case: it answers it, and another worker takes its place.
+TEST(Campaign, AWorkerSentSigtermByAnotherProcessIsReplacedAndLosesNothing) {
+  const auto folder = std::filesystem::path(::testing::TempDir()) / "stopped_from_outside";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  CampaignOptions options;
+  options.seconds = 2;
+  options.seed = 11;
+  options.out_of_contract_percent = 0;
+  const CampaignResult r = aabb_campaign<KilledFromOutside<SIGTERM, false>>(options, folder);
+  const auto [cases, kills] = kills_in(folder);
+  ASSERT_GT(cases, 2) << "more workers stopped than the campaign has";
+  EXPECT_TRUE(r.findings.empty());
+  EXPECT_EQ(r.asked_again, 0u);
+  EXPECT_FALSE(r.interrupted);
+  EXPECT_GT(r.seconds, 1.9) << "the workers stopped from outside were not replaced";
+  std::filesystem::remove_all(folder);
+}
+
+// Killed again when asked again (the kernel's out-of-memory killer would): the case's finding.
+TEST(Campaign, ACaseKilledFromOutsideTwiceIsAFinding) {
+  const auto folder = std::filesystem::path(::testing::TempDir()) / "killed_twice";
+  std::filesystem::remove_all(folder);
+  std::filesystem::create_directories(folder);
+  CampaignOptions options;
+  options.seconds = 2;
+  options.seed = 11;
+  options.out_of_contract_percent = 0;
+  const CampaignResult r = aabb_campaign<KilledFromOutside<SIGSEGV, true>>(options, folder);
+  ASSERT_FALSE(r.findings.empty());
+  for (const Finding& f : r.findings) {
+    EXPECT_TRUE(killed_on(f.input));
+    EXPECT_EQ(f.crash,
+              "killed by signal 11 (Segmentation fault), sent by another process, in the case asked again after the same "
+              "in the second opinions (FCL/libccd, Bullet, ODE)");
+    EXPECT_EQ(f.evaluation.verdict.cls, CaseClass::oracle_crash);
+  }
+  EXPECT_GE(r.asked_again, r.findings.size());
+  std::filesystem::remove_all(folder);
 }
 
 }  // namespace

@@ -62,7 +62,7 @@ TEST(Child, AChildPastItsTimeLimitIsKilled) {
   EXPECT_EQ(end.signal, SIGKILL);
   EXPECT_GE(seconds, 0.2);
   EXPECT_LT(seconds, 10.0);
-  EXPECT_EQ(end.what(), "ran past its time limit");
+  EXPECT_EQ(end.what(), "timed out: ran past its time limit");
 }
 
 TEST(Child, StartedChildrenAreReapedOneByOne) {
@@ -120,7 +120,7 @@ TEST(Program, AProgramPastItsTimeLimitIsKilledWithWhatItStarted) {
   EXPECT_EQ(end.signal, SIGKILL);
   EXPECT_GE(seconds, 0.2);
   EXPECT_LT(seconds, 10.0);
-  EXPECT_EQ(end.what(), "ran past its time limit");
+  EXPECT_EQ(end.what(), "timed out: ran past its time limit");
 }
 
 TEST(Program, StopKillsItWithoutAPipeToo) {

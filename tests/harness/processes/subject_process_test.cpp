@@ -191,7 +191,7 @@ TEST(SubjectProcess, EachFaultIsThatCallsFailureAndTheNextCallIsAnsweredAgain) {
 
   const auto misbehaving = load_subject(test_subject("misbehaving"), 0.3);
   EXPECT_TRUE(contains(failure(*misbehaving, AabbAabbInput{{{0.25, 0, 0}, {1, 1, 1}}, kUnit}), "killed by signal 11"));
-  EXPECT_EQ(failure(*misbehaving, AabbAabbInput{{{0.75, 0, 0}, {1, 1, 1}}, kUnit}), "ran past its time limit of 0.3 s");
+  EXPECT_EQ(failure(*misbehaving, AabbAabbInput{{{0.75, 0, 0}, {1, 1, 1}}, kUnit}), "timed out: ran past its time limit of 0.3 s");
   EXPECT_TRUE(contains(failure(*misbehaving, SphereSphereInput{{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}), "returned 7"));
   EXPECT_EQ(failure(*misbehaving, kTouching), "(answered)");
   EXPECT_TRUE(misbehaving->ask(kTouching).hit);
