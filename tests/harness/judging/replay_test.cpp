@@ -144,5 +144,32 @@ TEST(ReplayChanges, AKnownBugWithTheSameAnswerIsUnchanged) {
   expect_one_change_naming(r, "class changed: recorded impl_bug, now agree");
 }
 
+// Whether a call returns within its time limit depends on the machine and its load: a time-out
+// on either side is no change, nor is the class that changed with it; anything else still is.
+TEST(ReplayChanges, ATimeOutOnEitherSideIsNoChange) {
+  Recorded r = recorded();
+  r.now.opinions[1].status = Opinion::Status::timed_out;
+  r.now.verdict.cls = CaseClass::oracle_crash;
+  EXPECT_TRUE(replay_changes(r.c, r.now).empty());
+  r = recorded();
+  r.c.opinions[1].status = Opinion::Status::timed_out;
+  r.c.opinions[1].answer = {};
+  r.c.cls = CaseClass::oracle_crash;
+  EXPECT_TRUE(replay_changes(r.c, r.now).empty());
+  r = recorded();
+  r.c.library_failure = "timed out: hung for more than 2 s in the library";
+  r.c.cls = CaseClass::impl_bug;
+  EXPECT_TRUE(replay_changes(r.c, r.now).empty());
+  // A failure that is no time-out is still a change, and so is another party's answer.
+  r = recorded();
+  r.now.opinions[1].status = Opinion::Status::failed;
+  r.now.verdict.cls = CaseClass::oracle_crash;
+  EXPECT_EQ(replay_changes(r.c, r.now).size(), 2u);
+  r = recorded();
+  r.now.opinions[1].status = Opinion::Status::timed_out;
+  r.now.opinions[0].answer.params[0] = 1.25;
+  expect_one_change_naming(r, "library.test_ray_aabbs changed its behaviour");
+}
+
 }  // namespace
 }  // namespace cc::harness

@@ -1,0 +1,83 @@
+// A case whose process died is rebuilt one way, whoever rebuilds it (the campaign, any command):
+// the party that died fails, nothing is invented for the parties not asked, and a time-out is
+// never an answer. A child that dies says how.
+#include "harness/judging/evaluate.h"
+
+#include <gtest/gtest.h>
+
+#include <csignal>
+
+#include "harness/model/library.h"
+#include "oracle/exact/exact_reference.h"
+
+namespace cc::harness {
+namespace {
+
+constexpr Band kBand{0, BandSides::exact, 0, "comparisons of inputs only: exact"};
+
+// Two parties that crash the process they are asked in.
+class Crashing final : public SecondOpinion {
+ public:
+  std::vector<Opinion> opinions(const Input&) const override {
+    std::raise(SIGSEGV);
+    return {};
+  }
+  std::vector<PartyBand> parties(QueryKind) const override { return {{"fcl.AABBd::overlap", kBand}, {"bullet.x", kBand}}; }
+};
+
+const Input kOverlapping = AabbAabbInput{{{0, 0, 0}, {1, 1, 1}}, {{0.5, 0.5, 0.5}, {2, 2, 2}}};
+
+TEST(EvaluationAfterDeath, InTheSecondOpinionsEachFailedTheLibraryAndExactAnswered) {
+  const exact::ExactRationalReference exact;
+  const Evaluation e =
+      evaluation_after_death(kOverlapping, exact, Crashing{}, DiedIn::second_opinions, "killed by signal 11 (Segmentation fault)");
+  EXPECT_TRUE(e.library_failure.empty());
+  EXPECT_TRUE(e.library.hit);
+  EXPECT_TRUE(e.exact.decided);
+  ASSERT_EQ(e.opinions.size(), 2u);
+  for (const Opinion& o : e.opinions) {
+    EXPECT_EQ(o.status, Opinion::Status::failed);
+    EXPECT_EQ(o.detail, "killed by signal 11 (Segmentation fault) in the second opinions (FCL/libccd, Bullet, ODE)");
+  }
+  EXPECT_EQ(e.verdict.cls, CaseClass::oracle_crash);
+}
+
+TEST(EvaluationAfterDeath, ATimeOutIsTimedOutNeverAnAnswer) {
+  const exact::ExactRationalReference exact;
+  const Evaluation e = evaluation_after_death(kOverlapping, exact, Crashing{}, DiedIn::second_opinions,
+                                              "timed out: ran past its time limit");
+  for (const Opinion& o : e.opinions) EXPECT_EQ(o.status, Opinion::Status::timed_out);
+  EXPECT_EQ(e.verdict.cls, CaseClass::oracle_crash);
+}
+
+TEST(EvaluationAfterDeath, InTheLibraryItsFailureAndNoOpinion) {
+  const exact::ExactRationalReference exact;
+  const Evaluation e = evaluation_after_death(kOverlapping, exact, Crashing{}, DiedIn::library, "exited with status 3");
+  EXPECT_EQ(e.library_failure, "exited with status 3 in the library");
+  EXPECT_TRUE(e.opinions.empty());
+  EXPECT_TRUE(e.exact.decided);
+  EXPECT_EQ(e.verdict.cls, CaseClass::impl_bug);
+  ASSERT_FALSE(e.verdict.parties.empty());
+  EXPECT_EQ(e.verdict.parties[0].standing, Standing::failed);
+}
+
+TEST(EvaluationAfterDeath, InTheExactReferenceNoVerdict) {
+  const exact::ExactRationalReference exact;
+  const Evaluation e = evaluation_after_death(kOverlapping, exact, Crashing{}, DiedIn::exact, "killed by signal 6 (Aborted)");
+  EXPECT_TRUE(e.library.hit);
+  EXPECT_FALSE(e.exact.decided);
+  EXPECT_TRUE(std::isnan(e.exact.margin));
+  EXPECT_EQ(e.exact.note, "killed by signal 6 (Aborted) in the exact reference");
+  EXPECT_TRUE(e.opinions.empty());
+  EXPECT_EQ(e.verdict.cls, CaseClass::undecided);
+}
+
+TEST(EvaluateInChild, AChildThatDiesSaysHowAndLeavesTheCallerWhole) {
+  const exact::ExactRationalReference exact;
+  std::string how;
+  EXPECT_FALSE(evaluate_in_child(kOverlapping, exact, Crashing{}, 0, &how).has_value());
+  EXPECT_EQ(how, "killed by signal 11 (Segmentation fault)");
+}
+
+}  // namespace
+}  // namespace cc::harness
