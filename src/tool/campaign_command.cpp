@@ -135,13 +135,22 @@ struct Stored {
   std::vector<int> complex_before, complex_after;  // values not small integers or halves
 };
 
+// The case file of a finding, with `e` as its answers: the finding's own evaluation only when
+// `e` is it or the finding is a death (rebuilt as every command rebuilds it); otherwise `e` is
+// asked again here, as every command asks a case, since a worker answers in a process with a
+// history and replay in a fresh one. When a party answered differently there, the note says
+// what the worker saw.
 Case stored_case(const Finding& f, const Input& input, const Evaluation& e, const CampaignArgs& args,
-                 std::string not_shrunk) {
+                 std::string not_shrunk, bool ask_again) {
   const Provenance provenance{"campaign", args.seed, f.case_index, "seed " + std::to_string(args.seed)};
   const harness::Subject* subject = harness::subject_under_test();
-  Case c = case_of(input, e, provenance,
-                   "untriaged: " + (subject != nullptr ? "subject " + subject->path() + ": " : std::string()) +
-                       signature_of(f.kind, e) + (f.crash.empty() ? "" : "; " + f.crash));
+  const Evaluation stored = ask_again && f.crash.empty() ? evaluate_surviving_crashes(input) : e;
+  std::string note = "untriaged: " + (subject != nullptr ? "subject " + subject->path() + ": " : std::string()) +
+                     signature_of(f.kind, stored) + (f.crash.empty() ? "" : "; " + f.crash);
+  if (signature_of(f.kind, stored) != signature_of(f.kind, e)) {
+    note += "; its worker saw " + signature_of(f.kind, e) + " (a party answers differently in a fresh process)";
+  }
+  Case c = case_of(input, stored, provenance, note);
   c.not_shrunk = std::move(not_shrunk);
   return c;
 }
@@ -179,7 +188,8 @@ int shrink_and_store(const Finding& f, const CampaignArgs& args, const std::vect
     line += "K " + stored_case_path(args.corpora, case_file_name(r.input)) + "\n";
   } else {
     try {
-      Case c = stored_case(f, r.input, r.evaluation, args, "");
+      // Shrinking asked each candidate it kept as every command does; none kept: the worker's answers.
+      Case c = stored_case(f, r.input, r.evaluation, args, "", r.accepted == 0);
       if (r.out_of_time) c.note += "; shrinking ran out of time (it may shrink further)";
       const auto target = case_path(f, r.input, args);
       const auto path = write_new_case_file(target, c);
@@ -191,11 +201,12 @@ int shrink_and_store(const Finding& f, const CampaignArgs& args, const std::vect
   return harness::write_all(report, line) ? 0 : 1;
 }
 
-// Writes a finding as found, here: no party is asked again.
+// Writes a finding as found, here, asked again as every command asks it (but after a second
+// interrupt: then as the worker answered it, at once).
 void store_as_found(const Finding& f, const CampaignArgs& args, const std::string& why, Storage& s) {
   try {
     const auto target = case_path(f, f.input, args);
-    const auto path = write_new_case_file(target, stored_case(f, f.input, f.evaluation, args, why));
+    const auto path = write_new_case_file(target, stored_case(f, f.input, f.evaluation, args, why, interrupts() < 2));
     s.how = path ? Storage::How::written : Storage::How::known;
     s.path = path ? path->string() : target.string();
     if (path) s.not_shrunk = why;
