@@ -1,0 +1,36 @@
+# Checks the readers' fuzz dictionaries (DICTS, a list of files): every line a comment or an entry
+# libFuzzer reads (name="bytes", with \\, \" and \xNN escapes), and the case-file one reaching each
+# limit of the JSON reader: nesting past 64 levels, a number past a double's range, a key given
+# twice, a NUL, a byte-order mark.
+cmake_minimum_required(VERSION 3.25)
+foreach(dict IN LISTS DICTS)
+  # Brackets and semicolons hidden first: both would change how a CMake list splits.
+  file(READ ${dict} text)
+  string(REPLACE "[" "@LB@" hidden "${text}")
+  string(REPLACE "]" "@RB@" hidden "${hidden}")
+  string(REPLACE ";" "@SC@" hidden "${hidden}")
+  string(REPLACE "\n" ";" lines "${hidden}")
+  set(entries 0)
+  foreach(line IN LISTS lines)
+    if(line MATCHES "^#" OR line STREQUAL "")
+      continue()
+    endif()
+    if(NOT line MATCHES "^[A-Za-z0-9_]+=\"([^\"\\\\]|\\\\[\\\\\"]|\\\\x[0-9a-f][0-9a-f])*\"$")
+      message(FATAL_ERROR "${dict}: not an entry libFuzzer reads: ${line}")
+    endif()
+    math(EXPR entries "${entries} + 1")
+  endforeach()
+  if(entries LESS 10)
+    message(FATAL_ERROR "${dict}: only ${entries} entries")
+  endif()
+  if(dict MATCHES "case_file")
+    foreach(needed "[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[[" "1e999" "\\\"class\\\": \\\"agree\\\", \\\"class\\\""
+                   "\\x00" "\\xef\\xbb\\xbf")
+      string(FIND "${text}" "${needed}" at)
+      if(at EQUAL -1)
+        message(FATAL_ERROR "${dict}: nothing reaches the limit ${needed}")
+      endif()
+    endforeach()
+  endif()
+  message("${dict}: ${entries} entries")
+endforeach()
