@@ -76,21 +76,6 @@ std::optional<Case> read_case_or_report(const std::filesystem::path& path) {
   }
 }
 
-std::string printable(std::string_view text) {
-  std::string out;
-  for (const char ch : text) {
-    const auto byte = static_cast<unsigned char>(ch);
-    if (byte < 0x20 || byte == 0x7f) {
-      char escaped[8];
-      std::snprintf(escaped, sizeof escaped, "\\x%02x", byte);
-      out += escaped;
-    } else {
-      out += ch;
-    }
-  }
-  return out;
-}
-
 namespace {
 
 std::string answer_text(const Answer& a) {

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "harness/formats/case_file.h"
+#include "harness/formats/printable.h"
 #include "harness/judging/evaluate.h"
 #include "harness/model/explanation.h"
 
@@ -35,10 +36,6 @@ harness::Case case_of(const harness::Input& input, const harness::Evaluation& e,
 /// Reads a case file; on bad input prints one line naming the file and the place to stderr and
 /// returns nothing.
 std::optional<harness::Case> read_case_or_report(const std::filesystem::path& path);
-
-/// The text with every control character (a NUL, an escape, a newline) written as \xNN: what
-/// a file says (a note, a file's name) never reaches the terminal raw nor cuts the output.
-std::string printable(std::string_view text);
 
 /// The triage of a case: the answers, the class, the margin (also in ULPs of the deciding
 /// quantity) and the reasoning of the exact reference. `recorded` is the case as stored.

@@ -67,7 +67,8 @@ void add_shrink_command(CLI::App& app, int& exit_code) {
                   "A file, or a directory (ending in /) for a file named by the shrunk case's hash (default: beside it)")
       ->check(CLI::Validator(
           [](std::string& out) {
-            const bool folder = (!out.empty() && out.back() == '/') || std::filesystem::is_directory(out);
+            std::error_code ec;  // a path that cannot be looked at is refused below, with why
+            const bool folder = (!out.empty() && out.back() == '/') || std::filesystem::is_directory(out, ec);
             return folder ? unwritable_folder(out) : unwritable_file(out);
           },
           "FILE or FOLDER/ (writable)"));

@@ -3,8 +3,10 @@
 #   STATUS | CULPRIT | ARGUMENTS [| STDIN]
 # ARGUMENTS are split as a shell would; @DATA@ is tests/data, @HERE@ this folder, @CORPORA@ the
 # corpora folder and @WORK@ a fresh scratch folder (WORK), which holds symbolic links `loop` (to
-# itself) and `dangling` (to nowhere/x); @LONG_PATH@ is a relative path of 5,000 characters and
-# @LONG_NAME@ a name of 300. A run that ends by a signal (a crash)
+# itself) and `dangling` (to nowhere/x), a FIFO `fifo.json`, a sparse `oversized.json` of 65 MiB,
+# `device_case/mesh_device.json` whose mesh is /dev/zero and `looping_folder/` with a case and a
+# link `up` to its parent; @LONG_PATH@ is a relative path of 5,000 characters and @LONG_NAME@ a
+# name of 300. A run that ends by a signal (a crash)
 # or with another status fails the test, as does one past 60 s; every failing line is listed
 # before the test fails.
 cmake_minimum_required(VERSION 3.25)
@@ -13,6 +15,16 @@ file(MAKE_DIRECTORY ${WORK}/empty)
 file(WRITE ${WORK}/blocked/obb_obb "")  # a folder for case files whose query folder is a file
 file(CREATE_LINK loop ${WORK}/loop SYMBOLIC)
 file(CREATE_LINK nowhere/x ${WORK}/dangling SYMBOLIC)
+# Files no test data can hold: a FIFO, a sparse file past the 64 MiB limit, a mesh that is a device.
+execute_process(COMMAND mkfifo ${WORK}/fifo.json)
+file(TOUCH ${WORK}/oversized.json)
+execute_process(COMMAND truncate -s 65M ${WORK}/oversized.json)
+file(COPY ${DATA}/hostile/mesh_device.json DESTINATION ${WORK}/device_case)
+file(COPY ${DATA}/hostile/meshes/triangle.obj DESTINATION ${WORK}/device_case/meshes)
+file(CREATE_LINK /dev/zero ${WORK}/device_case/meshes/device.obj SYMBOLIC)
+file(MAKE_DIRECTORY ${WORK}/looping_folder)
+file(COPY ${CORPORA}/sphere_sphere/00a705170f21ad00.json DESTINATION ${WORK}/looping_folder)
+file(CREATE_LINK .. ${WORK}/looping_folder/up SYMBOLIC)
 string(REPEAT "a/" 2500 long_path)
 string(REPEAT "n" 300 long_name)
 # The table's lines as a list: brackets and semicolons hidden first (both would change how a

@@ -5,6 +5,8 @@
 
 #include <cstddef>
 #include <stdexcept>
+
+#include "harness/formats/printable.h"
 #include <string>
 
 #include "harness/formats/input_json.h"
@@ -17,7 +19,9 @@ inline constexpr std::size_t kMaxJsonDepth = 64;
 /// A document refused: where ("line 3, column 14", or a JSON pointer such as "/inputs/box") and why.
 class JsonTextError : public std::runtime_error {
  public:
-  JsonTextError(std::string place, const std::string& message) : std::runtime_error(message), place_(std::move(place)) {}
+  /// The message is made printable (harness/formats/printable.h): it may quote the text.
+  JsonTextError(std::string place, const std::string& message)
+      : std::runtime_error(printable(message)), place_(std::move(place)) {}
   const std::string& place() const { return place_; }
 
  private:

@@ -7,15 +7,17 @@
 #include <sstream>
 
 #include "harness/formats/input_file.h"
+#include "harness/formats/printable.h"
 
 namespace cc::harness {
 namespace {
 
+// Every message is printable: a token of the file may hold a NUL or an escape.
 [[noreturn]] void fail(const std::filesystem::path& path, const std::string& what) {
-  throw MeshFileError(path.string() + ": " + what);
+  throw MeshFileError(printable(path.string() + ": " + what));
 }
 [[noreturn]] void fail(const std::filesystem::path& path, std::size_t line, const std::string& what) {
-  throw MeshFileError(path.string() + ":" + std::to_string(line) + ": " + what);
+  throw MeshFileError(printable(path.string() + ":" + std::to_string(line) + ": " + what));
 }
 
 // tinyobjloader's messages end in newlines and name lines as "(line 6.)"; one line of text.
