@@ -291,8 +291,10 @@ Stored store_findings(const CampaignResult& r, const CampaignArgs& args, double 
     } else {
       harness::ChildEnd child;
       try {
+        // In a group of its own: a stop reaches the children it asks the parties in.
         child = harness::run_in_child([&](int out) { return shrink_and_store(f, args, known, share, out); },
-                                      share + kShrinkSlackSeconds, [] { return interrupts() > 1; });
+                                      share + kShrinkSlackSeconds, [] { return interrupts() > 1; },
+                                      harness::ChildGroup::own);
       } catch (const std::system_error& e) {  // no process to shrink in: stored as found
         store_as_found(f, args, std::string("cannot shrink: ") + e.what(), storage);
         continue;

@@ -2,7 +2,7 @@
 // output (a full disk) ends the command with exit 3 and a message; "-" as an output file is
 // standard output, never a file named "-"; an output file on a full disk is reported, leaves
 // no partial file and loses no finding; a campaign whose output's reader goes away (| head -1)
-// still writes its JSON and its findings.
+// still writes its JSON and its findings; a disk with too little room is refused up front.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -99,6 +99,29 @@ TEST(OutputFailures, ACampaignWhoseReaderGoesAwayKeepsItsJsonAndFindings) {
   const int status = std::stoi(text_of(folder.path() / "status"));
   EXPECT_EQ(status, 3) << "the lost output is reported: " << r.err;
   EXPECT_NE(r.err.find("cannot write standard output"), std::string::npos) << r.err;
+}
+
+// A disk with too little room is refused before any work, for a folder and for a file alike: a
+// 512 KiB tmpfs, where this machine lets the test mount one (as root); skipped elsewhere.
+TEST(OutputFailures, ADiskWithTooLittleRoomIsRefusedBeforeAnyWork) {
+  const TempFolder folder("crosscheck_output_tiny_disk");
+  const fs::path tiny = folder.path() / "tiny";
+  fs::create_directories(tiny);
+  if (shell("mount -t tmpfs -o size=512k tmpfs " + tiny.string(), folder.path()).status != 0) {
+    GTEST_SKIP() << "no tmpfs can be mounted here";
+  }
+  const Outcome out = shell(kTool + " campaign --seconds 30 --query sphere_sphere --workers 1 --out " + (tiny / "found").string(),
+                            folder.path());
+  const Outcome json = shell(kTool + " campaign --seconds 30 --query sphere_sphere --workers 1 --max-new 0 --json " +
+                                 (tiny / "run.json").string(),
+                             folder.path());
+  shell("umount " + tiny.string(), folder.path());
+  EXPECT_EQ(out.status, 2) << out.err;
+  EXPECT_NE(out.err.find("--out: only 524288 bytes are free on the disk of " + tiny.string() + " (at least 1 MiB is needed)"),
+            std::string::npos)
+      << out.err;
+  EXPECT_EQ(json.status, 2) << json.err;
+  EXPECT_NE(json.err.find("--json: only 524288 bytes are free"), std::string::npos) << json.err;
 }
 
 }  // namespace

@@ -28,7 +28,7 @@ std::string ChildEnd::what() const {
   return "exited with status " + std::to_string(status);
 }
 
-Child start_child(const std::function<int(int out)>& f) {
+Child start_child(const std::function<int(int out)>& f, ChildGroup group) {
   int fds[2];
   if (pipe(fds) != 0) throw std::system_error(errno, std::generic_category(), "pipe");
   std::fflush(nullptr);
@@ -38,7 +38,9 @@ Child start_child(const std::function<int(int out)>& f) {
     ::close(fds[0]), ::close(fds[1]);
     throw std::system_error(error, std::generic_category(), "fork");
   }
+  const bool own = group == ChildGroup::own;
   if (pid == 0) {
+    if (own) ::setpgid(0, 0);
     ::close(fds[0]);
     int status = kChildThrew;
     try {
@@ -47,8 +49,9 @@ Child start_child(const std::function<int(int out)>& f) {
     }
     std::_Exit(status);
   }
+  if (own) ::setpgid(pid, pid);  // here too: the group exists before any signal is sent to it
   ::close(fds[1]);
-  return {pid, fds[0]};
+  return {pid, fds[0], own};
 }
 
 namespace {
@@ -179,8 +182,9 @@ ChildEnd finish_child(Child child, double timeout_seconds, const std::function<b
   return *end;
 }
 
-ChildEnd run_in_child(const std::function<int(int out)>& f, double timeout_seconds, const std::function<bool()>& stop) {
-  return finish_child(start_child(f), timeout_seconds, stop);
+ChildEnd run_in_child(const std::function<int(int out)>& f, double timeout_seconds, const std::function<bool()>& stop,
+                      ChildGroup group) {
+  return finish_child(start_child(f, group), timeout_seconds, stop);
 }
 
 ChildEnd run_program(const std::vector<std::string>& argv, const ProgramIo& io, double timeout_seconds,

@@ -43,11 +43,16 @@ struct ChildEnd {
 /// The exit status of a child whose function threw (a C++ exception never leaves the child).
 inline constexpr int kChildThrew = 70;
 
+/// Whether a child started by start_child stays in the caller's process group, or leads one of
+/// its own, so that finish_child's signals reach the processes it starts too (none is left
+/// running when it is stopped) and a terminal's Ctrl-C does not.
+enum class ChildGroup { callers, own };
+
 /// Forks a child that runs f(out), `out` being the write end of the pipe to the parent, and
 /// exits with f's return value by std::_Exit (no atexit handlers or static destructors run in
 /// the child), or with kChildThrew when f throws. Buffered stdio output is flushed first, so
 /// nothing is written twice. Throws std::system_error when the pipe or the fork fails.
-Child start_child(const std::function<int(int out)>& f);
+Child start_child(const std::function<int(int out)>& f, ChildGroup group = ChildGroup::callers);
 
 /// Waits for a child to end (reaps it) and says how. `out` is left to the caller.
 ChildEnd wait_child(pid_t pid);
@@ -80,7 +85,7 @@ ChildEnd finish_child(Child child, double timeout_seconds = 0, const std::functi
 
 /// start_child then finish_child: f's exit status, the signal that ended it, and its output.
 ChildEnd run_in_child(const std::function<int(int out)>& f, double timeout_seconds = 0,
-                      const std::function<bool()>& stop = {});
+                      const std::function<bool()>& stop = {}, ChildGroup group = ChildGroup::callers);
 
 /// start_program then finish_child.
 ChildEnd run_program(const std::vector<std::string>& argv, const ProgramIo& io = {}, double timeout_seconds = 0,

@@ -298,8 +298,10 @@ void check_asked_again_once() {
   ASSERT_GT(cases, 0) << "no case met the kill";
   // Each case killed was asked again and answered: no finding, no case lost.
   EXPECT_TRUE(r.findings.empty()) << r.findings.front().crash;
-  EXPECT_EQ(kills, 2 * cases) << "each case killed is asked again once";
-  // The last one may have been cut off by the end of the run before it was asked again.
+  // Each case killed is asked again once; the last may have been cut off by the end of the run
+  // before it was asked again.
+  EXPECT_LE(kills, 2 * cases);
+  EXPECT_GE(kills, 2 * cases - 1);
   EXPECT_GE(r.asked_again, static_cast<std::uint64_t>(cases - 1));
   EXPECT_LE(r.asked_again, static_cast<std::uint64_t>(cases));
   EXPECT_EQ(r.tallies.at(QueryKind::aabb_aabb).count(CaseClass::oracle_crash), 0u);

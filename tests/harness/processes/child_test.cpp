@@ -65,6 +65,48 @@ TEST(Child, AChildPastItsTimeLimitIsKilled) {
   EXPECT_EQ(end.what(), "timed out: ran past its time limit");
 }
 
+// A child in a group of its own is stopped with the children it started: none is left running.
+// (Its grandchild's pid comes back through a pipe of the test's, as the child is busy.)
+TEST(Child, AChildInItsOwnGroupIsStoppedWithWhatItStarted) {
+  int pids[2];
+  ASSERT_EQ(::pipe(pids), 0);
+  const auto start = std::chrono::steady_clock::now();
+  bool asked = false;
+  const ChildEnd end = run_in_child(
+      [&](int) {
+        const pid_t grandchild = ::fork();
+        if (grandchild == 0) {
+          for (;;) pause();
+        }
+        (void)!::write(pids[1], &grandchild, sizeof grandchild);
+        for (;;) pause();
+        return 0;
+      },
+      0,
+      [&] {
+        const bool stop = asked;
+        asked = true;  // stopped at the second question, 50 ms in
+        return stop;
+      },
+      ChildGroup::own);
+  pid_t grandchild = 0;
+  ASSERT_EQ(::read(pids[0], &grandchild, sizeof grandchild), static_cast<ssize_t>(sizeof grandchild));
+  ::close(pids[0]), ::close(pids[1]);
+  EXPECT_TRUE(end.stopped);
+  EXPECT_EQ(end.signal, SIGTERM);
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 5.0);
+  // The grandchild got the SIGTERM too: it is gone, or a zombie about to be reaped.
+  for (int tries = 0; tries < 100 && ::kill(grandchild, 0) == 0; ++tries) {
+    std::ifstream stat("/proc/" + std::to_string(grandchild) + "/stat");
+    std::string pid, name, state;
+    if (!(stat >> pid >> name >> state) || state == "Z") break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  }
+  std::ifstream stat("/proc/" + std::to_string(grandchild) + "/stat");
+  std::string pid, name, state;
+  EXPECT_TRUE(!(stat >> pid >> name >> state) || state == "Z") << "the grandchild still runs: " << state;
+}
+
 TEST(Child, StartedChildrenAreReapedOneByOne) {
   const Child a = start_child([](int out) { return write_all(out, "a") ? 3 : 1; });
   const Child b = start_child([](int out) { return write_all(out, "b") ? 4 : 1; });
