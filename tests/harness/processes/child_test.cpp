@@ -10,12 +10,16 @@
 
 #include <chrono>
 #include <csignal>
+#include <cstdlib>
+#include <functional>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <system_error>
 #include <thread>
 
 #include "../../temp_folder.h"
+#include "harness/model/answer.h"
 
 namespace cc::harness {
 namespace {
@@ -29,6 +33,49 @@ TEST(Child, GivesItsExitStatusAndItsOutput) {
   EXPECT_EQ(end.output, "42 apples");
   EXPECT_EQ(end.what(), "exited with status 7");
   EXPECT_TRUE(run_in_child([](int) { return 0; }).succeeded());
+}
+
+// Every way a child can end, and what its parent is told: the status, the signal, the flags and
+// the one line a finding records. One row per way.
+struct EndingRow {
+  const char* how;
+  std::function<int(int)> body;
+  double timeout;
+  int status, signal;
+  bool timed_out, succeeded;
+  const char* what;
+};
+
+TEST(Child, EveryWayToEndIsToldAsItHappened) {
+  const EndingRow rows[] = {
+      {"returns 0", [](int) { return 0; }, 0, 0, 0, false, true, "exited with status 0"},
+      {"returns 9", [](int) { return 9; }, 0, 9, 0, false, false, "exited with status 9"},
+      {"returns 255", [](int) { return 255; }, 0, 255, 0, false, false, "exited with status 255"},
+      {"throws", [](int) -> int { throw std::runtime_error("x"); }, 0, kChildThrew, 0, false, false, "exited with status 70"},
+      {"throws no exception type", [](int) -> int { throw 3; }, 0, kChildThrew, 0, false, false, "exited with status 70"},
+      {"exit(4)", [](int) -> int { std::exit(4); }, 0, 4, 0, false, false, "exited with status 4"},
+      {"_Exit(0) early", [](int) -> int { std::_Exit(0); }, 0, 0, 0, false, true, "exited with status 0"},
+      {"abort()", [](int) -> int { std::abort(); }, 0, -1, SIGABRT, false, false, "killed by signal 6 (Aborted)"},
+      {"SIGSEGV", [](int) { return std::raise(SIGSEGV); }, 0, -1, SIGSEGV, false, false, "killed by signal 11 (Segmentation fault)"},
+      {"SIGBUS", [](int) { return std::raise(SIGBUS); }, 0, -1, SIGBUS, false, false, "killed by signal 7 (Bus error)"},
+      {"SIGFPE", [](int) { return std::raise(SIGFPE); }, 0, -1, SIGFPE, false, false, "killed by signal 8 (Floating point exception)"},
+      {"SIGILL", [](int) { return std::raise(SIGILL); }, 0, -1, SIGILL, false, false, "killed by signal 4 (Illegal instruction)"},
+      {"SIGKILL", [](int) { return std::raise(SIGKILL); }, 0, -1, SIGKILL, false, false, "killed by signal 9 (Killed)"},
+      {"SIGTERM", [](int) { return std::raise(SIGTERM); }, 0, -1, SIGTERM, false, false, "killed by signal 15 (Terminated)"},
+      {"SIGPIPE on a closed pipe", [](int out) { ::close(out); int p[2]; (void)!::pipe(p); ::close(p[0]); return write_all(p[1], "x") ? 0 : 1; },
+       0, -1, SIGPIPE, false, false, "killed by signal 13 (Broken pipe)"},
+      {"runs past its limit", [](int) { for (;;) pause(); return 0; }, 0.1, -1, SIGKILL, true, false, "timed out: ran past its time limit"},
+  };
+  for (const EndingRow& row : rows) {
+    const ChildEnd end = run_in_child(row.body, row.timeout);
+    EXPECT_EQ(end.status, row.status) << row.how;
+    EXPECT_EQ(end.signal, row.signal) << row.how;
+    EXPECT_EQ(end.timed_out, row.timed_out) << row.how;
+    EXPECT_FALSE(end.stopped) << row.how;
+    EXPECT_EQ(end.succeeded(), row.succeeded) << row.how;
+    EXPECT_EQ(end.what(), row.what) << row.how;
+    EXPECT_EQ(is_time_out(end.what()), row.timed_out) << row.how;
+  }
 }
 
 TEST(Child, ReadsMoreOutputThanAPipeHolds) {

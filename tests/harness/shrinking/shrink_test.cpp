@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <set>
+#include <tuple>
 
 #include "harness/generation/generate.h"
 #include "harness/judging/evaluate.h"
 #include "harness/formats/input_json.h"
+#include "harness/formats/number_text.h"
 #include "harness/model/library.h"
 #include "harness/model/mesh_query.h"
 #include "harness/shrinking/shrink_faces.h"
@@ -211,6 +214,73 @@ TEST(Shrink, AMeshCaseLosesFacesAndKeepsItsDisagreement) {
   EXPECT_LE(m.a.mesh->size(), 2u);
   EXPECT_LE(m.b.mesh->size(), 2u);
   EXPECT_LT(complex_values(r.input), complex_values(start));
+}
+
+// Every signed permutation matrix in a case's JSON under `key` ("rotation": a pose's, which
+// must stay proper; "axes": a box's), as its determinant and its text.
+void simple_frames_in(const Json& j, const std::string& key, std::vector<std::pair<int, std::string>>& out) {
+  if (j.is_object()) {
+    for (auto it = j.begin(); it != j.end(); ++it) {
+      if (it.key() == key && it.value().is_array() && it.value().size() == 3) {
+        double m[3][3];
+        bool simple = true;  // a signed permutation: one +-1 in each row and each column
+        int row_ones[3] = {0, 0, 0}, column_ones[3] = {0, 0, 0};
+        for (int r = 0; r < 3; ++r) {
+          for (int c = 0; c < 3; ++c) {
+            m[r][c] = *parse_double(it.value()[r][c].get<std::string>());
+            simple &= m[r][c] == 0 || m[r][c] == 1 || m[r][c] == -1;
+            row_ones[r] += m[r][c] != 0;
+            column_ones[c] += m[r][c] != 0;
+          }
+        }
+        for (int i = 0; i < 3; ++i) simple &= row_ones[i] == 1 && column_ones[i] == 1;
+        const double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) -
+                           m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                           m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+        if (simple) out.emplace_back(static_cast<int>(det), it.value().dump());
+      } else {
+        simple_frames_in(it.value(), key, out);
+      }
+    }
+  } else if (j.is_array()) {
+    for (const Json& e : j) simple_frames_in(e, key, out);
+  }
+}
+
+// The shrinker's candidate frames: a pose's rotation only ever becomes one of the 24 proper
+// signed permutations (determinant +1: a reflection would turn a mesh inside out), and it tries
+// every one of them; a box's axes may take all 48.
+TEST(Shrink, CandidatePosesAreProperRotationsAndReachAllOfThem) {
+  // Two one-triangle meshes, a turned about z by 30 degrees; a box pair with turned axes.
+  const Json mesh_mesh = Json::parse(R"({
+    "a": {"triangles": [[["0", "0", "0"], ["1", "0", "0"], ["0", "1", "0"]]]},
+    "pose_a": {"rotation": [["0.8660254037844387", "-0.5", "0"], ["0.5", "0.8660254037844387", "0"], ["0", "0", "1"]],
+               "translation": ["0.25", "0", "0"]},
+    "b": {"triangles": [[["0", "0", "0"], ["0", "1", "0"], ["0", "0", "1"]]]},
+    "pose_b": {"rotation": [["1", "0", "0"], ["0", "1", "0"], ["0", "0", "1"]], "translation": ["0.5", "0", "0"]},
+    "library": {"bv": "obb", "build": "top_down", "split_axis": "longest_side", "split_point": "midpoint",
+                "leaf_size": 1, "update": "approximate", "descent": "first_model"}})");
+  for (const auto& [kind, key, expected] : {std::tuple{QueryKind::mesh_mesh, "rotation", 24},
+                                            std::tuple{QueryKind::obb_obb, "axes", 48}}) {
+    RandomChoices choices(3);
+    const Input start = kind == QueryKind::mesh_mesh ? input_from_json(kind, mesh_mesh, "", ".") : generate(kind, choices);
+    std::set<std::string> tried;
+    int improper = 0;
+    const Evaluator reject_all = [&](const Input& in) {
+      std::vector<std::pair<int, std::string>> frames;
+      simple_frames_in(input_to_json(in), key, frames);
+      for (const auto& [det, text] : frames) {
+        tried.insert(text);
+        improper += det != 1;
+      }
+      Evaluation e = base_evaluation();
+      e.verdict.cls = CaseClass::agree;  // never the same disagreement: every candidate is rejected
+      return e;
+    };
+    (void)shrink(start, base_evaluation(), reject_all, 3000, 60);
+    if (std::string(key) == "rotation") EXPECT_EQ(improper, 0) << name(kind);
+    EXPECT_EQ(static_cast<int>(tried.size()), expected) << name(kind);
+  }
 }
 
 }  // namespace
