@@ -42,7 +42,7 @@ struct MutateArgs {
   int build_jobs = 1;
   double budget_minutes = 60;
   double campaign_seconds = 60;
-  unsigned campaign_seed = 1;
+  std::uint64_t campaign_seed = 1;
   int campaign_workers = 1;
   double test_timeout = 10;
   std::vector<std::string> labels = {"corpus", "fuzz", "unit", "cli", "property"};

@@ -75,8 +75,8 @@ std::string markdown_report(const MutationRun& run) {
                 run.time_limit_factor, run.time_limit_floor);
   out += line;
   if (run.campaign_seconds > 0) {
-    std::snprintf(line, sizeof line, ", then `crosscheck campaign --query KIND --seconds %g --seed %u`",
-                  run.campaign_seconds, run.campaign_seed);
+    std::snprintf(line, sizeof line, ", then `crosscheck campaign --query KIND --seconds %g --seed %llu`",
+                  run.campaign_seconds, static_cast<unsigned long long>(run.campaign_seed));
     out += line;
   }
   out += ".\n\n";

@@ -2,6 +2,7 @@
 // Markdown and JSON reports.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -43,7 +44,7 @@ struct MutationRun {
   int jobs = 1;
   double budget_minutes = 0;
   double campaign_seconds = 0;
-  unsigned campaign_seed = 1;
+  std::uint64_t campaign_seed = 1;
   std::vector<std::string> labels;
   std::vector<std::pair<std::string, double>> baseline;  // label -> seconds of the unmutated tree
   std::vector<std::string> excluded_tests;  // failing on the unmutated tree: left out of the mutant runs
