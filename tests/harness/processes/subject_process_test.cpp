@@ -121,6 +121,15 @@ TEST(SubjectProcess, TheMeshKindsHandTheMeshesOverAndNameTheFaces) {
   EXPECT_EQ(bullet->ask(MeshMeshFirstInput{pair}).pairs, (std::vector<FacePair>{{0, 0}}));
   pair.pose_b.translation = {0, 0, 5};
   EXPECT_FALSE(bullet->ask(MeshMeshInput{pair}).hit);
+  // A stick through face 1 alone: the pair names each mesh's own face, the other way round when
+  // the meshes (of two faces and of one) change sides, so meshes handed over swapped would show.
+  Mesh low;
+  low.vertices = {{1, 1, 0.5}, {1, 1, 1.5}, {1.5, 1, 1.5}};
+  low.faces = {{0, 1, 2}};
+  EXPECT_EQ(bullet->ask(MeshMeshInput{MeshPair{triangles_mesh(two), triangles_mesh(low), {}, {}, {}}}).pairs,
+            (std::vector<FacePair>{{1, 0}}));
+  EXPECT_EQ(bullet->ask(MeshMeshInput{MeshPair{triangles_mesh(low), triangles_mesh(two), {}, {}, {}}}).pairs,
+            (std::vector<FacePair>{{0, 1}}));
 }
 
 TEST(SubjectProcess, AMeshFileIsReadFromWhereTheCallerReadItWhateverTheServersFolder) {
