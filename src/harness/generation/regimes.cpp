@@ -31,7 +31,14 @@ Vec3 draw_aspect_extents(ValueSource& v, double size) {
       case 0: half[k] = size; break;
       case 1: half[k] = size * generic_unit(c); break;
       case 2: half[k] = std::ldexp(size, -static_cast<int>(c.draw(41))); break;  // aspect up to 2^40
-      default: half[k] = c.chance(30) ? 0.0 : std::ldexp(size * generic_unit(c), -static_cast<int>(c.draw(41)));
+      default: {
+        if (c.chance(30)) {
+          half[k] = 0.0;
+          break;
+        }
+        const int shift = static_cast<int>(c.draw(41));
+        half[k] = std::ldexp(size * generic_unit(c), -shift);
+      }
     }
   }
   return half;
@@ -40,7 +47,15 @@ Vec3 draw_aspect_extents(ValueSource& v, double size) {
 Vec3 draw_direction(ValueSource& v) {
   Choices& c = v.choices();
   Vec3 d;
-  for (int k = 0; k < 3; ++k) d[k] = (c.chance(50) ? -1.0 : 1.0) * (c.chance(20) ? 0.0 : generic_unit(c) * std::ldexp(1.0, -static_cast<int>(c.draw(4))));
+  for (int k = 0; k < 3; ++k) {
+    const double sign = c.chance(50) ? -1.0 : 1.0;
+    if (c.chance(20)) {
+      d[k] = sign * 0.0;
+      continue;
+    }
+    const double unit = generic_unit(c);
+    d[k] = sign * (unit * std::ldexp(1.0, -static_cast<int>(c.draw(4))));
+  }
   if (d == Vec3{}) d.x = 1;
   return d;
 }
@@ -49,7 +64,8 @@ Vec3 draw_far_offset(ValueSource& v, double size) {
   Choices& c = v.choices();
   if (c.chance(40)) return {};
   // Up to 2^40 times the shapes' size (within every domain for sizes up to 2^20).
-  return std::ldexp(size, static_cast<int>(c.draw(41))) * draw_direction(v);
+  const Vec3 direction = draw_direction(v);  // drawn before the length, as always
+  return std::ldexp(size, static_cast<int>(c.draw(41))) * direction;
 }
 
 bool within_tolerance(const Mat3& m) {
@@ -83,7 +99,8 @@ Mat3 perturb_to_tolerance(ValueSource& v, const Mat3& rotation) {
 Mat3 nearly_parallel(ValueSource& v, const Mat3& base) {
   Choices& c = v.choices();
   // A rotation by angle 2^-k about a generic axis, from its unit quaternion (cos, sin n).
-  const double half_angle = std::ldexp(generic_unit(c), -static_cast<int>(8 + c.draw(45)));
+  const int shift = 8 + static_cast<int>(c.draw(45));
+  const double half_angle = std::ldexp(generic_unit(c), -shift);
   const Vec3 n = draw_direction(v);
   const double scale = std::sin(half_angle) / std::sqrt(dot(n, n));
   const Mat3 tilt = from_quaternion(std::cos(half_angle), scale * n.x, scale * n.y, scale * n.z);

@@ -53,7 +53,8 @@ ObbPair obb_pair_in_regime(ValueSource& v) {
   Choices& c = v.choices();
   const double size = draw_size(v);
   ObbPair in;
-  in.a.center = v.point() + draw_far_offset(v, size);
+  const Vec3 offset = draw_far_offset(v, size);  // drawn before the point, as always
+  in.a.center = v.point() + offset;
   in.a.half = draw_aspect_extents(v, size);
   in.a.axes = draw_rotation(v);
   in.b.center = in.a.center;
@@ -70,7 +71,11 @@ Vec3 slide_direction(ValueSource& v, const Obb& a, const Obb& b) {
   switch (c.draw(4)) {
     case 0: w = a.axes.col[c.draw(3)]; break;                                 // face to face
     case 1: w = b.axes.col[c.draw(3)]; break;
-    case 2: w = cross(a.axes.col[c.draw(3)], b.axes.col[c.draw(3)]); break;  // edge to edge
+    case 2: {  // edge to edge
+      const auto j = c.draw(3), i = c.draw(3);  // b's axis drawn first, as always
+      w = cross(a.axes.col[i], b.axes.col[j]);
+      break;
+    }
     default: w = draw_direction(v);
   }
   if (!(max_abs(w) > 0x1p-60)) w = draw_direction(v);

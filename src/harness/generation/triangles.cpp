@@ -17,7 +17,8 @@ namespace {
 Vec3 outward_from(ValueSource& v, const Aabb& box, const Vec3& p) {
   Vec3 q = p;
   for (int k = 0; k < 3; ++k) {
-    const double step = std::fabs(v.coordinate()) + (v.choices().chance(50) ? 0.0 : 1.0);
+    const double magnitude = std::fabs(v.coordinate());
+    const double step = magnitude + (v.choices().chance(50) ? 0.0 : 1.0);
     const bool up = p[k] >= 0.5 * (box.lo[k] + box.hi[k]);
     q[k] = up ? p[k] + step : p[k] - step;
   }
@@ -123,11 +124,21 @@ Triangle triangle_in_regime(ValueSource& v, double size, const Mat3& frame) {
   const auto tilt = [&c] {
     switch (c.draw(3)) {
       case 0: return 0.0;
-      case 1: return (c.chance(50) ? -1.0 : 1.0) * std::ldexp(between(c, 1, 2), -static_cast<int>(8 + c.draw(45)));
+      case 1: {
+        const double sign = c.chance(50) ? -1.0 : 1.0;
+        const int shift = 8 + static_cast<int>(c.draw(45));
+        return sign * std::ldexp(between(c, 1, 2), -shift);
+      }
       default: return between(c, -1, 1);
     }
   };
-  const double thin = c.chance(40) ? between(c, 0.25, 1) : std::ldexp(between(c, 1, 2), -static_cast<int>(c.draw(41)));
+  double thin = 0;
+  if (c.chance(40)) {
+    thin = between(c, 0.25, 1);
+  } else {
+    const int shift = static_cast<int>(c.draw(41));
+    thin = std::ldexp(between(c, 1, 2), -shift);
+  }
   const Vec3 q[3] = {{0, 0, 0}, {1, 0, tilt()}, {between(c, -0.5, 1.5), thin, tilt()}};
   Triangle t;
   for (int k = 0; k < 3; ++k) t.v[k] = frame * (size * q[k]);
