@@ -5,7 +5,6 @@
 #include <set>
 #include <vector>
 
-#include "harness/generation/values.h"
 
 namespace cc::harness {
 namespace {
@@ -26,31 +25,6 @@ TEST(ReplayChoices, ReplaysModuloAndThenGivesZeros) {
   EXPECT_EQ(c.draw(4), 2u);
   EXPECT_EQ(c.draw(100), 5u);
   EXPECT_EQ(c.draw(100), 0u);
-}
-
-TEST(ValueSource, ZeroChoicesGiveTheSimplestValue) {
-  ReplayChoices zeros({});
-  ValueSource v(zeros, {});
-  EXPECT_EQ(v.coordinate(), 0.0);
-  EXPECT_EQ(v.length(), 0.0);
-}
-
-TEST(ValueSource, MeetsTheBoundaryValues) {
-  RandomChoices c(1);
-  ValueSource v(c, {8, true, true, true});
-  bool zero = false, neg_zero = false, subnormal = false, nan = false, inf = false, huge = false, repeated = false;
-  std::set<double> seen;
-  for (int i = 0; i < 20000; ++i) {
-    const double x = v.coordinate();
-    zero |= x == 0 && !std::signbit(x);
-    neg_zero |= x == 0 && std::signbit(x);
-    subnormal |= std::fpclassify(x) == FP_SUBNORMAL;
-    nan |= std::isnan(x);
-    inf |= std::isinf(x);
-    huge |= std::isfinite(x) && std::fabs(x) > 0x1p100;
-    if (std::isfinite(x) && x != 0 && !seen.insert(x).second) repeated = true;
-  }
-  EXPECT_TRUE(zero && neg_zero && subnormal && nan && inf && huge && repeated);
 }
 
 TEST(MixSeed, SpreadsNearbySeeds) {
