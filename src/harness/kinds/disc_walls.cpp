@@ -63,14 +63,19 @@ Grid draw_grid(ValueSource& v) {
   switch (c.draw(10)) {
     case 7: g.unit = std::ldexp(1.0, -static_cast<int>(100 + c.draw(900))); break;  // tiny: down to 2^-999
     case 8: g.unit = std::ldexp(1.0, static_cast<int>(100 + c.draw(370))); break;   // huge: up to 2^469
-    case 9: g.unit = std::ldexp(1.0, v.small_int(20)) * (1 + static_cast<double>(c.draw(std::uint64_t{1} << 43)) * 0x1p-43);
-      return g;  // a generic unit stays near the origin
+    case 9: {  // a generic unit stays near the origin
+      const int exponent = v.small_int(20);
+      g.unit = std::ldexp(1.0, exponent) * (1 + static_cast<double>(c.draw(std::uint64_t{1} << 43)) * 0x1p-43);
+      return g;
+    }
     default: g.unit = std::ldexp(1.0, v.small_int(20));
   }
   if (c.chance(40)) {  // far from the origin: up to 2^30 cells away (the huge units stay below 2^500)
     const double reach = std::ldexp(1.0, static_cast<int>(c.draw(g.unit > 0x1p400 ? 8 : 31)));
-    g.origin = {kCell * std::floor(reach * generic_unit(c) / 2) * (c.chance(50) ? -1 : 1),
-                kCell * std::floor(reach * generic_unit(c) / 2) * (c.chance(50) ? -1 : 1)};
+    for (int k = 0; k < 2; ++k) {
+      const double cells = std::floor(reach * generic_unit(c) / 2);
+      (k == 0 ? g.origin.x : g.origin.y) = kCell * cells * (c.chance(50) ? -1 : 1);
+    }
   }
   return g;
 }
@@ -143,7 +148,8 @@ Wall diagonal_or_pillar(Choices& c) {
 // Two long walls along x, a corridor, the second tilted by 2^-8 to 2^-52 (nearly parallel).
 std::vector<Wall> corridor(Choices& c) {
   const double length = 3 * kCell, width = static_cast<double>(4 + c.draw(13));
-  const double tilt = std::ldexp(generic_unit(c), -static_cast<int>(8 + c.draw(45)));
+  const int shift = 8 + static_cast<int>(c.draw(45));
+  const double tilt = std::ldexp(generic_unit(c), -shift);
   return {{{0, 0}, {length, 0}}, {{0, width}, {length, width + tilt}}};
 }
 
@@ -187,16 +193,26 @@ DiscWallsInput disc_at_the_bound(ValueSource& v, const GenerateOptions& options)
   std::vector<Wall> walls = {wall};
   if (c.chance(30) && !pillar(wall)) {
     const Vec2 d = direction(wall);
-    walls.push_back(c.chance(50) ? Wall{wall.b, wall.b + std::ldexp(1.0, v.small_int(4)) * Vec2{-d.y, d.x}}  // a corner
-                                 : Wall{wall.a + Vec2{-d.y, d.x}, wall.b + Vec2{-d.y, d.x} +
-                                        std::ldexp(generic_unit(c), -static_cast<int>(8 + c.draw(45))) * d});  // nearly parallel
+    if (c.chance(50)) {  // a corner
+      walls.push_back(Wall{wall.b, wall.b + std::ldexp(1.0, v.small_int(4)) * Vec2{-d.y, d.x}});
+    } else {  // nearly parallel
+      const int shift = 8 + static_cast<int>(c.draw(45));
+      walls.push_back(Wall{wall.a + Vec2{-d.y, d.x}, wall.b + Vec2{-d.y, d.x} + std::ldexp(generic_unit(c), -shift) * d});
+    }
   }
   double r = 0;
   switch (c.draw(4)) {
     case 0: r = 0; break;
     case 1: r = size; break;
-    case 2: r = std::ldexp(size * generic_unit(c), -static_cast<int>(c.draw(41))); break;
-    default: r = std::ldexp(size * generic_unit(c), static_cast<int>(c.draw(21)));
+    case 2: {
+      const int shift = static_cast<int>(c.draw(41));
+      r = std::ldexp(size * generic_unit(c), -shift);
+      break;
+    }
+    default: {
+      const int shift = static_cast<int>(c.draw(21));
+      r = std::ldexp(size * generic_unit(c), shift);
+    }
   }
   const double along = c.chance(50) ? static_cast<double>(c.draw(3)) / 2 : generic_unit(c) - 1;
   const Vec2 start = wall.a + along * direction(wall);

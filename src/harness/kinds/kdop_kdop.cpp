@@ -25,11 +25,15 @@ KdopKdopInput kdops_at_the_bound(ValueSource& v, const GenerateOptions& options)
   KdopKdopInput in;
   in.k = kKs[c.draw(6)];
   const double size = draw_size(v);
-  const Vec3 center = v.point() + draw_far_offset(v, size);
+  const Vec3 offset = draw_far_offset(v, size);
+  const Vec3 center = v.point() + offset;
   const auto cluster = [&](double spread) {
     std::vector<Vec3> points;
     const auto n = 1 + c.draw(6);
-    for (std::uint64_t i = 0; i < n; ++i) points.push_back(center + std::ldexp(spread, -static_cast<int>(c.draw(41))) * draw_direction(v));
+    for (std::uint64_t i = 0; i < n; ++i) {
+      const Vec3 direction = draw_direction(v);
+      points.push_back(center + std::ldexp(spread, -static_cast<int>(c.draw(41))) * direction);
+    }
     return points;
   };
   in.a = cluster(size);

@@ -27,8 +27,15 @@ MovingObbInput moving_pair_at_the_bound(ValueSource& v, const GenerateOptions& o
   const ObbPair boxes = obb_pair_in_regime(v);
   const double size = std::max({max_abs(boxes.a.half), max_abs(boxes.b.half), 0x1p-20});
   MovingObbInput in{{boxes.a, {}}, {boxes.b, {}}};
-  if (c.chance(70)) in.a.velocity = std::ldexp(size, v.small_int(30)) * draw_direction(v);
-  in.b.velocity = c.chance(20) ? in.a.velocity : in.a.velocity + std::ldexp(size, v.small_int(30)) * draw_direction(v);
+  if (c.chance(70)) {
+    const Vec3 direction = draw_direction(v);
+    in.a.velocity = std::ldexp(size, v.small_int(30)) * direction;
+  }
+  in.b.velocity = in.a.velocity;
+  if (!c.chance(20)) {
+    const Vec3 direction = draw_direction(v);
+    in.b.velocity = in.a.velocity + std::ldexp(size, v.small_int(30)) * direction;
+  }
   constexpr double kTimes[] = {0, 0.25, 0.5, 1, 0.75};
   const double tau = kTimes[c.draw(std::size(kTimes))];
   const Vec3 w = slide_direction(v, boxes.a, boxes.b);

@@ -81,13 +81,15 @@ double exact_component(ValueSource& v, double f, int a, int c) {
 RayAabbInput ray_at_the_bound(ValueSource& v, const GenerateOptions& options) {
   Choices& c = v.choices();
   const double size = draw_size(v);
-  const Vec3 center = v.point() + draw_far_offset(v, size), half = draw_aspect_extents(v, size);
+  const Vec3 offset = draw_far_offset(v, size);
+  const Vec3 center = v.point() + offset, half = draw_aspect_extents(v, size);
   RayAabbInput in;
   in.box = {center - half, center + half};
   Vec3 d = draw_direction(v);
   if (c.chance(30)) {  // nearly parallel to a slab
     const int k = static_cast<int>(c.draw(3));
-    d[k] = (c.chance(50) ? -1.0 : 1.0) * std::ldexp(max_abs(d), -static_cast<int>(8 + c.draw(53)));
+    const double sign = c.chance(50) ? -1.0 : 1.0;
+    d[k] = sign * std::ldexp(max_abs(d), -static_cast<int>(8 + c.draw(53)));
   }
   const double distance = std::ldexp(1.0, v.small_int(40)) * size / max_abs(d);  // the centre at t = distance
   const bool behind = c.chance(25);  // a line whose box lies at negative parameters

@@ -70,7 +70,8 @@ Vec3 target_on(const Triangle& t, Choices& c) {
 RayMeshInput ray_at_the_bound(ValueSource& v, const GenerateOptions& options) {
   Choices& c = v.choices();
   const double size = draw_size(v);
-  const Vec3 center = v.point() + draw_far_offset(v, size);
+  const Vec3 offset = draw_far_offset(v, size);
+  const Vec3 center = v.point() + offset;
   std::vector<Triangle> triangles(1 + c.draw(4));
   const Mat3 frame = draw_rotation(v);
   for (Triangle& t : triangles) {
@@ -86,7 +87,9 @@ RayMeshInput ray_at_the_bound(ValueSource& v, const GenerateOptions& options) {
   const Vec3 normal = cross(face.v[1] - face.v[0], face.v[2] - face.v[0]);
   Vec3 d = draw_direction(v);
   if (c.chance(40)) {  // nearly in the face's plane: grazing
-    d = (face.v[c.draw(3)] - target) + std::ldexp(1.0, -static_cast<int>(8 + c.draw(45))) * draw_direction(v);
+    const Vec3 direction = draw_direction(v);
+    const Vec3 nudge = std::ldexp(1.0, -static_cast<int>(8 + c.draw(45))) * direction;
+    d = (face.v[c.draw(3)] - target) + nudge;
     if (!(max_abs(d) > 0)) d = draw_direction(v);
   }
   const double distance = std::ldexp(1.0, v.small_int(40)) * size / max_abs(d);

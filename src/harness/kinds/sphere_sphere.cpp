@@ -33,8 +33,13 @@ Sphere draw_sphere(ValueSource& v, const GenerateOptions& options) {
 SphereSphereInput balls_at_the_bound(ValueSource& v, const GenerateOptions& options) {
   Choices& c = v.choices();
   const double size = draw_size(v);
-  const Sphere a{v.point() + draw_far_offset(v, size), c.chance(15) ? 0.0 : size};
-  const double rb = c.chance(15) ? 0.0 : std::ldexp(draw_size(v), v.small_int(40)) * (c.chance(50) ? 1.0 : size);
+  const Vec3 offset = draw_far_offset(v, size);
+  const Sphere a{v.point() + offset, c.chance(15) ? 0.0 : size};
+  double rb = 0.0;
+  if (!c.chance(15)) {
+    const int exponent = v.small_int(40);
+    rb = std::ldexp(draw_size(v), exponent) * (c.chance(50) ? 1.0 : size);
+  }
   const Vec3 w = draw_direction(v);
   const double length = std::sqrt(dot(w, w));
   const auto placed = [&a, &w, rb](double s) { return SphereSphereInput{a, {a.center + s * w, rb}}; };

@@ -25,9 +25,11 @@ namespace {
 // parallel to an edge.
 TriAabbInput tri_aabb_at_the_bound(ValueSource& v, const GenerateOptions& options) {
   const double size = draw_size(v);
-  const Vec3 center = v.point() + draw_far_offset(v, size), half = draw_aspect_extents(v, size);
+  const Vec3 offset = draw_far_offset(v, size);
+  const Vec3 center = v.point() + offset, half = draw_aspect_extents(v, size);
   const Aabb box{center - half, center + half};
-  const Triangle t = triangle_in_regime(v, std::ldexp(size, v.small_int(20)), frame_against(v, Mat3::identity()));
+  const Mat3 frame = frame_against(v, Mat3::identity());
+  const Triangle t = triangle_in_regime(v, std::ldexp(size, v.small_int(20)), frame);
   const Vec3 w = along_an_axis_or_any(v, Mat3::identity());
   const double box_reach = std::fabs(half.x * w.x) + std::fabs(half.y * w.y) + std::fabs(half.z * w.z);
   return slid_to_the_bound<TriAabbInput>(v, options, t, 0.5 * (box.lo + box.hi), box_reach, w,

@@ -26,9 +26,11 @@ namespace {
 // slivers nearly coplanar with a face or nearly parallel to an edge.
 TriObbInput tri_obb_at_the_bound(ValueSource& v, const GenerateOptions& options) {
   const double size = draw_size(v);
-  Obb box{v.point() + draw_far_offset(v, size), draw_aspect_extents(v, size), draw_rotation(v)};
+  const Vec3 offset = draw_far_offset(v, size);
+  Obb box{v.point() + offset, draw_aspect_extents(v, size), draw_rotation(v)};
   if (v.choices().chance(60)) box.axes = perturb_to_tolerance(v, box.axes);
-  const Triangle t = triangle_in_regime(v, std::ldexp(size, v.small_int(20)), frame_against(v, box.axes));
+  const Mat3 frame = frame_against(v, box.axes);
+  const Triangle t = triangle_in_regime(v, std::ldexp(size, v.small_int(20)), frame);
   const Vec3 w = along_an_axis_or_any(v, box.axes);
   return slid_to_the_bound<TriObbInput>(v, options, t, box.center, reach_along(box, w), w,
                                         [&box](const Triangle& moved) { return TriObbInput{moved, box}; });

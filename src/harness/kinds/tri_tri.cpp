@@ -25,7 +25,9 @@ namespace {
 TriTriInput tri_tri_at_the_bound(ValueSource& v, const GenerateOptions& options) {
   const double size = draw_size(v);
   const Mat3 frame = draw_rotation(v);
-  const Triangle a = translated(triangle_in_regime(v, size, frame), v.point() + draw_far_offset(v, size));
+  const Vec3 offset = draw_far_offset(v, size);
+  const Vec3 place = v.point() + offset;
+  const Triangle a = translated(triangle_in_regime(v, size, frame), place);
   const Mat3 other = v.choices().chance(30) ? frame : (v.choices().chance(60) ? nearly_parallel(v, frame) : draw_rotation(v));
   const Triangle b = triangle_in_regime(v, std::ldexp(size, v.small_int(20)), other);
   const Vec3 w = along_an_axis_or_any(v, frame);
