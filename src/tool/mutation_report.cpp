@@ -50,14 +50,45 @@ std::string_view to_string(MutantStatus s) {
   return "?";
 }
 
+namespace {
+
+void count_into(Score& s, const MutantResult& r) {
+  if (r.status == MutantStatus::caught_by_ctest) ++s.counted, ++s.by_ctest, ++s.by_either;
+  if (r.status == MutantStatus::caught_by_campaign) ++s.counted, ++s.by_either;
+  if (r.status == MutantStatus::survived) ++s.counted;
+}
+
+constexpr std::string_view kLayers[] = {"library", "references", "harness", "tool", "other"};
+
+}  // namespace
+
 Score score_of(const MutationRun& run) {
   Score s;
-  for (const MutantResult& r : run.results) {
-    if (r.status == MutantStatus::caught_by_ctest) ++s.counted, ++s.by_ctest, ++s.by_either;
-    if (r.status == MutantStatus::caught_by_campaign) ++s.counted, ++s.by_either;
-    if (r.status == MutantStatus::survived) ++s.counted;
-  }
+  for (const MutantResult& r : run.results) count_into(s, r);
   return s;
+}
+
+std::string_view layer_of(std::string_view file) {
+  if (file.starts_with("src/collide/")) return "library";
+  if (file.starts_with("oracle/")) return "references";
+  if (file.starts_with("src/harness/")) return "harness";
+  if (file.starts_with("src/tool/")) return "tool";
+  return "other";
+}
+
+std::vector<std::pair<std::string, Score>> scores_by_layer(const MutationRun& run) {
+  std::vector<std::pair<std::string, Score>> out;
+  for (const std::string_view layer : kLayers) {
+    Score s;
+    bool any = false;
+    for (const MutantResult& r : run.results) {
+      if (layer_of(r.mutant.file) != layer) continue;
+      any = true;
+      count_into(s, r);
+    }
+    if (any) out.emplace_back(std::string(layer), s);
+  }
+  return out;
 }
 
 std::string markdown_report(const MutationRun& run) {
@@ -85,6 +116,13 @@ std::string markdown_report(const MutationRun& run) {
          percent(s.by_ctest, s.counted) + " |\n";
   out += "| ctest + campaign | " + std::to_string(s.by_either) + " | " + std::to_string(s.counted) + " | " +
          percent(s.by_either, s.counted) + " |\n\n";
+  out += "| layer | caught by ctest | caught by ctest + campaign | of |\n|---|---|---|---|\n";
+  for (const auto& [layer, ls] : scores_by_layer(run)) {
+    out += "| " + layer + " | " + std::to_string(ls.by_ctest) + " (" + percent(ls.by_ctest, ls.counted) + ") | " +
+           std::to_string(ls.by_either) + " (" + percent(ls.by_either, ls.counted) + ") | " + std::to_string(ls.counted) +
+           " |\n";
+  }
+  out += "\n";
   int equivalent = 0, stale = 0, not_run = 0, build_failed = 0, errors = 0, not_executable = 0;
   for (const MutantResult& r : run.results) {
     not_executable += r.status == MutantStatus::not_executable;
@@ -151,6 +189,10 @@ std::string json_report(const MutationRun& run) {
                 {"caught_by_ctest_or_campaign", s.by_either},
                 {"ctest_fraction", s.counted ? double(s.by_ctest) / s.counted : 0.0},
                 {"ctest_or_campaign_fraction", s.counted ? double(s.by_either) / s.counted : 0.0}};
+  j["score_by_layer"] = Json::object();
+  for (const auto& [layer, ls] : scores_by_layer(run)) {
+    j["score_by_layer"][layer] = {{"counted", ls.counted}, {"caught_by_ctest", ls.by_ctest}, {"caught_by_ctest_or_campaign", ls.by_either}};
+  }
   j["mutants"] = Json::array();
   for (const MutantResult& r : run.results) {
     j["mutants"].push_back({{"id", r.mutant.id},

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "tool/mutant_catalogue.h"
@@ -62,6 +64,14 @@ struct Score {
   int counted = 0, by_ctest = 0, by_either = 0;
 };
 Score score_of(const MutationRun& run);
+
+/// The layer a mutated file belongs to: "library" (src/collide), "references" (oracle/: the
+/// exact reference and the peers), "harness" (src/harness), "tool" (src/tool), or "other".
+std::string_view layer_of(std::string_view file);
+
+/// The score of each layer's mutants, in the order library, references, harness, tool, other
+/// (layers without mutants left out).
+std::vector<std::pair<std::string, Score>> scores_by_layer(const MutationRun& run);
 
 /// The report as Markdown: the scores, then one table row per mutant.
 std::string markdown_report(const MutationRun& run);

@@ -185,5 +185,42 @@ TEST(MutationReport, JsonOfAnEmptyRunHasZeroFractions) {
   EXPECT_TRUE(j["mutants"].empty());
 }
 
+// The score of each layer, told from the mutated file's folder.
+TEST(MutationReport, EachLayerHasItsOwnScore) {
+  EXPECT_EQ(layer_of("src/collide/obb.cpp"), "library");
+  EXPECT_EQ(layer_of("oracle/exact/rational.cpp"), "references");
+  EXPECT_EQ(layer_of("oracle/fcl/fcl_shapes.cpp"), "references");
+  EXPECT_EQ(layer_of("src/harness/processes/child.cpp"), "harness");
+  EXPECT_EQ(layer_of("src/tool/flag_checks.cpp"), "tool");
+  EXPECT_EQ(layer_of("fuzz/mutator.cpp"), "other");
+  MutationRun run = sample_run();  // its mutants are the library's
+  MutantResult tool = caught("k.tool", MutantStatus::caught_by_ctest, "unit", "FlagRanges.X (Failed)", 5);
+  tool.mutant.file = "src/tool/flag_checks.cpp";
+  MutantResult harness = result("l.harness", MutantStatus::survived);
+  harness.mutant.file = "src/harness/shrinking/shrink.cpp";
+  MutantResult equivalent_reference = result("m.reference", MutantStatus::equivalent);
+  equivalent_reference.mutant.file = "oracle/exact/rational.cpp";
+  run.results.insert(run.results.end(), {tool, harness, equivalent_reference});
+  const auto layers = scores_by_layer(run);
+  ASSERT_EQ(layers.size(), 4u);
+  EXPECT_EQ(layers[0].first, "library");
+  EXPECT_EQ(layers[0].second.counted, 4);
+  EXPECT_EQ(layers[0].second.by_ctest, 2);
+  EXPECT_EQ(layers[0].second.by_either, 3);
+  EXPECT_EQ(layers[1].first, "references");
+  EXPECT_EQ(layers[1].second.counted, 0);  // an equivalent mutant alone: listed, scores nothing
+  EXPECT_EQ(layers[2].first, "harness");
+  EXPECT_EQ(layers[2].second.counted, 1);
+  EXPECT_EQ(layers[2].second.by_ctest, 0);
+  EXPECT_EQ(layers[3].first, "tool");
+  EXPECT_EQ(layers[3].second.by_ctest, 1);
+  const std::string md = markdown_report(run);
+  EXPECT_TRUE(contains(md, "| library | 2 (50.0%) | 3 (75.0%) | 4 |")) << md;
+  EXPECT_TRUE(contains(md, "| tool | 1 (100.0%) | 1 (100.0%) | 1 |")) << md;
+  const auto j = nlohmann::json::parse(json_report(run));
+  EXPECT_EQ(j["score_by_layer"]["harness"]["counted"], 1);
+  EXPECT_EQ(j["score_by_layer"]["tool"]["caught_by_ctest"], 1);
+}
+
 }  // namespace
 }  // namespace cc::tool
