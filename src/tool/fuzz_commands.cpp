@@ -9,11 +9,8 @@
 #include <iterator>
 
 #include "harness/processes/campaign.h"
-#include "harness/processes/child.h"
 #include "harness/formats/fuzz_record.h"
-#include "harness/model/library.h"
 #include "harness/shrinking/signature.h"
-#include "oracle/exact/exact_reference.h"
 #include "harness/model/subject.h"
 #include "tool/cases.h"
 #include "tool/commands.h"
