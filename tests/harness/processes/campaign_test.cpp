@@ -12,11 +12,13 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <tuple>
 
 #include "harness/formats/input_json.h"
 #include "harness/model/library.h"
 #include "harness/processes/interrupts.h"
 #include "oracle/exact/exact_reference.h"
+#include "temp_folder.h"
 
 namespace cc::harness {
 namespace {
@@ -284,17 +286,29 @@ std::pair<int, int> kills_in(const std::filesystem::path& folder) {
   return {cases, kills};
 }
 
-template <int Signal>
-void check_asked_again_once() {
-  const auto folder = std::filesystem::path(::testing::TempDir()) / ("killed_once_" + std::to_string(Signal));
-  std::filesystem::remove_all(folder);
-  std::filesystem::create_directories(folder);
+struct KilledRun {
+  CampaignResult result;
+  int cases = 0, kills = 0;  // cases killed at least once, and kills
+};
+
+// A 2 s aabb_aabb campaign whose workers another process sends `Signal` on a few cases, the
+// first time only or every time.
+template <int Signal, bool EveryTime>
+KilledRun killed_run() {
+  const test::TempFolder folder("crosscheck_killed");
   CampaignOptions options;
   options.seconds = 2;
   options.seed = 11;
   options.out_of_contract_percent = 0;
-  const CampaignResult r = aabb_campaign<KilledFromOutside<Signal, false>>(options, folder);
-  const auto [cases, kills] = kills_in(folder);
+  KilledRun run;
+  run.result = aabb_campaign<KilledFromOutside<Signal, EveryTime>>(options, folder.path());
+  std::tie(run.cases, run.kills) = kills_in(folder.path());
+  return run;
+}
+
+template <int Signal>
+void check_asked_again_once() {
+  const auto [r, cases, kills] = killed_run<Signal, false>();
   ASSERT_GT(cases, 0) << "no case met the kill";
   // Each case killed was asked again and answered: no finding, no case lost.
   EXPECT_TRUE(r.findings.empty()) << r.findings.front().crash;
@@ -305,7 +319,6 @@ void check_asked_again_once() {
   EXPECT_GE(r.asked_again, static_cast<std::uint64_t>(cases - 1));
   EXPECT_LE(r.asked_again, static_cast<std::uint64_t>(cases));
   EXPECT_EQ(r.tallies.at(QueryKind::aabb_aabb).count(CaseClass::oracle_crash), 0u);
-  std::filesystem::remove_all(folder);
 }
 
 TEST(Campaign, AWorkerSentSigsegvByAnotherProcessIsAskedAgainNotBlamed) { check_asked_again_once<SIGSEGV>(); }
@@ -313,33 +326,17 @@ TEST(Campaign, AWorkerSentSigkillByAnotherProcessIsAskedAgainNotBlamed) { check_
 
 // SIGTERM asks a worker to stop after its case: it answers it, and another worker takes its place.
 TEST(Campaign, AWorkerSentSigtermByAnotherProcessIsReplacedAndLosesNothing) {
-  const auto folder = std::filesystem::path(::testing::TempDir()) / "stopped_from_outside";
-  std::filesystem::remove_all(folder);
-  std::filesystem::create_directories(folder);
-  CampaignOptions options;
-  options.seconds = 2;
-  options.seed = 11;
-  options.out_of_contract_percent = 0;
-  const CampaignResult r = aabb_campaign<KilledFromOutside<SIGTERM, false>>(options, folder);
-  const auto [cases, kills] = kills_in(folder);
+  const auto [r, cases, kills] = killed_run<SIGTERM, false>();
   ASSERT_GT(cases, 2) << "more workers stopped than the campaign has";
   EXPECT_TRUE(r.findings.empty());
   EXPECT_EQ(r.asked_again, 0u);
   EXPECT_FALSE(r.interrupted);
   EXPECT_GT(r.seconds, 1.9) << "the workers stopped from outside were not replaced";
-  std::filesystem::remove_all(folder);
 }
 
 // Killed again when asked again (the kernel's out-of-memory killer would): the case's finding.
 TEST(Campaign, ACaseKilledFromOutsideTwiceIsAFinding) {
-  const auto folder = std::filesystem::path(::testing::TempDir()) / "killed_twice";
-  std::filesystem::remove_all(folder);
-  std::filesystem::create_directories(folder);
-  CampaignOptions options;
-  options.seconds = 2;
-  options.seed = 11;
-  options.out_of_contract_percent = 0;
-  const CampaignResult r = aabb_campaign<KilledFromOutside<SIGSEGV, true>>(options, folder);
+  const CampaignResult r = killed_run<SIGSEGV, true>().result;
   ASSERT_FALSE(r.findings.empty());
   for (const Finding& f : r.findings) {
     EXPECT_TRUE(killed_on(f.input));
@@ -349,7 +346,6 @@ TEST(Campaign, ACaseKilledFromOutsideTwiceIsAFinding) {
     EXPECT_EQ(f.evaluation.verdict.cls, CaseClass::oracle_crash);
   }
   EXPECT_GE(r.asked_again, r.findings.size());
-  std::filesystem::remove_all(folder);
 }
 
 }  // namespace
