@@ -135,16 +135,17 @@ struct Stored {
   std::vector<int> complex_before, complex_after;  // values not small integers or halves
 };
 
-// The case file of a finding, with `e` as its answers: the finding's own evaluation only when
-// `e` is it or the finding is a death (rebuilt as every command rebuilds it); otherwise `e` is
-// asked again here, as every command asks a case, since a worker answers in a process with a
-// history and replay in a fresh one. When a party answered differently there, the note says
-// what the worker saw.
+// The case file of a finding, with `e` as its answers, asked again here first when `ask_again`
+// (as every command asks a case: a worker answers in a process with a history, replay in a
+// fresh one), unless the finding is a hang. When a party answered differently there, the note
+// says what the worker saw.
 Case stored_case(const Finding& f, const Input& input, const Evaluation& e, const CampaignArgs& args,
                  std::string not_shrunk, bool ask_again) {
   const Provenance provenance{"campaign", args.seed, f.case_index, "seed " + std::to_string(args.seed)};
   const harness::Subject* subject = harness::subject_under_test();
-  const Evaluation stored = ask_again && f.crash.empty() ? evaluate_surviving_crashes(input) : e;
+  // A death is asked again too (one in a fresh process is the same record; a worker may die of
+  // what earlier cases left in it), but a hang is not: it would cost the whole time limit again.
+  const Evaluation stored = ask_again && !is_time_out(f.crash) ? evaluate_surviving_crashes(input) : e;
   std::string note = "untriaged: " + (subject != nullptr ? "subject " + subject->path() + ": " : std::string()) +
                      signature_of(f.kind, stored) + (f.crash.empty() ? "" : "; " + f.crash);
   if (signature_of(f.kind, stored) != signature_of(f.kind, e)) {

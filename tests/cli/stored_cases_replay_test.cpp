@@ -1,7 +1,9 @@
 // A case a campaign has just stored replays to the same answers, on a loaded machine too: a short
 // campaign over the kinds whose peers crash, time out or answer differently with a history runs
 // under a CPU hog (a busy process per core), and its output is then replayed twice: nothing
-// changed. (Label property: it is a statement about every stored case.)
+// changed. (Label property: it is a statement about every stored case.) Broadphase is left out:
+// FCL's managers read memory they freed, so on a few cases in a hundred their answer, or
+// whether they crash, depends on the heap of the process they run in (README "Broadphase: FCL's managers read memory they freed").
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -55,7 +57,7 @@ TEST(StoredCases, ReplayUnchangedTwiceAfterACampaignUnderLoad) {
     const Outcome campaign = run({CROSSCHECK_BINARY, "campaign", "--seconds", "10", "--seed", "7", "--workers", "2",
                                   "--out-of-contract", "30", "--max-new", "40", "--corpora",
                                   (folder.path() / "no_corpus").string(), "--out", out.string(), "--query", "tri_obb",
-                                  "--query", "tri_aabb", "--query", "broadphase", "--query", "aabb_aabb", "--query",
+                                  "--query", "tri_aabb", "--query", "aabb_aabb", "--query",
                                   "obb_obb", "--query", "disc_walls", "--query", "ray_aabb", "--query", "moving_obb"},
                                  folder.path(), folder.path());
     ASSERT_EQ(campaign.status, 0) << campaign.err << campaign.out;
