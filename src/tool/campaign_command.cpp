@@ -143,9 +143,13 @@ Case stored_case(const Finding& f, const Input& input, const Evaluation& e, cons
                  std::string not_shrunk, bool ask_again) {
   const Provenance provenance{"campaign", args.seed, f.case_index, "seed " + std::to_string(args.seed)};
   const harness::Subject* subject = harness::subject_under_test();
-  // A death is asked again too (one in a fresh process is the same record; a worker may die of
-  // what earlier cases left in it), but a hang is not: it would cost the whole time limit again.
-  const Evaluation stored = ask_again && !is_time_out(f.crash) ? evaluate_surviving_crashes(input) : e;
+  // A death in the second opinions is asked again too (one in a fresh process is the same
+  // record; a worker may die of what earlier cases left in it), but a hang is not (it would cost
+  // the whole time limit again), nor a death in the library or the exact reference, whose code
+  // would run again in this process.
+  const bool peers_died = f.crash.find(std::string(harness::died_in_name(harness::DiedIn::second_opinions))) != std::string::npos;
+  const bool again = ask_again && !is_time_out(f.crash) && (f.crash.empty() || peers_died);
+  const Evaluation stored = again ? evaluate_surviving_crashes(input) : e;
   std::string note = "untriaged: " + (subject != nullptr ? "subject " + subject->path() + ": " : std::string()) +
                      signature_of(f.kind, stored) + (f.crash.empty() ? "" : "; " + f.crash);
   if (signature_of(f.kind, stored) != signature_of(f.kind, e)) {
