@@ -147,8 +147,8 @@ Case stored_case(const Finding& f, const Input& input, const Evaluation& e, cons
   // record; a worker may die of what earlier cases left in it), but a hang is not (it would cost
   // the whole time limit again), nor a death in the library or the exact reference, whose code
   // would run again in this process.
-  const bool peers_died = f.crash.find(std::string(harness::died_in_name(harness::DiedIn::second_opinions))) != std::string::npos;
-  const bool again = ask_again && !is_time_out(f.crash) && (f.crash.empty() || peers_died);
+  const bool again =
+      ask_again && !is_time_out(f.crash) && (f.crash.empty() || f.died_in == harness::DiedIn::second_opinions);
   const Evaluation stored = again ? evaluate_surviving_crashes(input) : e;
   std::string note = "untriaged: " + (subject != nullptr ? "subject " + subject->path() + ": " : std::string()) +
                      signature_of(f.kind, stored) + (f.crash.empty() ? "" : "; " + f.crash);

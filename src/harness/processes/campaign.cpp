@@ -278,11 +278,13 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
         const std::string how = "died when asked again in a child process";
         f.evaluation = evaluation_after_death(f.input, *exact, *second, DiedIn::second_opinions, how);
         f.crash = how + " in " + std::string(died_in_name(DiedIn::second_opinions));
+        f.died_in = DiedIn::second_opinions;
       }
     }
     if (!crash.empty()) {  // rebuilt without the party that died, as every command rebuilds it
       f.evaluation = evaluation_after_death(f.input, *exact, *second, died_in(phase), crash);
       f.crash = crash + " in " + std::string(died_in_name(died_in(phase)));
+      f.died_in = died_in(phase);
     }
     if (!crash.empty()) {
       KindTally& t = crashed[kind];

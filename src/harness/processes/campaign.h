@@ -46,6 +46,7 @@ struct Finding {
   Input input;
   Evaluation evaluation;
   std::string crash;  // for a worker that died or hung on this case: what and where
+  DiedIn died_in = DiedIn::second_opinions;  // where, when `crash` is not empty
 };
 
 struct CampaignResult {
