@@ -56,10 +56,13 @@ int run(const AddArgs& args) {
     input = harness::input_from_json(*kind, harness::parse_json_text(text), "",
                                      std::filesystem::path(args.corpora) / args.query);
   } catch (const harness::JsonTextError& e) {
-    std::fprintf(stderr, "crosscheck add: %s: %s: %s\n", source.c_str(), e.place().c_str(), e.what());
+    std::fprintf(stderr, "crosscheck add: %s: %s: %s\n", harness::printable(source).c_str(), e.place().c_str(),
+                 harness::printable(e.what()).c_str());
     return kExitBadInput;
   } catch (const harness::FormatError& e) {
-    std::fprintf(stderr, "crosscheck add: %s%s: %s\n", source.c_str(), e.pointer().c_str(), e.what());
+    // The pointer names the file's own keys: shown as safely as the rest.
+    std::fprintf(stderr, "crosscheck add: %s%s: %s\n", harness::printable(source).c_str(), harness::printable(e.pointer()).c_str(),
+                 harness::printable(e.what()).c_str());
     return kExitBadInput;
   }
   const harness::Evaluation e = evaluate_surviving_crashes(input);

@@ -55,6 +55,9 @@ constexpr double kShrinkShare = 0.25;
 constexpr double kGraceAfterInterrupt = 3;
 constexpr double kMinShrinkSeconds = 0.1;
 constexpr double kShrinkSlackSeconds = 2;
+// A finding stored as found is asked again in a fresh process (in milliseconds, unless a party
+// hangs there) for the time left, or at least this long.
+constexpr double kMinAskAgainSeconds = 1;
 
 struct CampaignArgs {
   std::vector<std::string> queries;
@@ -135,26 +138,30 @@ struct Stored {
   std::vector<int> complex_before, complex_after;  // values not small integers or halves
 };
 
-// The case file of a finding, with `e` as its answers, asked again here first when `ask_again`
-// (as every command asks a case: a worker answers in a process with a history, replay in a
-// fresh one), unless the finding is a hang. When a party answered differently there, the note
-// says what the worker saw.
+// The case file of a finding, with `e` as its answers, asked again here first for at most
+// `ask_again_seconds` (0: not at all), as every command asks a case (a worker answers in a
+// process with a history, replay in a fresh one), unless the finding is a hang. When a party
+// answered differently here, the note says what the worker saw; when the time ran out or a
+// second interrupt came first, the worker's answers are stored, and the note says so.
 Case stored_case(const Finding& f, const Input& input, const Evaluation& e, const CampaignArgs& args,
-                 std::string not_shrunk, bool ask_again) {
+                 std::string not_shrunk, double ask_again_seconds) {
   const Provenance provenance{"campaign", args.seed, f.case_index, "seed " + std::to_string(args.seed)};
   const harness::Subject* subject = harness::subject_under_test();
   // A death in the second opinions is asked again too (one in a fresh process is the same
   // record; a worker may die of what earlier cases left in it), but a hang is not (it would cost
-  // the whole time limit again), nor a death in the library or the exact reference, whose code
-  // would run again in this process.
-  const bool again =
-      ask_again && !is_time_out(f.crash) && (f.crash.empty() || f.died_in == harness::DiedIn::second_opinions);
-  const Evaluation stored = again ? evaluate_surviving_crashes(input) : e;
+  // the whole time limit again), nor a death in the library, the exact reference or between
+  // cases, whose code would run again in this process.
+  const bool again = ask_again_seconds > 0 && !is_time_out(f.crash) &&
+                     (f.crash.empty() || f.died_in == harness::DiedIn::second_opinions);
+  const std::optional<Evaluation> fresh =
+      again ? evaluate_again_within(input, ask_again_seconds, [] { return interrupts() > 1; }) : std::nullopt;
+  const Evaluation& stored = fresh ? *fresh : e;
   std::string note = "untriaged: " + (subject != nullptr ? "subject " + subject->path() + ": " : std::string()) +
                      signature_of(f.kind, stored) + (f.crash.empty() ? "" : "; " + f.crash);
   if (signature_of(f.kind, stored) != signature_of(f.kind, e)) {
     note += "; its worker saw " + signature_of(f.kind, e) + " (a party answers differently in a fresh process)";
   }
+  if (again && !fresh) note += "; as its worker answered it (no time left to ask it again in a fresh process)";
   Case c = case_of(input, stored, provenance, note);
   c.not_shrunk = std::move(not_shrunk);
   return c;
@@ -183,6 +190,7 @@ int shrink_and_store(const Finding& f, const CampaignArgs& args, const std::vect
   if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) ::dup2(null, STDERR_FILENO);
   std::signal(SIGINT, SIG_IGN);  // the terminal's Ctrl-C is the supervisor's to judge
   std::signal(SIGTERM, SIG_DFL);
+  const double started = monotonic_seconds();
   const ShrinkResult r = shrink(f.input, f.evaluation, evaluate_surviving_crashes, 3000, seconds, args.corpora);
   sigset_t term;
   sigemptyset(&term);
@@ -194,7 +202,9 @@ int shrink_and_store(const Finding& f, const CampaignArgs& args, const std::vect
   } else {
     try {
       // Shrinking asked each candidate it kept as every command does; none kept: the worker's answers.
-      Case c = stored_case(f, r.input, r.evaluation, args, "", r.accepted == 0);
+      // (Asked again within the time this child has left before it is killed.)
+      const double left = std::max(0.0, started + seconds - monotonic_seconds()) + kShrinkSlackSeconds / 2;
+      Case c = stored_case(f, r.input, r.evaluation, args, "", r.accepted == 0 ? left : 0);
       if (r.out_of_time) c.note += "; shrinking ran out of time (it may shrink further)";
       const auto target = case_path(f, r.input, args);
       const auto path = write_new_case_file(target, c);
@@ -206,12 +216,14 @@ int shrink_and_store(const Finding& f, const CampaignArgs& args, const std::vect
   return harness::write_all(report, line) ? 0 : 1;
 }
 
-// Writes a finding as found, here, asked again as every command asks it (but after a second
-// interrupt: then as the worker answered it, at once).
-void store_as_found(const Finding& f, const CampaignArgs& args, const std::string& why, Storage& s) {
+// Writes a finding as found, here, asked again as every command asks it within the time left
+// until `deadline`, or at least kMinAskAgainSeconds (but after a second interrupt: as the
+// worker answered it, at once).
+void store_as_found(const Finding& f, const CampaignArgs& args, const std::string& why, double deadline, Storage& s) {
   try {
     const auto target = case_path(f, f.input, args);
-    const auto path = write_new_case_file(target, stored_case(f, f.input, f.evaluation, args, why, interrupts() < 2));
+    const double ask_again = interrupts() < 2 ? std::max(deadline - monotonic_seconds(), kMinAskAgainSeconds) : 0;
+    const auto path = write_new_case_file(target, stored_case(f, f.input, f.evaluation, args, why, ask_again));
     s.how = path ? Storage::How::written : Storage::How::known;
     s.path = path ? path->string() : target.string();
     if (path) s.not_shrunk = why;
@@ -292,7 +304,7 @@ Stored store_findings(const CampaignResult& r, const CampaignArgs& args, double 
                      crashed ? "a crash or hang is stored as found"
                      : interrupts() > 1 ? "interrupted twice"
                      : interrupts() > 0 ? "interrupted" : "no time left in --seconds",
-                     storage);
+                     deadline, storage);
     } else {
       harness::ChildEnd child;
       try {
@@ -301,7 +313,7 @@ Stored store_findings(const CampaignResult& r, const CampaignArgs& args, double 
                                       share + kShrinkSlackSeconds, [] { return interrupts() > 1; },
                                       harness::ChildGroup::own);
       } catch (const std::system_error& e) {  // no process to shrink in: stored as found
-        store_as_found(f, args, std::string("cannot shrink: ") + e.what(), storage);
+        store_as_found(f, args, std::string("cannot shrink: ") + e.what(), deadline, storage);
         continue;
       }
       std::istringstream report(child.output);
@@ -320,7 +332,7 @@ Stored store_findings(const CampaignResult& r, const CampaignArgs& args, double 
         storage.how = Storage::How::failed;
         storage.failure = rest;
       } else {  // the shrinking child crashed, ran out of time or was stopped first: as found
-        store_as_found(f, args, child.stopped ? "interrupted twice" : "shrinking " + child.what(), storage);
+        store_as_found(f, args, child.stopped ? "interrupted twice" : "shrinking " + child.what(), deadline, storage);
       }
     }
     if (storage.how == Storage::How::written) known = stored_case_names(args.corpora);  // it may be under the root

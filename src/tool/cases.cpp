@@ -31,9 +31,13 @@ const peers::PeerOpinions& peer_opinions() {
 
 }  // namespace
 
-Evaluation evaluate_surviving_crashes(const Input& input) {
+std::optional<Evaluation> evaluate_again_within(const Input& input, double seconds, const std::function<bool()>& stop) {
+  const double limit = std::min(seconds, kPartyTimeLimit);
+  // Cut short by the budget or the stop, not by the party: no answer at all.
+  const auto cut_short = [&](const std::string& how) { return (stop && stop()) || (is_time_out(how) && limit < kPartyTimeLimit); };
   std::string how;
-  if (auto e = evaluate_in_child(input, exact_reference(), peer_opinions(), kPartyTimeLimit, &how)) return *e;
+  if (auto e = evaluate_in_child(input, exact_reference(), peer_opinions(), limit, &how, stop)) return e;
+  if (cut_short(how)) return std::nullopt;
   // The child died: crosscheck's library alone, in a child of its own, tells whose fault. (A
   // subject is asked in its own server, whose failures are its answer's: the child never asks it.)
   if (subject_under_test() == nullptr) {
@@ -43,15 +47,19 @@ Evaluation evaluate_surviving_crashes(const Input& input) {
             (void)ask_library(input);
           } catch (const std::exception&) {  // an answer that is no answer is not a crash
           }
+          (void)library_alternatives(input);  // its other ways too, as the campaign asks them in the library
           return 0;
         },
-        kPartyTimeLimit);
+        limit, stop);
+    if (cut_short(library.what())) return std::nullopt;
     if (!library.succeeded()) {
       return evaluation_after_death(input, exact_reference(), peer_opinions(), DiedIn::library, library.what());
     }
   }
   return evaluation_after_death(input, exact_reference(), peer_opinions(), DiedIn::second_opinions, how);
 }
+
+Evaluation evaluate_surviving_crashes(const Input& input) { return *evaluate_again_within(input, kPartyTimeLimit, {}); }
 
 Case case_of(const Input& input, const Evaluation& e, Provenance provenance, std::string note) {
   Case c;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -28,6 +29,12 @@ inline constexpr double kPartyTimeLimit = 20;
 /// rebuilds it (harness::evaluation_after_death): in the library if it fails there, else in
 /// the second opinions.
 harness::Evaluation evaluate_surviving_crashes(const harness::Input& input);
+
+/// The same, for a case already answered elsewhere (a campaign's worker), within `seconds` and
+/// until `stop` says so: nothing when either cuts it short first. A party hangs only at
+/// kPartyTimeLimit: a shorter budget that runs out is no answer of its.
+std::optional<harness::Evaluation> evaluate_again_within(const harness::Input& input, double seconds,
+                                                         const std::function<bool()>& stop);
 
 /// A case holding an input and its evaluation.
 harness::Case case_of(const harness::Input& input, const harness::Evaluation& e, harness::Provenance provenance,

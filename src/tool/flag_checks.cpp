@@ -63,25 +63,31 @@ std::string unreachable(const std::filesystem::path& path) {
   for (const auto& name : path) {
     prefix /= name;
     struct stat link {};
-    if (::lstat(prefix.c_str(), &link) != 0) return "";  // missing from here on: made later
+    if (::lstat(prefix.c_str(), &link) != 0) {
+      // Missing from here on (made later), or under a file (told by the caller); else unreachable.
+      if (errno == ENOENT || errno == ENOTDIR) return "";
+      return "cannot reach " + prefix.string() + ": " + system_error_text();
+    }
     if (!S_ISLNK(link.st_mode)) continue;
     struct stat target {};
     if (::stat(prefix.c_str(), &target) == 0) continue;
     if (errno == ELOOP) return prefix.string() + " is a loop of symbolic links";
+    const bool missing = errno == ENOENT;
+    const std::string why = system_error_text();
     std::error_code ec;
     return prefix.string() + " is a symbolic link to " + std::filesystem::read_symlink(prefix, ec).string() +
-           ", which does not exist";
+           (missing ? ", which does not exist" : ", which cannot be reached: " + why);
   }
   return "";
 }
 
-// Why output cannot go into the existing folder `folder` for want of space, or "".
-std::string too_little_space(const std::filesystem::path& folder) {
-  struct statvfs disk {};
-  if (::statvfs(folder.c_str(), &disk) != 0) return "";  // not known: the writes will tell
+// Why output cannot go to `where` for want of space on its disk (`disk`, as statvfs or fstatvfs
+// tells, the first when it is nonzero: not known, and the writes will tell), or "".
+std::string too_little_space(int known, const struct statvfs& disk, const std::filesystem::path& where) {
+  if (known != 0) return "";
   const unsigned long long free_bytes = static_cast<unsigned long long>(disk.f_bavail) * disk.f_frsize;
   if (free_bytes >= kLeastFreeBytes) return "";
-  return "only " + std::to_string(free_bytes) + " bytes are free on the disk of " + folder.string() +
+  return "only " + std::to_string(free_bytes) + " bytes are free on the disk of " + where.string() +
          " (at least 1 MiB is needed)";
 }
 
@@ -159,9 +165,11 @@ std::string unwritable_file(const std::filesystem::path& path) {
   if (fd < 0) return "cannot write " + path.string() + ": " + system_error_text();
   struct stat written {};
   const bool regular = ::fstat(fd, &written) == 0 && S_ISREG(written.st_mode);
+  struct statvfs disk {};  // the disk the file is on, where a symbolic link leads too
+  const int known = ::fstatvfs(fd, &disk);
   ::close(fd);
   if (!existed) ::unlink(path.c_str());
-  return regular ? too_little_space(folder) : "";
+  return regular ? too_little_space(known, disk, path) : "";
 }
 
 std::string unwritable_folder(const std::filesystem::path& path) {
@@ -184,7 +192,9 @@ std::string unwritable_folder(const std::filesystem::path& path) {
   std::string probe = (existing / ".crosscheck-probe-XXXXXX").string();
   if (::mkdtemp(probe.data()) == nullptr) return "cannot write in " + existing.string() + ": " + system_error_text();
   ::rmdir(probe.c_str());
-  return too_little_space(existing);
+  struct statvfs disk {};
+  const int known = ::statvfs(existing.c_str(), &disk);
+  return too_little_space(known, disk, existing);
 }
 
 CLI::Validator writable_file() {

@@ -101,8 +101,9 @@ TEST(OutputFailures, ACampaignWhoseReaderGoesAwayKeepsItsJsonAndFindings) {
   EXPECT_NE(r.err.find("cannot write standard output"), std::string::npos) << r.err;
 }
 
-// A disk with too little room is refused before any work, for a folder and for a file alike: a
-// 512 KiB tmpfs, where this machine lets the test mount one (as root); skipped elsewhere.
+// A disk with too little room is refused before any work, for a folder and for a file alike,
+// and for a file through a link to it: a 512 KiB tmpfs, where this machine lets the test mount
+// one (as root); skipped elsewhere.
 TEST(OutputFailures, ADiskWithTooLittleRoomIsRefusedBeforeAnyWork) {
   const TempFolder folder("crosscheck_output_tiny_disk");
   const fs::path tiny = folder.path() / "tiny";
@@ -115,6 +116,10 @@ TEST(OutputFailures, ADiskWithTooLittleRoomIsRefusedBeforeAnyWork) {
   const Outcome json = shell(kTool + " campaign --seconds 30 --query sphere_sphere --workers 1 --max-new 0 --json " +
                                  (tiny / "run.json").string(),
                              folder.path());
+  // A file named by a link elsewhere is written on its target's disk.
+  shell("touch tiny/run.json && ln -s tiny/run.json link.json", folder.path());
+  const Outcome link = shell(kTool + " campaign --seconds 30 --query sphere_sphere --workers 1 --max-new 0 --json link.json",
+                             folder.path());
   shell("umount " + tiny.string(), folder.path());
   EXPECT_EQ(out.status, 2) << out.err;
   EXPECT_NE(out.err.find("--out: only 524288 bytes are free on the disk of " + tiny.string() + " (at least 1 MiB is needed)"),
@@ -122,6 +127,8 @@ TEST(OutputFailures, ADiskWithTooLittleRoomIsRefusedBeforeAnyWork) {
       << out.err;
   EXPECT_EQ(json.status, 2) << json.err;
   EXPECT_NE(json.err.find("--json: only 524288 bytes are free"), std::string::npos) << json.err;
+  EXPECT_EQ(link.status, 2) << link.err;
+  EXPECT_NE(link.err.find("--json: only 524288 bytes are free on the disk of link.json"), std::string::npos) << link.err;
 }
 
 }  // namespace

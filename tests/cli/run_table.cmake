@@ -3,7 +3,7 @@
 #   STATUS | CULPRIT | ARGUMENTS [| STDIN]
 # ARGUMENTS are split as a shell would; @DATA@ is tests/data, @HERE@ this folder, @CORPORA@ the
 # corpora folder and @WORK@ a fresh scratch folder (WORK), which holds symbolic links `loop` (to
-# itself) and `dangling` (to nowhere/x), a FIFO `fifo.json`, a sparse `oversized.json` of 65 MiB,
+# itself), `dangling` (to nowhere/x) and `under_a_file` (to a name under a file), a FIFO `fifo.json`, a sparse `oversized.json` of 65 MiB,
 # `device_case/mesh_device.json` whose mesh is /dev/zero and `looping_folder/` with a case and a
 # link `up` to its parent; @LONG_PATH@ is a relative path of 5,000 characters and @LONG_NAME@ a
 # name of 300. A run that ends by a signal (a crash)
@@ -15,6 +15,7 @@ file(MAKE_DIRECTORY ${WORK}/empty)
 file(WRITE ${WORK}/blocked/obb_obb "")  # a folder for case files whose query folder is a file
 file(CREATE_LINK loop ${WORK}/loop SYMBOLIC)
 file(CREATE_LINK nowhere/x ${WORK}/dangling SYMBOLIC)
+file(CREATE_LINK blocked/obb_obb/x ${WORK}/under_a_file SYMBOLIC)
 # Files no test data can hold: a FIFO, a sparse file past the 64 MiB limit, a mesh that is a device.
 execute_process(COMMAND mkfifo ${WORK}/fifo.json)
 file(TOUCH ${WORK}/oversized.json)

@@ -6,7 +6,8 @@ namespace cc::harness {
 namespace {
 
 // The length of the well-formed UTF-8 sequence of more than one byte at `at`, or 0 (RFC 3629:
-// no overlong forms, no surrogates, nothing past U+10FFFF).
+// no overlong forms, no surrogates, nothing past U+10FFFF), nor the C1 controls U+0080-U+009F,
+// which terminals take as commands as they take an escape.
 std::size_t utf8_length(std::string_view text, std::size_t at) {
   const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
   const unsigned char first = byte(at);
@@ -14,6 +15,7 @@ std::size_t utf8_length(std::string_view text, std::size_t at) {
   unsigned char lo = 0x80, hi = 0xbf;  // the range of the second byte
   if (first >= 0xc2 && first <= 0xdf) {
     n = 2;
+    if (first == 0xc2) lo = 0xa0;
   } else if (first >= 0xe0 && first <= 0xef) {
     n = 3;
     if (first == 0xe0) lo = 0xa0;

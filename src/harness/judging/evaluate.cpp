@@ -70,40 +70,44 @@ std::string_view died_in_name(DiedIn where) {
     case DiedIn::library: return "the library";
     case DiedIn::exact: return "the exact reference";
     case DiedIn::second_opinions: return "the second opinions (FCL/libccd, Bullet, ODE)";
+    case DiedIn::between_cases: return "between cases";
   }
   return "?";
 }
 
+std::string death_text(const std::string& how, DiedIn where) {
+  return how + (where == DiedIn::between_cases ? " " : " in ") + std::string(died_in_name(where));
+}
+
 Evaluation evaluation_after_death(const Input& input, const ExactReference& exact, const SecondOpinion& second,
                                   DiedIn where, const std::string& how) {
-  const std::string failure = how + " in " + std::string(died_in_name(where));
+  const std::string failure = death_text(how, where);
   Evaluation e;
   if (where == DiedIn::library) {
     e.library_failure = failure;
   } else {
     ask_library_into(e, input);
   }
-  if (where == DiedIn::exact) {  // nothing is invented for the party that died
+  if (where != DiedIn::second_opinions) {  // nothing is invented for a party that was not asked
     e.exact.decided = false;
     e.exact.margin = NAN;
-    e.exact.note = failure;
-    e.verdict.cls = CaseClass::undecided;
-    e.verdict.parties = {{"library", Standing::not_applicable, failure}};
+    e.exact.note = where == DiedIn::exact ? failure : "not computed: " + failure;
+    const bool library = where == DiedIn::library;
+    e.verdict.cls = library ? CaseClass::impl_bug : CaseClass::undecided;
+    e.verdict.parties = {{"library", library ? Standing::failed : Standing::not_applicable, failure}};
     return e;
   }
   e.exact = exact.judge(input);
-  if (where == DiedIn::second_opinions) {
-    for (const PartyBand& party : second.parties(kind_of(input))) {
-      Opinion o;
-      o.party = party.party;
-      o.status = is_time_out(how) ? Opinion::Status::timed_out : Opinion::Status::failed;
-      o.detail = failure;
-      o.band = party.band;
-      e.opinions.push_back(std::move(o));
-    }
+  for (const PartyBand& party : second.parties(kind_of(input))) {
+    Opinion o;
+    o.party = party.party;
+    o.status = is_time_out(how) ? Opinion::Status::timed_out : Opinion::Status::failed;
+    o.detail = failure;
+    o.band = party.band;
+    e.opinions.push_back(std::move(o));
   }
   judge_into(e, input);
-  if (where == DiedIn::second_opinions && e.verdict.cls != CaseClass::impl_bug) e.verdict.cls = CaseClass::oracle_crash;
+  if (e.verdict.cls != CaseClass::impl_bug) e.verdict.cls = CaseClass::oracle_crash;
   return e;
 }
 
@@ -117,7 +121,7 @@ void restore_bands(std::vector<Opinion>& opinions, const SecondOpinion& second, 
 }
 
 std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactReference& exact, const SecondOpinion& second,
-                                            double timeout_seconds, std::string* how) {
+                                            double timeout_seconds, std::string* how, const std::function<bool()>& stop) {
   // The child asks every party but the exact reference; the library again here, which is safe:
   // crosscheck's own library returned there on this input, and a subject is asked in a process
   // of its own (processes/subject_process.h), not this one's nor the child's.
@@ -135,7 +139,7 @@ std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactRefer
           for (Opinion& o : second.opinions(input)) e.opinions.push_back(std::move(o));
           return write_all(out, opinions_to_json(e.opinions).dump()) ? 0 : 1;
         },
-        timeout_seconds);
+        timeout_seconds, stop);
   } catch (const std::system_error& error) {
     return fail(std::string("could not be started: ") + error.what());
   }

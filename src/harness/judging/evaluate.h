@@ -1,6 +1,7 @@
 // One case, answered by the three parties and classified.
 #pragma once
 
+#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -34,25 +35,34 @@ Evaluation evaluate(const Input& input, const ExactReference& exact, const Secon
 /// prove it returns), which passes them back (as case files store them, exactly); the library
 /// (a subject in its own process) and the exact reference are asked here. A party that crashes, or is cut short by a jump out of its code (see
 /// SecondOpinion::abandoned_calls), thus neither ends nor damages the caller. Nothing when the
-/// child did not answer (it crashed, or ran past timeout_seconds when that is not 0), and then
-/// how it ended into `how` when given (ChildEnd::what()).
+/// child did not answer (it crashed, ran past timeout_seconds when that is not 0, or was
+/// stopped when `stop` said so: finish_child), and then how it ended into `how` when given
+/// (ChildEnd::what()).
 std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactReference& exact, const SecondOpinion& second,
-                                            double timeout_seconds = 0, std::string* how = nullptr);
+                                            double timeout_seconds = 0, std::string* how = nullptr,
+                                            const std::function<bool()>& stop = {});
 
-/// The party a case's process died in (crashed, exited, or was killed at its time limit).
-enum class DiedIn { library, exact, second_opinions };
+/// The party a case's process died in (crashed, exited, or was killed at its time limit), or
+/// none of them: between cases (drawing the case, judging it, passing it on).
+enum class DiedIn { library, exact, second_opinions, between_cases };
 
-/// "the library", "the exact reference", "the second opinions (FCL/libccd, Bullet, ODE)".
+/// "the library", "the exact reference", "the second opinions (FCL/libccd, Bullet, ODE)",
+/// "between cases".
 std::string_view died_in_name(DiedIn where);
+
+/// How a death reads in a case: `how` (ChildEnd::what()) "in" the party, or "between cases".
+std::string death_text(const std::string& how, DiedIn where);
 
 /// What is known of a case whose process died in `where` (`how`: ChildEnd::what(), e.g.
 /// "killed by signal 11 (Segmentation fault)"), rebuilt here without the party that died, the
 /// same in the campaign and in every command, so that a case stored by one replays unchanged in
-/// another. Each failure reads `how` "in" the party. In the library: its failure, the exact
-/// verdict, no opinion (none was asked): an impl_bug. In the exact reference: the library's
-/// answer, no verdict: undecided. In the second opinions: the library's answer, the exact
-/// verdict, each second-opinion party failed (timed out when `how` is a time-out), judged: an
-/// oracle_crash unless the library is wrong.
+/// another. Each failure reads `how` "in" the party. Nothing is invented for a party that was
+/// not asked, and only parties that returned on the input are asked here. In the library: its
+/// failure, the exact verdict not computed, no opinion: an impl_bug. In the exact reference:
+/// the library's answer, no verdict: undecided. In the second opinions: the library's answer,
+/// the exact verdict, each second-opinion party failed (timed out when `how` is a time-out),
+/// judged: an oracle_crash unless the library is wrong. Between cases: the library's answer,
+/// the exact verdict not computed, no opinion: undecided (the harness itself died).
 Evaluation evaluation_after_death(const Input& input, const ExactReference& exact, const SecondOpinion& second,
                                   DiedIn where, const std::string& how);
 

@@ -29,11 +29,14 @@ bool same(const Opinion& a, const Opinion& b) {
   if (timed_out(a) || timed_out(b)) return true;
   return a.status == b.status && (a.status != Opinion::Status::answered || answer_json(a.answer) == answer_json(b.answer));
 }
-// Whether some party (the library included) timed out in the record or now: a class that
-// changed with it is no change either.
+// Whether some party (the library, the exact reference, a second opinion) timed out in the
+// record or now. A process cut off at its time limit leaves the parties after it unasked
+// (evaluation_after_death), so with a time-out on either side, an exact verdict or a party
+// missing on one side and the class are no change either.
 bool any_time_out(const Case& c, const Evaluation& now) {
   const auto in = [](const std::vector<Opinion>& os) { return std::any_of(os.begin(), os.end(), timed_out); };
-  return is_time_out(c.library_failure) || is_time_out(now.library_failure) || in(c.opinions) || in(now.opinions);
+  return is_time_out(c.library_failure) || is_time_out(now.library_failure) || is_time_out(c.exact.note) ||
+         is_time_out(now.exact.note) || in(c.opinions) || in(now.opinions);
 }
 
 std::string contract_text(const ExactVerdict& v) {
@@ -59,32 +62,37 @@ std::vector<std::string> replay_changes(const Case& c, const Evaluation& now) {
     out.push_back("the library's answer changed: recorded " + library_text(c.library, c.library_failure) + ", now " +
                   library_text(now.library, now.library_failure));
   }
-  if (!(answer_json(now.exact.answer) == answer_json(c.exact.answer))) {
-    out.push_back("the exact reference's answer changed: recorded " + text_of(c.exact.answer) + ", now " +
-                  text_of(now.exact.answer));
-  }
-  if (contract_text(now.exact) != contract_text(c.exact)) {
-    out.push_back("the exact reference changed: recorded " + contract_text(c.exact) + ", now " + contract_text(now.exact));
-  }
-  if (format_double(now.exact.margin) != format_double(c.exact.margin)) {
-    out.push_back("the exact margin changed: recorded " + format_double(c.exact.margin) + ", now " +
-                  format_double(now.exact.margin));
+  // With a time-out, the exact verdict and which parties answered depend on where time ran out.
+  const bool time_out = any_time_out(c, now);
+  if (!time_out) {
+    if (!(answer_json(now.exact.answer) == answer_json(c.exact.answer))) {
+      out.push_back("the exact reference's answer changed: recorded " + text_of(c.exact.answer) + ", now " +
+                    text_of(now.exact.answer));
+    }
+    if (contract_text(now.exact) != contract_text(c.exact)) {
+      out.push_back("the exact reference changed: recorded " + contract_text(c.exact) + ", now " + contract_text(now.exact));
+    }
+    if (format_double(now.exact.margin) != format_double(c.exact.margin)) {
+      out.push_back("the exact margin changed: recorded " + format_double(c.exact.margin) + ", now " +
+                    format_double(now.exact.margin));
+    }
   }
   for (const Opinion& before : c.opinions) {
     const auto after = std::find_if(now.opinions.begin(), now.opinions.end(),
                                     [&](const Opinion& o) { return o.party == before.party; });
     if (after == now.opinions.end()) {
-      out.push_back(before.party + " no longer answers: recorded " + text_of(before));
+      if (!time_out) out.push_back(before.party + " no longer answers: recorded " + text_of(before));
     } else if (!same(*after, before)) {
       out.push_back(before.party + " changed its behaviour: recorded " + text_of(before) + ", now " + text_of(*after));
     }
   }
   for (const Opinion& after : now.opinions) {
-    if (std::none_of(c.opinions.begin(), c.opinions.end(), [&](const Opinion& o) { return o.party == after.party; })) {
+    if (!time_out &&
+        std::none_of(c.opinions.begin(), c.opinions.end(), [&](const Opinion& o) { return o.party == after.party; })) {
       out.push_back(after.party + " is not in the record: now " + text_of(after));
     }
   }
-  if (now.verdict.cls != c.cls && !any_time_out(c, now)) {
+  if (now.verdict.cls != c.cls && !time_out) {
     out.push_back("class changed: recorded " + std::string(to_string(c.cls)) + ", now " + std::string(to_string(now.verdict.cls)));
   }
   return out;

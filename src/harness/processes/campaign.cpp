@@ -64,12 +64,12 @@ struct Slot {
 Slot* g_worker_slot = nullptr;
 
 // A fatal signal in a worker: noted in its slot when another process sent it (kill, not a
-// fault nor the worker's own abort), then taken as it would have been (the handler is reset on
-// entry; a fault's instruction faults again on return).
+// fault, a timer, the terminal nor the worker's own abort), then taken as it would have been:
+// the handler is reset on entry, and the signal raised again is pending until it returns.
 void note_fatal_signal(int signal, siginfo_t* info, void*) {
   const bool sent = info->si_code == SI_USER || info->si_code == SI_QUEUE || info->si_code == SI_TKILL;
   if (sent && info->si_pid != ::getpid() && g_worker_slot != nullptr) g_worker_slot->outside_signal = signal;
-  if (sent) ::raise(signal);  // pending until the handler returns, then the default action
+  ::raise(signal);
 }
 
 void note_fatal_signals(Slot& slot) {
@@ -85,7 +85,12 @@ void note_fatal_signals(Slot& slot) {
 }
 
 DiedIn died_in(int phase) {
-  return phase == in_library ? DiedIn::library : (phase == in_exact ? DiedIn::exact : DiedIn::second_opinions);
+  switch (phase) {
+    case in_library: return DiedIn::library;
+    case in_exact: return DiedIn::exact;
+    case in_second_opinion: return DiedIn::second_opinions;
+  }
+  return DiedIn::between_cases;
 }
 
 void write_line(int fd, const std::string& line) { write_all(fd, line + "\n"); }
@@ -277,13 +282,13 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       } else {
         const std::string how = "died when asked again in a child process";
         f.evaluation = evaluation_after_death(f.input, *exact, *second, DiedIn::second_opinions, how);
-        f.crash = how + " in " + std::string(died_in_name(DiedIn::second_opinions));
+        f.crash = death_text(how, DiedIn::second_opinions);
         f.died_in = DiedIn::second_opinions;
       }
     }
     if (!crash.empty()) {  // rebuilt without the party that died, as every command rebuilds it
       f.evaluation = evaluation_after_death(f.input, *exact, *second, died_in(phase), crash);
-      f.crash = crash + " in " + std::string(died_in_name(died_in(phase)));
+      f.crash = death_text(crash, died_in(phase));
       f.died_in = died_in(phase);
     }
     if (!crash.empty()) {
@@ -386,7 +391,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
                                 (end.signal == SIGKILL || slot.outside_signal == end.signal);
       const bool asked_before = slot.again_kind == slot.kind && slot.again_index == slot.case_index;
       const bool interrupted = from_outside && (slot.phase == idle || !asked_before);
-      if (interrupted && slot.phase != idle) {
+      if (interrupted && slot.phase != idle && !stopping()) {  // a run that stops asks nothing again
         slot.again_kind = slot.kind.load();
         slot.again_index = slot.case_index.load();
         slot.ask_again = true;

@@ -11,6 +11,8 @@ TEST(Printable, EscapesControlCharactersAndKeepsTheRest) {
   EXPECT_EQ(printable("plain text, 1 < 2"), "plain text, 1 < 2");
   EXPECT_EQ(printable(std::string_view("a\0b", 3)), "a\\x00b");
   EXPECT_EQ(printable("\x1b[31mred\n\t\x7f"), "\\x1b[31mred\\x0a\\x09\\x7f");
+  // The C1 controls (a terminal's CSI is U+009B) are escaped; U+00A0, just after them, is kept.
+  EXPECT_EQ(printable("\xc2\x9b" "31m \xc2\x80 \xc2\x9f \xc2\xa0"), "\\xc2\\x9b" "31m \\xc2\\x80 \\xc2\\x9f \xc2\xa0");
 }
 
 TEST(Printable, KeepsWellFormedUtf8AndEscapesTheRest) {

@@ -5,8 +5,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <csignal>
 
+#include "harness/judging/replay.h"
 #include "harness/model/library.h"
 #include "oracle/exact/exact_reference.h"
 
@@ -55,10 +57,66 @@ TEST(EvaluationAfterDeath, InTheLibraryItsFailureAndNoOpinion) {
   const Evaluation e = evaluation_after_death(kOverlapping, exact, Crashing{}, DiedIn::library, "exited with status 3");
   EXPECT_EQ(e.library_failure, "exited with status 3 in the library");
   EXPECT_TRUE(e.opinions.empty());
-  EXPECT_TRUE(e.exact.decided);
+  // The exact reference was never asked where the library died: it is not asked here either.
+  EXPECT_FALSE(e.exact.decided);
+  EXPECT_TRUE(std::isnan(e.exact.margin));
+  EXPECT_EQ(e.exact.note, "not computed: exited with status 3 in the library");
   EXPECT_EQ(e.verdict.cls, CaseClass::impl_bug);
   ASSERT_FALSE(e.verdict.parties.empty());
   EXPECT_EQ(e.verdict.parties[0].standing, Standing::failed);
+}
+
+// Dying between cases (drawing, judging, passing a case on) is the harness's own failure, no
+// party's: the library's answer, nothing else, undecided.
+TEST(EvaluationAfterDeath, BetweenCasesNoPartyIsBlamed) {
+  const exact::ExactRationalReference exact;
+  const Evaluation e = evaluation_after_death(kOverlapping, exact, Crashing{}, DiedIn::between_cases, "killed by signal 6 (Aborted)");
+  EXPECT_TRUE(e.library_failure.empty());
+  EXPECT_TRUE(e.library.hit);
+  EXPECT_FALSE(e.exact.decided);
+  EXPECT_EQ(e.exact.note, "not computed: killed by signal 6 (Aborted) between cases");
+  EXPECT_TRUE(e.opinions.empty());
+  EXPECT_EQ(e.verdict.cls, CaseClass::undecided);
+  ASSERT_FALSE(e.verdict.parties.empty());
+  EXPECT_EQ(e.verdict.parties[0].standing, Standing::not_applicable);
+}
+
+// The same two parties, answering as the library does.
+class Answering final : public SecondOpinion {
+ public:
+  std::vector<Opinion> opinions(const Input& in) const override {
+    return {{"fcl.AABBd::overlap", Opinion::Status::answered, ask_library(in), "", kBand},
+            {"bullet.x", Opinion::Status::answered, ask_library(in), "", kBand}};
+  }
+  std::vector<PartyBand> parties(QueryKind) const override { return {{"fcl.AABBd::overlap", kBand}, {"bullet.x", kBand}}; }
+};
+
+Case stored(const Evaluation& e) {
+  Case c;
+  c.input = kOverlapping;
+  c.library = e.library;
+  c.library_failure = e.library_failure;
+  c.exact = e.exact;
+  c.opinions = e.opinions;
+  c.cls = e.verdict.cls;
+  return c;
+}
+
+// A time-out depends on the machine: a case stored as it was cut off, in whichever party,
+// replays unchanged when every party now returns, and a case stored whole replays unchanged
+// when one is cut off now. A crash is no time-out: it is still a change.
+TEST(EvaluationAfterDeath, ATimeOutAnywhereReplaysUnchangedBothWays) {
+  const exact::ExactRationalReference exact;
+  const Answering second;
+  const Evaluation whole = evaluate(kOverlapping, exact, &second);
+  ASSERT_EQ(whole.verdict.cls, CaseClass::agree);
+  for (const DiedIn where : {DiedIn::library, DiedIn::exact, DiedIn::second_opinions}) {
+    const Evaluation cut = evaluation_after_death(kOverlapping, exact, second, where, "timed out: ran past its time limit");
+    EXPECT_TRUE(replay_changes(stored(cut), whole).empty()) << died_in_name(where) << ": " << replay_changes(stored(cut), whole)[0];
+    EXPECT_TRUE(replay_changes(stored(whole), cut).empty()) << died_in_name(where) << ": " << replay_changes(stored(whole), cut)[0];
+    const Evaluation crashed = evaluation_after_death(kOverlapping, exact, second, where, "killed by signal 11 (Segmentation fault)");
+    EXPECT_FALSE(replay_changes(stored(crashed), whole).empty()) << died_in_name(where);
+  }
 }
 
 TEST(EvaluationAfterDeath, InTheExactReferenceNoVerdict) {

@@ -111,6 +111,70 @@ TEST(Campaign, AnExitWithStatusZeroInTheMiddleOfACaseIsAFindingNotTheEndOfTheRun
   EXPECT_GT(r.tallies.at(QueryKind::aabb_aabb).cases, 5000u);
 }
 
+// Answers like FCL's AABB test, but on a few inputs sets a timer and waits for it: its SIGALRM,
+// sent by no process, ends the worker as it would without a handler. Each case it is set in
+// is marked in `folder`, which outlives the worker.
+class WaitingForATimer final : public SecondOpinion {
+ public:
+  explicit WaitingForATimer(std::filesystem::path folder) : folder_(std::move(folder)) {}
+  std::vector<Opinion> opinions(const Input& in) const override {
+    if (exits_on(in)) {
+      std::ofstream(folder_ / std::to_string(fingerprint(in))) << "x";
+      ualarm(1000, 0);
+      pause();
+    }
+    return {{"fcl.AABBd::overlap", Opinion::Status::answered, ask_library(in), "", kBand}};
+  }
+  std::vector<PartyBand> parties(QueryKind) const override { return {{"fcl.AABBd::overlap", kBand}}; }
+
+ private:
+  std::filesystem::path folder_;
+};
+
+TEST(Campaign, AFatalSignalNoProcessSentIsTakenNotLost) {
+  const test::TempFolder folder("crosscheck_timer");
+  CampaignOptions options;
+  options.seconds = 2;
+  options.seed = 7;
+  const CampaignResult r = aabb_campaign<WaitingForATimer>(options, folder.path());
+  const auto timers = std::distance(std::filesystem::directory_iterator(folder.path()), {});
+  ASSERT_GT(timers, 1);
+  // Every timer is a finding (the last one may have gone off as the run stopped).
+  EXPECT_GE(static_cast<long>(r.findings.size()), timers - 1) << "a timer's signal was lost";
+  for (const Finding& f : r.findings) {
+    EXPECT_TRUE(exits_on(f.input)) << f.crash;
+    EXPECT_EQ(f.crash, "killed by signal 14 (Alarm clock) in the second opinions (FCL/libccd, Bullet, ODE)");
+  }
+  EXPECT_EQ(r.asked_again, 0u);
+}
+
+// Answers like FCL's AABB test, but on a few inputs gives an opinion with no band, which judging
+// the case refuses (an exception no party threw): the worker dies between cases, in no party.
+class Bandless final : public SecondOpinion {
+ public:
+  std::vector<Opinion> opinions(const Input& in) const override {
+    if (exits_on(in)) return {{"fcl.AABBd::overlap", Opinion::Status::answered, ask_library(in), "", std::nullopt}};
+    return {{"fcl.AABBd::overlap", Opinion::Status::answered, ask_library(in), "", kBand}};
+  }
+  std::vector<PartyBand> parties(QueryKind) const override { return {{"fcl.AABBd::overlap", kBand}}; }
+};
+
+TEST(Campaign, ADeathBetweenCasesBlamesNoParty) {
+  CampaignOptions options;
+  options.seconds = 2;
+  options.seed = 7;
+  const CampaignResult r = aabb_campaign<Bandless>(options);
+  ASSERT_FALSE(r.findings.empty());
+  for (const Finding& f : r.findings) {
+    EXPECT_TRUE(exits_on(f.input)) << f.crash;
+    EXPECT_EQ(f.crash, "exited with status 70 between cases");  // kChildThrew
+    EXPECT_EQ(f.died_in, DiedIn::between_cases);
+    EXPECT_EQ(f.evaluation.verdict.cls, CaseClass::undecided);
+    EXPECT_TRUE(f.evaluation.opinions.empty());
+    EXPECT_FALSE(f.evaluation.exact.decided);
+  }
+}
+
 bool abandoned_on(const Input& in) { return fingerprint(in) % 997 == 3; }
 
 // Answers like FCL's AABB test, but on a few inputs a call is abandoned (a failed opinion), after

@@ -278,7 +278,9 @@ TEST(Shrink, CandidatePosesAreProperRotationsAndReachAllOfThem) {
       return e;
     };
     (void)shrink(start, base_evaluation(), reject_all, 3000, 60);
-    if (std::string(key) == "rotation") EXPECT_EQ(improper, 0) << name(kind);
+    if (std::string(key) == "rotation") {
+      EXPECT_EQ(improper, 0) << name(kind);
+    }
     EXPECT_EQ(static_cast<int>(tried.size()), expected) << name(kind);
   }
 }
