@@ -3,18 +3,16 @@
 # limit of the JSON reader: nesting past 64 levels, a number past a double's range, a key given
 # twice, a NUL, a byte-order mark.
 cmake_minimum_required(VERSION 3.25)
+include(${CMAKE_CURRENT_LIST_DIR}/../cmake/text_lines.cmake)
 foreach(dict IN LISTS DICTS)
-  # Brackets and semicolons hidden first: both would change how a CMake list splits.
   file(READ ${dict} text)
-  string(REPLACE "[" "@LB@" hidden "${text}")
-  string(REPLACE "]" "@RB@" hidden "${hidden}")
-  string(REPLACE ";" "@SC@" hidden "${hidden}")
-  string(REPLACE "\n" ";" lines "${hidden}")
+  text_lines(${dict} lines)
   set(entries 0)
   foreach(line IN LISTS lines)
     if(line MATCHES "^#" OR line STREQUAL "")
       continue()
     endif()
+    shown_line(line)
     if(NOT line MATCHES "^[A-Za-z0-9_]+=\"([^\"\\\\]|\\\\[\\\\\"]|\\\\x[0-9a-f][0-9a-f])*\"$")
       message(FATAL_ERROR "${dict}: not an entry libFuzzer reads: ${line}")
     endif()
