@@ -56,7 +56,7 @@ constexpr double kGraceAfterInterrupt = 3;
 constexpr double kMinShrinkSeconds = 0.1;
 constexpr double kShrinkSlackSeconds = 2;
 // A finding stored as found is asked again in a fresh process (in milliseconds, unless a party
-// hangs there) for the time left, or at least this long.
+// hangs there) for its share of the time left, or at least this long.
 constexpr double kMinAskAgainSeconds = 1;
 
 struct CampaignArgs {
@@ -141,8 +141,9 @@ struct Stored {
 // The case file of a finding, with `e` as its answers, asked again here first for at most
 // `ask_again_seconds` (0: not at all), as every command asks a case (a worker answers in a
 // process with a history, replay in a fresh one), unless the finding is a hang. When a party
-// answered differently here, the note says what the worker saw; when the time ran out or a
-// second interrupt came first, the worker's answers are stored, and the note says so.
+// answered differently here, the note says what the worker saw; when the time ran out, a
+// second interrupt came or no process could be started first, the worker's answers are stored,
+// and the note says why.
 Case stored_case(const Finding& f, const Input& input, const Evaluation& e, const CampaignArgs& args,
                  std::string not_shrunk, double ask_again_seconds) {
   const Provenance provenance{"campaign", args.seed, f.case_index, "seed " + std::to_string(args.seed)};
@@ -153,15 +154,25 @@ Case stored_case(const Finding& f, const Input& input, const Evaluation& e, cons
   // cases, whose code would run again in this process.
   const bool again = ask_again_seconds > 0 && !is_time_out(f.crash) &&
                      (f.crash.empty() || f.died_in == harness::DiedIn::second_opinions);
-  const std::optional<Evaluation> fresh =
-      again ? evaluate_again_within(input, ask_again_seconds, [] { return interrupts() > 1; }) : std::nullopt;
+  std::optional<Evaluation> fresh;
+  std::string not_asked;  // why it was not asked again, when it should have been
+  if (again && interrupts() > 1) {
+    not_asked = "interrupted twice";
+  } else if (again) {
+    try {
+      fresh = evaluate_again_within(input, ask_again_seconds, [] { return interrupts() > 1; });
+      if (!fresh) not_asked = interrupts() > 1 ? "interrupted twice" : "no time left";
+    } catch (const std::system_error& error) {
+      not_asked = std::string("no process could be started: ") + error.what();
+    }
+  }
   const Evaluation& stored = fresh ? *fresh : e;
   std::string note = "untriaged: " + (subject != nullptr ? "subject " + subject->path() + ": " : std::string()) +
                      signature_of(f.kind, stored) + (f.crash.empty() ? "" : "; " + f.crash);
   if (signature_of(f.kind, stored) != signature_of(f.kind, e)) {
     note += "; its worker saw " + signature_of(f.kind, e) + " (a party answers differently in a fresh process)";
   }
-  if (again && !fresh) note += "; as its worker answered it (no time left to ask it again in a fresh process)";
+  if (!not_asked.empty()) note += "; as its worker answered it, not asked again in a fresh process (" + not_asked + ")";
   Case c = case_of(input, stored, provenance, note);
   c.not_shrunk = std::move(not_shrunk);
   return c;
@@ -216,13 +227,12 @@ int shrink_and_store(const Finding& f, const CampaignArgs& args, const std::vect
   return harness::write_all(report, line) ? 0 : 1;
 }
 
-// Writes a finding as found, here, asked again as every command asks it within the time left
-// until `deadline`, or at least kMinAskAgainSeconds (but after a second interrupt: as the
-// worker answered it, at once).
-void store_as_found(const Finding& f, const CampaignArgs& args, const std::string& why, double deadline, Storage& s) {
+// Writes a finding as found, here, asked again as every command asks it within `share` seconds
+// (its share of the time left), or at least kMinAskAgainSeconds.
+void store_as_found(const Finding& f, const CampaignArgs& args, const std::string& why, double share, Storage& s) {
   try {
     const auto target = case_path(f, f.input, args);
-    const double ask_again = interrupts() < 2 ? std::max(deadline - monotonic_seconds(), kMinAskAgainSeconds) : 0;
+    const double ask_again = std::max(share, kMinAskAgainSeconds);
     const auto path = write_new_case_file(target, stored_case(f, f.input, f.evaluation, args, why, ask_again));
     s.how = path ? Storage::How::written : Storage::How::known;
     s.path = path ? path->string() : target.string();
@@ -304,7 +314,7 @@ Stored store_findings(const CampaignResult& r, const CampaignArgs& args, double 
                      crashed ? "a crash or hang is stored as found"
                      : interrupts() > 1 ? "interrupted twice"
                      : interrupts() > 0 ? "interrupted" : "no time left in --seconds",
-                     deadline, storage);
+                     share, storage);
     } else {
       harness::ChildEnd child;
       try {
@@ -313,7 +323,7 @@ Stored store_findings(const CampaignResult& r, const CampaignArgs& args, double 
                                       share + kShrinkSlackSeconds, [] { return interrupts() > 1; },
                                       harness::ChildGroup::own);
       } catch (const std::system_error& e) {  // no process to shrink in: stored as found
-        store_as_found(f, args, std::string("cannot shrink: ") + e.what(), deadline, storage);
+        store_as_found(f, args, std::string("cannot shrink: ") + e.what(), share, storage);
         continue;
       }
       std::istringstream report(child.output);
@@ -332,7 +342,7 @@ Stored store_findings(const CampaignResult& r, const CampaignArgs& args, double 
         storage.how = Storage::How::failed;
         storage.failure = rest;
       } else {  // the shrinking child crashed, ran out of time or was stopped first: as found
-        store_as_found(f, args, child.stopped ? "interrupted twice" : "shrinking " + child.what(), deadline, storage);
+        store_as_found(f, args, child.stopped ? "interrupted twice" : "shrinking " + child.what(), share, storage);
       }
     }
     if (storage.how == Storage::How::written) known = stored_case_names(args.corpora);  // it may be under the root

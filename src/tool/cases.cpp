@@ -12,6 +12,7 @@
 #include "harness/formats/number_text.h"
 #include "oracle/exact/exact_reference.h"
 #include "oracle/peers/peer_opinions.h"
+#include "tool/child_process.h"
 
 namespace cc::tool {
 
@@ -33,6 +34,7 @@ const peers::PeerOpinions& peer_opinions() {
 
 std::optional<Evaluation> evaluate_again_within(const Input& input, double seconds, const std::function<bool()>& stop) {
   const double limit = std::min(seconds, kPartyTimeLimit);
+  const double deadline = monotonic_seconds() + limit;  // both children share it
   // Cut short by the budget or the stop, not by the party: no answer at all.
   const auto cut_short = [&](const std::string& how) { return (stop && stop()) || (is_time_out(how) && limit < kPartyTimeLimit); };
   std::string how;
@@ -41,6 +43,8 @@ std::optional<Evaluation> evaluate_again_within(const Input& input, double secon
   // The child died: crosscheck's library alone, in a child of its own, tells whose fault. (A
   // subject is asked in its own server, whose failures are its answer's: the child never asks it.)
   if (subject_under_test() == nullptr) {
+    const double left = deadline - monotonic_seconds();
+    if (left <= 0 && limit < kPartyTimeLimit) return std::nullopt;
     const ChildEnd library = run_in_child(
         [&](int) {
           try {
@@ -50,7 +54,7 @@ std::optional<Evaluation> evaluate_again_within(const Input& input, double secon
           (void)library_alternatives(input);  // its other ways too, as the campaign asks them in the library
           return 0;
         },
-        limit, stop);
+        limit < kPartyTimeLimit ? left : kPartyTimeLimit, stop);
     if (cut_short(library.what())) return std::nullopt;
     if (!library.succeeded()) {
       return evaluation_after_death(input, exact_reference(), peer_opinions(), DiedIn::library, library.what());

@@ -45,8 +45,9 @@ std::string system_error_text() { return std::strerror(errno); }
 constexpr unsigned long long kLeastFreeBytes = 1 << 20;
 
 // Why `path` cannot be reached at all, or "": longer than the system allows (the whole path or
-// one name), or a symbolic link on the way that loops or leads nowhere. Names that do not exist
-// yet are fine (they will be made).
+// one name), a name on the way that cannot be looked at (no permission), or a symbolic link on
+// the way that loops, leads nowhere or cannot be followed. Names that do not exist yet are fine
+// (they will be made), and so is a name under a file (the caller says it is no folder).
 std::string unreachable(const std::filesystem::path& path) {
   const std::string whole = std::filesystem::absolute(path).string();
   if (whole.size() >= PATH_MAX) {

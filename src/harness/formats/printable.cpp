@@ -7,7 +7,7 @@ namespace {
 
 // The length of the well-formed UTF-8 sequence of more than one byte at `at`, or 0 (RFC 3629:
 // no overlong forms, no surrogates, nothing past U+10FFFF), nor the C1 controls U+0080-U+009F,
-// which terminals take as commands as they take an escape.
+// which terminals take as commands as they take an escape, nor the bidirectional controls.
 std::size_t utf8_length(std::string_view text, std::size_t at) {
   const auto byte = [&](std::size_t i) { return static_cast<unsigned char>(text[i]); };
   const unsigned char first = byte(at);
@@ -30,6 +30,12 @@ std::size_t utf8_length(std::string_view text, std::size_t at) {
   if (at + n > text.size() || byte(at + 1) < lo || byte(at + 1) > hi) return 0;
   for (std::size_t i = 2; i < n; ++i) {
     if (byte(at + i) < 0x80 || byte(at + i) > 0xbf) return 0;
+  }
+  // The bidirectional embeddings, overrides and isolates (U+202A-U+202E, U+2066-U+2069) reorder
+  // what a terminal shows after them: escaped too.
+  if (first == 0xe2 && ((byte(at + 1) == 0x80 && byte(at + 2) >= 0xaa && byte(at + 2) <= 0xae) ||
+                        (byte(at + 1) == 0x81 && byte(at + 2) >= 0xa6 && byte(at + 2) <= 0xa9))) {
+    return 0;
   }
   return n;
 }

@@ -8,7 +8,7 @@
 namespace cc::harness {
 
 /// The text with every control character (a NUL, an escape, a newline, DEL, the C1 controls
-/// U+0080-U+009F) and every byte that is not part of well-formed UTF-8 written as \xNN, byte by
+/// U+0080-U+009F, the bidirectional controls U+202A-U+202E and U+2066-U+2069) and every byte that is not part of well-formed UTF-8 written as \xNN, byte by
 /// byte; other well-formed UTF-8 beyond ASCII is kept.
 std::string printable(std::string_view text);
 

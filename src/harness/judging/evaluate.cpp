@@ -70,13 +70,12 @@ std::string_view died_in_name(DiedIn where) {
     case DiedIn::library: return "the library";
     case DiedIn::exact: return "the exact reference";
     case DiedIn::second_opinions: return "the second opinions (FCL/libccd, Bullet, ODE)";
-    case DiedIn::between_cases: return "between cases";
   }
   return "?";
 }
 
 std::string death_text(const std::string& how, DiedIn where) {
-  return how + (where == DiedIn::between_cases ? " " : " in ") + std::string(died_in_name(where));
+  return how + " in " + std::string(died_in_name(where));
 }
 
 Evaluation evaluation_after_death(const Input& input, const ExactReference& exact, const SecondOpinion& second,
@@ -91,8 +90,8 @@ Evaluation evaluation_after_death(const Input& input, const ExactReference& exac
   if (where != DiedIn::second_opinions) {  // nothing is invented for a party that was not asked
     e.exact.decided = false;
     e.exact.margin = NAN;
-    e.exact.note = where == DiedIn::exact ? failure : "not computed: " + failure;
     const bool library = where == DiedIn::library;
+    e.exact.note = library ? "not computed: " + failure : failure;
     e.verdict.cls = library ? CaseClass::impl_bug : CaseClass::undecided;
     e.verdict.parties = {{"library", library ? Standing::failed : Standing::not_applicable, failure}};
     return e;

@@ -42,15 +42,13 @@ std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactRefer
                                             double timeout_seconds = 0, std::string* how = nullptr,
                                             const std::function<bool()>& stop = {});
 
-/// The party a case's process died in (crashed, exited, or was killed at its time limit), or
-/// none of them: between cases (drawing the case, judging it, passing it on).
-enum class DiedIn { library, exact, second_opinions, between_cases };
+/// The party a case's process died in (crashed, exited, or was killed at its time limit).
+enum class DiedIn { library, exact, second_opinions };
 
-/// "the library", "the exact reference", "the second opinions (FCL/libccd, Bullet, ODE)",
-/// "between cases".
+/// "the library", "the exact reference", "the second opinions (FCL/libccd, Bullet, ODE)".
 std::string_view died_in_name(DiedIn where);
 
-/// How a death reads in a case: `how` (ChildEnd::what()) "in" the party, or "between cases".
+/// How a death reads in a case: `how` (ChildEnd::what()) "in" the party.
 std::string death_text(const std::string& how, DiedIn where);
 
 /// What is known of a case whose process died in `where` (`how`: ChildEnd::what(), e.g.
@@ -61,8 +59,7 @@ std::string death_text(const std::string& how, DiedIn where);
 /// failure, the exact verdict not computed, no opinion: an impl_bug. In the exact reference:
 /// the library's answer, no verdict: undecided. In the second opinions: the library's answer,
 /// the exact verdict, each second-opinion party failed (timed out when `how` is a time-out),
-/// judged: an oracle_crash unless the library is wrong. Between cases: the library's answer,
-/// the exact verdict not computed, no opinion: undecided (the harness itself died).
+/// judged: an oracle_crash unless the library is wrong.
 Evaluation evaluation_after_death(const Input& input, const ExactReference& exact, const SecondOpinion& second,
                                   DiedIn where, const std::string& how);
 

@@ -29,14 +29,19 @@ bool same(const Opinion& a, const Opinion& b) {
   if (timed_out(a) || timed_out(b)) return true;
   return a.status == b.status && (a.status != Opinion::Status::answered || answer_json(a.answer) == answer_json(b.answer));
 }
-// Whether some party (the library, the exact reference, a second opinion) timed out in the
-// record or now. A process cut off at its time limit leaves the parties after it unasked
-// (evaluation_after_death), so with a time-out on either side, an exact verdict or a party
-// missing on one side and the class are no change either.
+// Whether the library or the exact reference timed out in the record or now: the parties asked
+// after it in the process that was cut off went unasked (evaluation_after_death), the exact
+// reference among them.
+bool early_time_out(const Case& c, const Evaluation& now) {
+  return is_time_out(c.library_failure) || is_time_out(now.library_failure) || is_time_out(c.exact.note) ||
+         is_time_out(now.exact.note);
+}
+// Whether some party, a second opinion too, timed out in the record or now: then a party missing
+// on one side (the library's other ways are not asked when the second opinions are cut off) and
+// the class that changed with it are no change either.
 bool any_time_out(const Case& c, const Evaluation& now) {
   const auto in = [](const std::vector<Opinion>& os) { return std::any_of(os.begin(), os.end(), timed_out); };
-  return is_time_out(c.library_failure) || is_time_out(now.library_failure) || is_time_out(c.exact.note) ||
-         is_time_out(now.exact.note) || in(c.opinions) || in(now.opinions);
+  return early_time_out(c, now) || in(c.opinions) || in(now.opinions);
 }
 
 std::string contract_text(const ExactVerdict& v) {
@@ -62,9 +67,9 @@ std::vector<std::string> replay_changes(const Case& c, const Evaluation& now) {
     out.push_back("the library's answer changed: recorded " + library_text(c.library, c.library_failure) + ", now " +
                   library_text(now.library, now.library_failure));
   }
-  // With a time-out, the exact verdict and which parties answered depend on where time ran out.
+  // With a time-out, which parties answered depends on where time ran out.
   const bool time_out = any_time_out(c, now);
-  if (!time_out) {
+  if (!early_time_out(c, now)) {
     if (!(answer_json(now.exact.answer) == answer_json(c.exact.answer))) {
       out.push_back("the exact reference's answer changed: recorded " + text_of(c.exact.answer) + ", now " +
                     text_of(now.exact.answer));

@@ -35,7 +35,8 @@ std::int64_t now_ns() {
 
 // What a worker is doing, in memory shared with the supervisor: enough to rebuild the case it
 // is on if it dies, and to tell which party it was in.
-enum Phase : int { idle = 0, in_library = 1, in_exact = 2, in_second_opinion = 3 };
+// A worker is `starting` until its oracles are made, then `idle` between cases.
+enum Phase : int { idle = 0, in_library = 1, in_exact = 2, in_second_opinion = 3, starting = 4 };
 
 constexpr std::size_t kKinds = std::size(kAllQueryKinds);
 constexpr std::size_t kClasses = std::size(kAllClasses);
@@ -84,14 +85,15 @@ void note_fatal_signals(Slot& slot) {
   }
 }
 
+// The party a worker died in (a phase in a case: in_library, in_exact or in_second_opinion).
 DiedIn died_in(int phase) {
-  switch (phase) {
-    case in_library: return DiedIn::library;
-    case in_exact: return DiedIn::exact;
-    case in_second_opinion: return DiedIn::second_opinions;
-  }
-  return DiedIn::between_cases;
+  return phase == in_library ? DiedIn::library : (phase == in_exact ? DiedIn::exact : DiedIn::second_opinions);
 }
+
+// A worker that dies outside every party (starting, or between cases: drawing, judging or
+// passing a case on) died of the harness's own fault, which no case can hold: a problem of the
+// run. After this many, its slot is not given another worker.
+constexpr int kHarnessDeathsPerSlot = 3;
 
 void write_line(int fd, const std::string& line) { write_all(fd, line + "\n"); }
 
@@ -141,6 +143,7 @@ constexpr int kRetired = 3;
   note_fatal_signals(slot);
   const auto exact = oracles.exact();
   const auto second = oracles.second();
+  slot.phase = idle;
   const int abandoned_before = second->abandoned_calls();  // inherited: a fresh worker cannot undo it
   while (interrupts() == 0 && now_ns() < deadline_ns) {
     // Equal time for every kind: the one this worker has spent least time on goes next.
@@ -240,6 +243,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
   const auto stopping = [&] { return interrupts() > 0 || now_ns() >= deadline_ns; };
   // Starts worker w; false (and a problem recorded) when the pipe or the fork fails.
   const auto spawn = [&](int w) {
+    slots[w].phase = starting;
     try {
       const Child child = start_child([&](int out) -> int { run_worker(w, options, oracles, slots[w], out, deadline_ns); });
       workers[static_cast<std::size_t>(w)] = {child.pid, child.out, "", false};
@@ -258,6 +262,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
   const auto exact = oracles.exact();
   const auto second = oracles.second();
   std::map<QueryKind, KindTally> crashed;  // cases on which a worker died
+  std::vector<int> harness_deaths(workers.size(), 0);  // per slot: deaths outside every party
   const auto record_finding = [&](QueryKind kind, std::uint64_t index, const std::string& crash, int phase,
                                   const std::optional<Json>& answers) {
     Finding f;
@@ -382,6 +387,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       const ChildEnd end = wait_child(w.pid);
       Slot& slot = slots[i];
       const bool retired = end.status == kRetired && slot.phase == idle;
+      const bool in_a_case = slot.phase != idle && slot.phase != starting;
       // Ended by the SIGTERM or SIGKILL that stopped the run: its last case is not a finding.
       const bool stopped = w.stopped || (stop_ns != 0 && !slot.hung && end.signal == SIGTERM);
       // Killed from outside (a SIGKILL the supervisor did not send, a signal another process
@@ -390,8 +396,8 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       const bool from_outside = !stopped && !retired && end.signal != 0 && !slot.hung &&
                                 (end.signal == SIGKILL || slot.outside_signal == end.signal);
       const bool asked_before = slot.again_kind == slot.kind && slot.again_index == slot.case_index;
-      const bool interrupted = from_outside && (slot.phase == idle || !asked_before);
-      if (interrupted && slot.phase != idle && !stopping()) {  // a run that stops asks nothing again
+      const bool interrupted = from_outside && (!in_a_case || !asked_before);
+      if (interrupted && in_a_case && !stopping()) {  // a run that stops asks nothing again
         slot.again_kind = slot.kind.load();
         slot.again_index = slot.case_index.load();
         slot.ask_again = true;
@@ -399,12 +405,21 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
         ++result.asked_again;
       }
       // An exit in the middle of a case, whatever its status (0 too), is a death in that case.
-      const bool died = (!end.succeeded() || slot.phase != idle) && !retired && !stopped && !interrupted;
+      const bool died = (!end.succeeded() || in_a_case) && !retired && !stopped && !interrupted;
       // A worker that ended early without dying (retired, interrupted) is replaced.
       if (!died && !stopped && !stopping()) {
         if (spawn(static_cast<int>(i))) continue;
       }
-      if (died) {
+      if (died && !in_a_case) {
+        const bool was_starting = slot.phase == starting;
+        result.problems.push_back("worker " + std::to_string(i) + " " + end.what() +
+                                  (was_starting ? " while starting"
+                                                : " between cases, after " + std::string(name(static_cast<QueryKind>(slot.kind.load()))) +
+                                                      " case " + std::to_string(slot.case_index.load())) +
+                                  " (the harness's own failure: no party was asking)");
+        slot.phase = idle;
+        if (++harness_deaths[i] < kHarnessDeathsPerSlot && !stopping() && spawn(static_cast<int>(i))) continue;
+      } else if (died) {
         std::string what = end.what();
         if (from_outside) what += ", sent by another process, in the case asked again after the same";
         if (slot.hung) what = std::string(kTimedOut) + ": hung for more than " + format_seconds(options.case_timeout_seconds);
@@ -421,7 +436,7 @@ CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracl
       Slot& slot = slots[i];
       const int phase = slot.phase;
       if (phase == in_library && subject_under_test() != nullptr) continue;
-      if (options.case_timeout_seconds > 0 && workers[i].fd >= 0 && !workers[i].stopped && phase > idle &&
+      if (options.case_timeout_seconds > 0 && workers[i].fd >= 0 && !workers[i].stopped && phase != idle && phase != starting &&
           !slot.hung && now_ns() - slot.started_ns > static_cast<std::int64_t>(options.case_timeout_seconds * 1e9)) {
         slot.hung = true;
         kill(workers[i].pid, SIGKILL);

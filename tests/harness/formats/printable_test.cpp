@@ -23,6 +23,10 @@ TEST(Printable, KeepsWellFormedUtf8AndEscapesTheRest) {
   EXPECT_EQ(printable("\xed\xa0\x80"), "\\xed\\xa0\\x80");  // a surrogate
   EXPECT_EQ(printable("\xf4\x90\x80\x80"), "\\xf4\\x90\\x80\\x80");  // past U+10FFFF
   EXPECT_EQ(printable("\xef\xbb\xbf"), "\xef\xbb\xbf");    // a byte-order mark is a character
+  // A right-to-left override (U+202E) and isolate (U+2067) reorder what follows: escaped; the
+  // characters just outside their ranges (U+2029, U+202F, U+2065, U+206A) are kept.
+  EXPECT_EQ(printable("a\xe2\x80\xae" "b\xe2\x81\xa7" "c"), "a\\xe2\\x80\\xae" "b\\xe2\\x81\\xa7" "c");
+  EXPECT_EQ(printable("\xe2\x80\xa9\xe2\x80\xaf\xe2\x81\xa5\xe2\x81\xaa"), "\xe2\x80\xa9\xe2\x80\xaf\xe2\x81\xa5\xe2\x81\xaa");
 }
 
 }  // namespace

@@ -66,21 +66,6 @@ TEST(EvaluationAfterDeath, InTheLibraryItsFailureAndNoOpinion) {
   EXPECT_EQ(e.verdict.parties[0].standing, Standing::failed);
 }
 
-// Dying between cases (drawing, judging, passing a case on) is the harness's own failure, no
-// party's: the library's answer, nothing else, undecided.
-TEST(EvaluationAfterDeath, BetweenCasesNoPartyIsBlamed) {
-  const exact::ExactRationalReference exact;
-  const Evaluation e = evaluation_after_death(kOverlapping, exact, Crashing{}, DiedIn::between_cases, "killed by signal 6 (Aborted)");
-  EXPECT_TRUE(e.library_failure.empty());
-  EXPECT_TRUE(e.library.hit);
-  EXPECT_FALSE(e.exact.decided);
-  EXPECT_EQ(e.exact.note, "not computed: killed by signal 6 (Aborted) between cases");
-  EXPECT_TRUE(e.opinions.empty());
-  EXPECT_EQ(e.verdict.cls, CaseClass::undecided);
-  ASSERT_FALSE(e.verdict.parties.empty());
-  EXPECT_EQ(e.verdict.parties[0].standing, Standing::not_applicable);
-}
-
 // The same two parties, answering as the library does.
 class Answering final : public SecondOpinion {
  public:
@@ -117,6 +102,12 @@ TEST(EvaluationAfterDeath, ATimeOutAnywhereReplaysUnchangedBothWays) {
     const Evaluation crashed = evaluation_after_death(kOverlapping, exact, second, where, "killed by signal 11 (Segmentation fault)");
     EXPECT_FALSE(replay_changes(stored(crashed), whole).empty()) << died_in_name(where);
   }
+  // The second opinions cut off leave the exact verdict asked on both sides: still compared.
+  Case c = stored(evaluation_after_death(kOverlapping, exact, second, DiedIn::second_opinions, "timed out: ran past its time limit"));
+  c.exact.margin = 0.125;
+  const std::vector<std::string> changes = replay_changes(c, whole);
+  ASSERT_EQ(changes.size(), 1u);
+  EXPECT_NE(changes[0].find("the exact margin changed"), std::string::npos) << changes[0];
 }
 
 TEST(EvaluationAfterDeath, InTheExactReferenceNoVerdict) {

@@ -138,7 +138,7 @@ TEST(Campaign, AFatalSignalNoProcessSentIsTakenNotLost) {
   options.seed = 7;
   const CampaignResult r = aabb_campaign<WaitingForATimer>(options, folder.path());
   const auto timers = std::distance(std::filesystem::directory_iterator(folder.path()), {});
-  ASSERT_GT(timers, 1);
+  ASSERT_GT(timers, 3);  // (a lost signal resets the handler: the next one in the same worker is taken)
   // Every timer is a finding (the last one may have gone off as the run stopped).
   EXPECT_GE(static_cast<long>(r.findings.size()), timers - 1) << "a timer's signal was lost";
   for (const Finding& f : r.findings) {
@@ -159,19 +159,19 @@ class Bandless final : public SecondOpinion {
   std::vector<PartyBand> parties(QueryKind) const override { return {{"fcl.AABBd::overlap", kBand}}; }
 };
 
-TEST(Campaign, ADeathBetweenCasesBlamesNoParty) {
+// Dying between cases is the harness's own failure, which no case can hold: a problem of the
+// run, never a finding; a slot whose workers keep dying so is not given another for ever.
+TEST(Campaign, ADeathBetweenCasesIsAProblemOfTheRunNotAFinding) {
   CampaignOptions options;
   options.seconds = 2;
   options.seed = 7;
   const CampaignResult r = aabb_campaign<Bandless>(options);
-  ASSERT_FALSE(r.findings.empty());
-  for (const Finding& f : r.findings) {
-    EXPECT_TRUE(exits_on(f.input)) << f.crash;
-    EXPECT_EQ(f.crash, "exited with status 70 between cases");  // kChildThrew
-    EXPECT_EQ(f.died_in, DiedIn::between_cases);
-    EXPECT_EQ(f.evaluation.verdict.cls, CaseClass::undecided);
-    EXPECT_TRUE(f.evaluation.opinions.empty());
-    EXPECT_FALSE(f.evaluation.exact.decided);
+  EXPECT_TRUE(r.findings.empty()) << r.findings.front().crash;
+  ASSERT_FALSE(r.problems.empty());
+  EXPECT_LE(r.problems.size(), 6u) << "at most 3 per slot";
+  for (const std::string& p : r.problems) {
+    EXPECT_NE(p.find("exited with status 70 between cases, after aabb_aabb case "), std::string::npos) << p;
+    EXPECT_NE(p.find("(the harness's own failure: no party was asking)"), std::string::npos) << p;
   }
 }
 
