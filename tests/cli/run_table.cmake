@@ -12,6 +12,7 @@
 cmake_minimum_required(VERSION 3.25)
 file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK}/empty)
+file(MAKE_DIRECTORY ${WORK}/shrunk_into)  # a folder to shrink into
 file(WRITE ${WORK}/blocked/obb_obb "")  # a folder for case files whose query folder is a file
 file(CREATE_LINK loop ${WORK}/loop SYMBOLIC)
 file(CREATE_LINK nowhere/x ${WORK}/dangling SYMBOLIC)

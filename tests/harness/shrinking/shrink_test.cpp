@@ -148,6 +148,17 @@ Evaluation planted_walls(const Input& in) {
   return e;
 }
 
+// Out of time before the first attempt: nothing is tried, neither the lists nor the values, and
+// the result says it ran out of time.
+TEST(Shrink, RespectsTheTimeBudgetFromTheFirstAttempt) {
+  DiscWallsInput start{{{0.3, 0.7}, 0.1}, {}};
+  for (int i = 0; i < 11; ++i) start.walls.push_back({{i == 6 ? 7.0 : 0.1 * i, 1.5}, {2.5, 0.1 * i}});
+  const ShrinkResult r = shrink(start, base_evaluation(), planted_walls, 4000, 0);
+  EXPECT_EQ(r.attempts, 0);
+  EXPECT_TRUE(r.out_of_time);
+  EXPECT_EQ(std::get<DiscWallsInput>(r.input).walls.size(), 11u);
+}
+
 TEST(Shrink, ListsOfWallsLoseTheWallsThatDoNotMatter) {
   DiscWallsInput start{{{0.3, 0.7}, 0.1}, {}};
   for (int i = 0; i < 11; ++i) start.walls.push_back({{i == 6 ? 7.0 : 0.1 * i, 1.5}, {2.5, 0.1 * i}});
