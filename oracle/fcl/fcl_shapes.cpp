@@ -22,6 +22,12 @@ bool fcl_collide(const fcl::CollisionGeometryd& a, const fcl::Transform3d& ta, c
 }
 
 Opinion fcl_shape_triangle(const Vec3& half, const Mat3& axes, const Vec3& center, const Triangle& t) {
+  // On such input libccd's MPR branches on values it never set (valgrind: "conditional jump
+  // depends on uninitialised values" in ccdMPRIntersect): two fresh processes answer the same
+  // case differently, so no answer of its can be recorded.
+  bool all_finite = finite(half) && finite(center) && finite(t.v[0]) && finite(t.v[1]) && finite(t.v[2]);
+  for (const Vec3& axis : axes.col) all_finite = all_finite && finite(axis);
+  if (!all_finite) return not_applicable("a NaN or infinite coordinate, on which libccd reads memory it never set");
   const fcl::Boxd box(2 * half.x, 2 * half.y, 2 * half.z);
   const fcl::detail::GJKSolver_libccd<double> solver;
   const fcl::Transform3d tf = to_fcl_transform(axes, center);

@@ -98,5 +98,22 @@ TEST(FclSecondOpinion, MirrorImageBoxFramesAreHandedToFclAsRotations) {
   EXPECT_TRUE(opinions[0].answer.hit);
 }
 
+// On a NaN or an infinite coordinate libccd reads memory it never set, and fresh processes
+// answered a stored case (triangle with a vertex at z = -inf) hit and miss: no answer is taken.
+TEST(FclSecondOpinion, LibccdIsNotAskedAboutNonFiniteCoordinates) {
+  harness::TriAabbInput in;
+  in.tri = {{Vec3{-131078.75, 4, 8.05928447842598}, Vec3{-262143.99999999997, 10, -INFINITY},
+             Vec3{-131073.41413052662, 4, 10.05928447842598}}};
+  in.box = {{-131072, 6, 3}, {-131072, 6, 3.1185689568519592}};
+  const auto opinions = ask(in);
+  ASSERT_EQ(opinions.size(), 1u);
+  EXPECT_EQ(opinions[0].status, Opinion::Status::not_applicable);
+  EXPECT_EQ(opinions[0].detail, "a NaN or infinite coordinate, on which libccd reads memory it never set");
+  in.tri.v[1].z = NAN;
+  EXPECT_EQ(ask(in)[0].status, Opinion::Status::not_applicable);
+  in.tri.v[1].z = 10;
+  EXPECT_EQ(ask(in)[0].status, Opinion::Status::answered);
+}
+
 }  // namespace
 }  // namespace cc::fcl_oracle
