@@ -12,7 +12,27 @@ std::uint64_t splitmix(std::uint64_t& x) {
 
 std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
 
+thread_local DrawRecorder* t_recorder = nullptr;
+
 }  // namespace
+
+DrawRecorder* record_draws(DrawRecorder* recorder) {
+  DrawRecorder* before = t_recorder;
+  t_recorder = recorder;
+  return before;
+}
+
+std::uint64_t Choices::draw(std::uint64_t n, const std::source_location& site) {
+  const std::uint64_t value = choose(n);
+  if (t_recorder != nullptr) t_recorder->drew(site, n, value);
+  return value;
+}
+
+bool Choices::chance(int percent, const std::source_location& site) {
+  const bool yes = choose(100) >= static_cast<std::uint64_t>(100 - percent);
+  if (t_recorder != nullptr) t_recorder->took_chance(site, percent, yes);
+  return yes;
+}
 
 RandomChoices::RandomChoices(std::uint64_t seed) {
   for (auto& s : s_) s = splitmix(seed);
@@ -30,11 +50,11 @@ std::uint64_t RandomChoices::next() {
   return result;
 }
 
-std::uint64_t RandomChoices::draw(std::uint64_t n) {
+std::uint64_t RandomChoices::choose(std::uint64_t n) {
   return next() % n;  // the bias for n far below 2^64 is irrelevant here
 }
 
-std::uint64_t ReplayChoices::draw(std::uint64_t n) {
+std::uint64_t ReplayChoices::choose(std::uint64_t n) {
   if (next_ >= recorded_.size()) return 0;
   return recorded_[next_++] % n;
 }

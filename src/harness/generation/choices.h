@@ -5,28 +5,46 @@
 #pragma once
 
 #include <cstdint>
+#include <source_location>
 #include <span>
 #include <vector>
 
 namespace cc::harness {
 
+/// What a generator drew where, told while installed (record_draws): for the test that every
+/// branch of every draw is taken.
+class DrawRecorder {
+ public:
+  virtual ~DrawRecorder() = default;
+  /// A draw in [0, n) gave `value` at `site`.
+  virtual void drew(const std::source_location& site, std::uint64_t n, std::uint64_t value) = 0;
+  /// A chance of `percent` came out `yes` at `site`.
+  virtual void took_chance(const std::source_location& site, int percent, bool yes) = 0;
+};
+
+/// Installs `recorder` for this thread's draws (nullptr: none); returns the one it replaces.
+DrawRecorder* record_draws(DrawRecorder* recorder);
+
 class Choices {
  public:
   virtual ~Choices() = default;
-  /// A choice in [0, n) (n >= 1); 0 is the simplest.
-  virtual std::uint64_t draw(std::uint64_t n) = 0;
+  /// A choice in [0, n) (n >= 1); 0 is the simplest. `site`: the generator's line that draws it.
+  std::uint64_t draw(std::uint64_t n, const std::source_location& site = std::source_location::current());
   /// A choice made with probability about percent/100; false is the simplest (a draw of 0).
-  bool chance(int percent) { return draw(100) >= static_cast<std::uint64_t>(100 - percent); }
+  bool chance(int percent, const std::source_location& site = std::source_location::current());
+
+ private:
+  virtual std::uint64_t choose(std::uint64_t n) = 0;
 };
 
 /// Choices from a seeded pseudo-random generator (xoshiro256**).
 class RandomChoices final : public Choices {
  public:
   explicit RandomChoices(std::uint64_t seed);
-  std::uint64_t draw(std::uint64_t n) override;
   std::uint64_t next();
 
  private:
+  std::uint64_t choose(std::uint64_t n) override;
   std::uint64_t s_[4];
 };
 
@@ -34,9 +52,9 @@ class RandomChoices final : public Choices {
 class ReplayChoices final : public Choices {
  public:
   explicit ReplayChoices(std::span<const std::uint64_t> recorded) : recorded_(recorded) {}
-  std::uint64_t draw(std::uint64_t n) override;
 
  private:
+  std::uint64_t choose(std::uint64_t n) override;
   std::span<const std::uint64_t> recorded_;
   std::size_t next_ = 0;
 };
