@@ -150,8 +150,8 @@ Case stored_case(const Finding& f, const Input& input, const Evaluation& e, cons
   const harness::Subject* subject = harness::subject_under_test();
   // A death in the second opinions is asked again too (one in a fresh process is the same
   // record; a worker may die of what earlier cases left in it), but a hang is not (it would cost
-  // the whole time limit again), nor a death in the library, the exact reference or between
-  // cases, whose code would run again in this process.
+  // the whole time limit again), nor a death in the exact reference, which would run its code
+  // again in this process, nor one in the library, stored as its worker saw it.
   const bool again = ask_again_seconds > 0 && !is_time_out(f.crash) &&
                      (f.crash.empty() || f.died_in == harness::DiedIn::second_opinions);
   std::optional<Evaluation> fresh;
