@@ -24,25 +24,13 @@
 #include "oracle/exact/exact_triangle_intersection.h"
 #include "oracle/exact/rational.h"
 #include "test_random.h"
+#include "triangle_intersection_check.h"
 
 namespace cc {
 namespace {
 
-using exact::QVec3;
-using exact::Rational;
 
-std::string describe(const Triangle& a, const Triangle& b) {
-  std::string s;
-  char buf[96];
-  for (const Triangle* t : {&a, &b}) {
-    for (const Vec3& p : t->v) {
-      std::snprintf(buf, sizeof buf, "(%a, %a, %a) ", p.x, p.y, p.z);
-      s += buf;
-    }
-    s += "| ";
-  }
-  return s;
-}
+using test::describe;
 
 // The axis of the largest component of the normal as the library computes it (largest_axis in
 // triangle_intersection.cpp: ties go to the lower axis).
@@ -149,18 +137,8 @@ TEST(IntersectTrianglesProjections, CoplanarPairsOnNearTiePlanesAgreeWithTheExac
     // pairs whose projections differ, and one in 64 of the others.
     if (!corners.empty() && (differs ? hausdorff_checked < 200 : n % 64 == 0)) {
       ++hausdorff_checked;
-      double m = 0, kappa = 1;
-      for (const Triangle* t : {&a, &b}) {
-        for (const Vec3& p : t->v) m = std::max(m, max_abs(p));
-      }
-      std::vector<QVec3> truth, said;
-      for (const auto& c : corners) truth.push_back(c.point), kappa = std::max(kappa, c.condition);
-      for (int i = 0; i < r.count; ++i) said.push_back(exact::rational(r.points[i]));
-      Rational worst = 0;
-      for (const QVec3& p : said) worst = std::max(worst, exact::distance2_to_hull(p, truth));
-      for (const QVec3& p : truth) worst = std::max(worst, exact::distance2_to_hull(p, said));
-      const double bound = 0x1p-44 * m * kappa + 0x1p-1074;
-      ASSERT_LE(std::sqrt(exact::to_double(worst)), bound) << "kappa " << kappa << ": " << describe(a, b);
+      const test::CornerDistance d = test::corner_distance(a, b, r, corners);
+      ASSERT_LE(d.distance, d.bound) << "kappa " << d.kappa << ": " << describe(a, b);
     }
     const bool over = corners.size() >= 3, touch = !corners.empty() && corners.size() <= 2;
     overlapping += over;

@@ -15,41 +15,18 @@
 #include "oracle/exact/exact_triangle_intersection.h"
 #include "oracle/exact/rational.h"
 #include "test_random.h"
+#include "triangle_intersection_check.h"
 
 namespace cc {
 namespace {
 
-using exact::QVec3;
-using exact::Rational;
+using test::describe;
+
 
 struct Met {
   int cases = 0, met = 0, touching = 0, coplanar_polygons = 0, grazing = 0, degenerate = 0;
   double worst = 0;  // the largest Hausdorff distance over its bound
 };
-
-std::string describe(const Triangle& a, const Triangle& b) {
-  std::string s;
-  char buf[96];
-  for (const Triangle* t : {&a, &b}) {
-    for (const Vec3& p : t->v) {
-      std::snprintf(buf, sizeof buf, "(%a, %a, %a) ", p.x, p.y, p.z);
-      s += buf;
-    }
-    s += "| ";
-  }
-  return s;
-}
-
-std::string points_text(const std::vector<QVec3>& points) {
-  std::string s;
-  char buf[96];
-  for (const QVec3& q : points) {
-    const Vec3 p = exact::to_double(q);
-    std::snprintf(buf, sizeof buf, "(%.17g, %.17g, %.17g) ", p.x, p.y, p.z);
-    s += buf;
-  }
-  return s;
-}
 
 void check(const Triangle& a, const Triangle& b, Met& met) {
   const TriangleIntersection r = intersect_triangles(a, b);
@@ -58,24 +35,13 @@ void check(const Triangle& a, const Triangle& b, Met& met) {
   ASSERT_EQ(r.empty(), corners.empty()) << describe(a, b);
   if (corners.empty()) return;
   ++met.met;
-  double m = 0, kappa = 1;
-  for (const Triangle* t : {&a, &b}) {
-    for (const Vec3& p : t->v) m = std::max(m, max_abs(p));
-  }
-  std::vector<QVec3> truth, said;
-  for (const auto& c : corners) truth.push_back(c.point), kappa = std::max(kappa, c.condition);
-  for (int i = 0; i < r.count; ++i) said.push_back(exact::rational(r.points[i]));
-  met.touching += truth.size() == 1;
-  met.coplanar_polygons += truth.size() >= 3;
-  met.grazing += kappa > 1e3;
-  const double bound = 0x1p-44 * m * kappa + 0x1p-1074;
-  Rational worst = 0;
-  for (const QVec3& p : said) worst = std::max(worst, exact::distance2_to_hull(p, truth));
-  for (const QVec3& p : truth) worst = std::max(worst, exact::distance2_to_hull(p, said));
-  const double distance = std::sqrt(exact::to_double(worst));
-  met.worst = std::max(met.worst, distance / bound);
-  ASSERT_LE(distance, bound) << "kappa " << kappa << ", said " << points_text(said) << ", exact " << points_text(truth)
-                             << ": " << describe(a, b);
+  const test::CornerDistance d = test::corner_distance(a, b, r, corners);
+  met.touching += d.truth.size() == 1;
+  met.coplanar_polygons += d.truth.size() >= 3;
+  met.grazing += d.kappa > 1e3;
+  met.worst = std::max(met.worst, d.distance / d.bound);
+  ASSERT_LE(d.distance, d.bound) << "kappa " << d.kappa << ", said " << test::points_text(d.said) << ", exact "
+                                 << test::points_text(d.truth) << ": " << describe(a, b);
 }
 
 Vec3 on_edge(const Triangle& t, int i, double s) { return t.v[i] + s * (t.v[(i + 1) % 3] - t.v[i]); }
