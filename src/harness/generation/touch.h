@@ -14,14 +14,17 @@ void make_touching(Input& input, ValueSource& values);
 
 /// Mesh b translated so that one of its vertices lands on one of a's (exactly when both poses
 /// are exact, as signed permutations with simple translations are; otherwise within the
-/// transforms' rounding).
+/// rounding of the vertices placed, whatever b's translation was before).
 void touch_at_vertices(MeshPair& m, Choices& choices);
 
-/// B's centre against a face of A: at A's half extent plus B's reach along A's face normal,
-/// plus an offset within the face. With `nudged`, a few ULPs off.
+/// B moved so that its corner farthest against the normal of a face of A (on a tie, either)
+/// lands on a point of that face (its centre, a point halfway to an edge, on an edge, a corner):
+/// B touches A there, within the rounding of the moves. With `nudged`, a few ULPs of the reach
+/// off along the normal, into A or away from it.
 void place_against_face(const Obb& a, Obb& b, ValueSource& values, bool nudged);
 
-/// B (its extent kept) moved against a face of A on one axis, above or below.
+/// B (its extents kept) moved against a face of A on one axis, above or below, and onto A's
+/// range on the other two where it misses it: the boxes touch, exactly.
 void put_face_to_face(const Aabb& a, Aabb& b, Choices& choices);
 
 /// The triangle moved so that its vertex i lands exactly on p.

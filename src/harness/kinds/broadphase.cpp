@@ -158,11 +158,34 @@ BroadphaseInput Query<BroadphaseInput>::generate(ValueSource& v, const GenerateO
 
 void Query<BroadphaseInput>::touch(BroadphaseInput& in, ValueSource& v) {
   Choices& c = v.choices();
-  if (in.frames.empty() || in.frames[0].size() < 2) return;
-  auto& frame = in.frames[c.draw(in.frames.size())];
-  const std::size_t i = c.draw(frame.size()), j = c.draw(frame.size());
-  if (i == j || !frame[i] || !frame[j]) return;
-  put_face_to_face(*frame[i], *frame[j], c);
+  const auto present_in = [](const std::vector<std::optional<Aabb>>& frame) {  // a slot may be empty
+    std::vector<std::size_t> present;
+    for (std::size_t i = 0; i < frame.size(); ++i) {
+      if (frame[i]) present.push_back(i);
+    }
+    return present;
+  };
+  std::vector<std::size_t> frames;  // those with two boxes or more
+  for (std::size_t f = 0; f < in.frames.size(); ++f) {
+    if (present_in(in.frames[f]).size() >= 2) frames.push_back(f);
+  }
+  if (frames.empty()) {  // no frame has two boxes: one gets a second, against one it has
+    if (in.frames.empty()) return;
+    auto& frame = in.frames[c.draw(in.frames.size())];
+    if (frame.size() < 2) {
+      for (auto& f : in.frames) f.resize(2);  // every frame has the same slots
+    }
+    std::vector<std::size_t> present = present_in(frame);
+    if (present.empty()) frame[0] = Aabb{{0, 0, 0}, {1, 1, 1}}, present = {0};
+    const std::size_t empty = present[0] == 0 ? 1 : 0;
+    frame[empty] = frame[present[0]];
+    put_face_to_face(*frame[present[0]], *frame[empty], c);
+    return;
+  }
+  auto& frame = in.frames[frames[c.draw(frames.size())]];
+  const std::vector<std::size_t> present = present_in(frame);
+  const std::size_t i = c.draw(present.size()), j = (i + 1 + c.draw(present.size() - 1)) % present.size();
+  put_face_to_face(*frame[present[i]], *frame[present[j]], c);
 }
 
 Features Query<BroadphaseInput>::features(const BroadphaseInput& in) {

@@ -315,8 +315,16 @@ DiscWallsInput Query<DiscWallsInput>::generate(ValueSource& v, const GenerateOpt
 
 void Query<DiscWallsInput>::touch(DiscWallsInput& in, ValueSource& v) {
   Choices& c = v.choices();
-  if (in.walls.empty()) in.walls.push_back({in.disc.center, in.disc.center});
-  const Wall& w = in.walls[c.draw(in.walls.size())];
+  std::vector<std::size_t> finite;  // the walls a disc can touch
+  for (std::size_t i = 0; i < in.walls.size(); ++i) {
+    const Wall& w = in.walls[i];
+    if (std::isfinite(w.a.x) && std::isfinite(w.a.y) && std::isfinite(w.b.x) && std::isfinite(w.b.y)) finite.push_back(i);
+  }
+  if (finite.empty()) {
+    in.walls.push_back({in.disc.center, in.disc.center});
+    finite.push_back(in.walls.size() - 1);
+  }
+  const Wall& w = in.walls[finite[c.draw(finite.size())]];
   const bool at_a = c.chance(50);
   const Vec2 end = at_a ? w.a : w.b, away = at_a ? w.a - w.b : w.b - w.a;
   // Along an axis, on the side away from the other end (so that the end is the nearest point).

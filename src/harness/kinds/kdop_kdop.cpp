@@ -61,20 +61,21 @@ KdopKdopInput kdops_at_the_bound(ValueSource& v, const GenerateOptions& options)
   return out;
 }
 
-// B's points shifted along one axis so that the k-DOPs touch on one slab (with `nudged`, a few
-// ULPs off).
+// B's points moved so that the k-DOPs touch on one slab (with `nudged`, a few ULPs off).
 void shift_to_touch(KdopKdopInput& in, ValueSource& v, bool nudged) {
   const auto dirs = kdop_directions(in.k);
   if (dirs.empty() || in.a.empty() || in.b.empty()) return;
   const KdopDirection d = dirs[v.choices().draw(dirs.size())];
   const Vec3 dir{static_cast<double>(d.x), static_cast<double>(d.y), static_cast<double>(d.z)};
-  double a_max = -INFINITY, b_min = INFINITY;
-  for (const Vec3& p : in.a) a_max = std::max(a_max, dot(dir, p));
-  for (const Vec3& p : in.b) b_min = std::min(b_min, dot(dir, p));
-  double shift = a_max - b_min;
-  if (nudged) shift = v.nudge(shift);
+  // B's point least along the direction moved onto A's point most along it: the slabs along the
+  // direction touch there, and every other slab of both holds that point. Each point of B is put
+  // at its offset from that point, so that B's old place (however far) adds no rounding.
+  const auto along = [&dir](const Vec3& p, const Vec3& q) { return dot(dir, p) < dot(dir, q); };
+  Vec3 target = *std::max_element(in.a.begin(), in.a.end(), along);
+  const Vec3 b_least = *std::min_element(in.b.begin(), in.b.end(), along);
   const int axis = d.x != 0 ? 0 : (d.y != 0 ? 1 : 2);
-  for (Vec3& p : in.b) p[axis] += shift * dir[axis];
+  if (nudged) target[axis] = v.nudge(target[axis]);  // a few ULPs into A or away from it
+  for (Vec3& p : in.b) p = target + (p - b_least);
 }
 
 template <int K>

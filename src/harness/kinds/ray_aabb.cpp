@@ -280,7 +280,8 @@ void Query<RayAabbInput>::touch(RayAabbInput& in, ValueSource& v) {
   if (in.ray.dir == Vec3{}) in.ray.dir = {1, 0, 0};
   const double t = std::ldexp(1.0, v.small_int(4));
   in.ray.origin = p - t * in.ray.dir;
-  if (v.choices().chance(30)) in.ray.tmax = t;  // a segment that ends on the boundary
+  if (!(in.ray.tmin <= t)) in.ray.tmin = 0;
+  if (v.choices().chance(30) || !(t <= in.ray.tmax)) in.ray.tmax = t;  // a segment that ends on the boundary
 }
 
 Features Query<RayAabbInput>::features(const RayAabbInput& in) {
