@@ -70,6 +70,34 @@ std::string utc_now() {
   return buf;
 }
 
+// The commit of the source tree, with "-dirty" when it has uncommitted changes (as the tool's
+// own version says it), or "unknown" when it is not a git work tree or git cannot run. The
+// answers of git go to `log`.
+std::string commit_of(const fs::path& source, const fs::path& log) {
+  const ChildResult head = run_child({"git", "-C", source.string(), "rev-parse", "--short=12", "HEAD"}, {}, log, 60);
+  std::ifstream in(log);
+  std::string commit;
+  std::getline(in, commit);
+  if (head.exit_status != 0 || commit.empty()) return "unknown";
+  const ChildResult diff = run_child({"git", "-C", source.string(), "diff", "--quiet", "HEAD", "--"}, {}, log, 60);
+  return diff.exit_status == 0 ? commit : commit + "-dirty";
+}
+
+// The processor's name (the first "model name" of /proc/cpuinfo) and the number of hardware
+// threads, or "unknown" for what cannot be read.
+std::string processor_description() {
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  std::string line, model = "unknown processor";
+  while (std::getline(cpuinfo, line)) {
+    if (line.starts_with("model name")) {
+      if (const auto colon = line.find(':'); colon != std::string::npos && colon + 2 <= line.size()) model = line.substr(colon + 2);
+      break;
+    }
+  }
+  const unsigned threads = std::thread::hardware_concurrency();
+  return model + ", " + (threads > 0 ? std::to_string(threads) : std::string("unknown")) + " hardware threads";
+}
+
 // The program `name` as the shell would find it on PATH, if it is there.
 std::optional<fs::path> program_on_path(const std::string& name) {
   const char* path = std::getenv("PATH");
@@ -429,6 +457,9 @@ int run(const MutateArgs& args) {
     fs::create_directories(args.work);
     setenv("CCACHE_BASEDIR", fs::weakly_canonical(args.work).c_str(), 1);
   }
+  fs::create_directories(args.work);
+  run.commit = commit_of(args.source, fs::path(args.work) / "commit.log");
+  run.processor = processor_description();
   const double deadline = start + 60 * args.budget_minutes;
   std::vector<Worker> workers(static_cast<std::size_t>(std::max(1, args.jobs)));
   std::mutex lock;

@@ -95,7 +95,10 @@ std::string markdown_report(const MutationRun& run) {
   const Score s = score_of(run);
   std::string out;
   out += "# Mutation score\n\n";
-  out += "Run " + run.date + " UTC: `" + run.command + "`\n\n";
+  out += "Written by `crosscheck mutate`, which replaces it at each run; what it measures and how to read it: "
+         "[testing.md](testing.md).\n\n";
+  out += "- date: " + run.date + " UTC\n- commit: " + run.commit + "\n- processor: " + run.processor +
+         "\n- command: `" + run.command + "`\n\n";
   out += "Catalogue `" + run.catalogue + "`, " + std::to_string(run.results.size()) + " mutants; " +
          std::to_string(run.jobs) + " worker(s); checks in order: ctest labels ";
   for (std::size_t i = 0; i < run.labels.size(); ++i) out += (i ? ", " : "") + run.labels[i];
@@ -172,6 +175,8 @@ std::string json_report(const MutationRun& run) {
   Json j;
   j["date"] = run.date;
   j["command"] = run.command;
+  j["commit"] = run.commit;
+  j["processor"] = run.processor;
   j["catalogue"] = run.catalogue;
   j["jobs"] = run.jobs;
   j["budget_minutes"] = run.budget_minutes;

@@ -42,6 +42,8 @@ struct MutantResult {
 struct MutationRun {
   std::string date;  // UTC, YYYY-MM-DD HH:MM
   std::string command;
+  std::string commit;     // of the source tree ("unknown" outside git; "-dirty" with changes)
+  std::string processor;  // its name and hardware threads
   std::string catalogue;
   int jobs = 1;
   double budget_minutes = 0;

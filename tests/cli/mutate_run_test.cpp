@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <regex>
 #include <string>
 
 #include "cli/program_run.h"
@@ -64,6 +65,10 @@ TEST(MutateRun, EachMutantIsCaughtByItsTestOrByItsTimeLimitOrSurvives) {
   EXPECT_LT(hangs["seconds"].get<double>(), 30.0);
 
   EXPECT_EQ(mutant(r.report, "fixture.comment_only")["status"], "SURVIVED");
+  // Where it ran: the commit of the fixture's tree (the repository's, outside git "unknown").
+  EXPECT_TRUE(std::regex_match(r.report["commit"].get<std::string>(), std::regex("[0-9a-f]{12}(-dirty)?|unknown")))
+      << r.report["commit"];
+  EXPECT_NE(r.report["processor"].get<std::string>().find("hardware threads"), std::string::npos) << r.report["processor"];
   EXPECT_NE(r.outcome.out.find("score: ctest alone 2/3"), std::string::npos) << r.outcome.out;
 
   // The mutants went into the scratch copy only, and each was taken out again.

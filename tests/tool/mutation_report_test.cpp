@@ -38,6 +38,8 @@ MutationRun sample_run() {
   MutationRun run;
   run.date = "2026-11-21 10:00";
   run.command = "crosscheck mutate --jobs 2";
+  run.commit = "0123456789ab-dirty";
+  run.processor = "Some CPU, 2 hardware threads";
   run.catalogue = "tests/mutation/mutants.json";
   run.jobs = 2;
   run.budget_minutes = 60;
@@ -95,6 +97,16 @@ TEST(MutationReport, EveryStatusHasItsOwnName) {
     names.insert(std::string(to_string(s)));
   }
   EXPECT_EQ(names.size(), 9u);
+}
+
+TEST(MutationReport, MarkdownAndJsonSayWhenWhereAndHowTheyWereMade) {
+  const std::string md = markdown_report(sample_run());
+  EXPECT_TRUE(contains(md, "- date: 2026-11-21 10:00 UTC\n- commit: 0123456789ab-dirty\n"
+                           "- processor: Some CPU, 2 hardware threads\n- command: `crosscheck mutate --jobs 2`\n"))
+      << md;
+  const auto j = nlohmann::json::parse(json_report(sample_run()));
+  EXPECT_EQ(j["commit"], "0123456789ab-dirty");
+  EXPECT_EQ(j["processor"], "Some CPU, 2 hardware threads");
 }
 
 TEST(MutationReport, MarkdownHasTheScoresAndWhatWasLeftOut) {
