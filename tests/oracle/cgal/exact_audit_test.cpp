@@ -5,6 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <regex>
+#include <set>
+#include <string>
 #include <functional>
 #include <initializer_list>
 #include <utility>
@@ -63,6 +67,29 @@ TEST(ExactAudit, AnswersTheKindsMadeOfTwoShapesItExpresses) {
                          QueryKind::moving_obb}) {
     EXPECT_FALSE(answers(kind)) << name(kind);
     EXPECT_FALSE(cgal_answer(with_kind(kind, []<class In>() { return Input(In{}); })).has_value()) << name(kind);
+  }
+}
+
+// The manual's table of the kinds audited (docs/exact-audit.md, rows "| `kind` ..." or
+// "| `kind`, `kind` ...") names exactly the kinds CGAL answers: a kind that joins or leaves the
+// audit changes the page too.
+TEST(ExactAudit, TheManualListsExactlyTheKindsAudited) {
+  std::ifstream page(std::string(CROSSCHECK_SOURCE_DIR) + "/docs/exact-audit.md");
+  ASSERT_TRUE(page) << "docs/exact-audit.md";
+  std::set<std::string> listed;
+  const std::regex row("^\\| (`[a-z_]+`(, `[a-z_]+`)*) \\|.*"), word("`([a-z_]+)`");
+  for (std::string line; std::getline(page, line);) {
+    std::smatch m;
+    if (!std::regex_match(line, m, row)) continue;
+    const std::string cell = m[1];
+    for (auto it = std::sregex_iterator(cell.begin(), cell.end(), word); it != std::sregex_iterator(); ++it) {
+      listed.insert((*it)[1]);
+    }
+  }
+  for (QueryKind kind : kAllQueryKinds) {
+    EXPECT_EQ(listed.count(std::string(name(kind))), answers(kind) ? 1u : 0u)
+        << name(kind) << (answers(kind) ? " is audited but not in" : " is not audited but in")
+        << " the table of docs/exact-audit.md";
   }
 }
 
