@@ -21,7 +21,8 @@ Band library_band(QueryKind kind);
 constexpr bool is_library_party(std::string_view party) { return party.starts_with("library."); }
 
 /// Every band, for printing: (query or party name, band), the library's for each kind, then
-/// each party of `second` once.
+/// each party of `second` once per distinct band it declares; a party with different bands for
+/// different kinds is named with the kinds of each, "party (kind, kind)".
 std::vector<std::pair<std::string, Band>> all_bands(const SecondOpinion& second);
 
 }  // namespace cc::harness

@@ -39,6 +39,33 @@ TEST(Bands, TheLibraryIsExactOrConservativeOnPrimitives) {
   EXPECT_EQ(library_band(QueryKind::aabb_aabb).sides, BandSides::exact);
 }
 
+// A party answering several kinds: listed once when its band is the same for each, and once per
+// band, with the kinds of each, when they differ (none is left out).
+class TwoBands : public SecondOpinion {
+ public:
+  std::vector<Opinion> opinions(const Input&) const override { return {}; }
+  std::vector<PartyBand> parties(QueryKind kind) const override {
+    const Band narrow{0x1p-46, BandSides::two_sided, 0, "narrow"}, wide{0x1p-40, BandSides::two_sided, 0, "wide"};
+    switch (kind) {
+      case QueryKind::aabb_aabb: return {{"peer.boxes", narrow}, {"peer.same", narrow}};
+      case QueryKind::obb_obb: return {{"peer.boxes", wide}, {"peer.same", narrow}};
+      case QueryKind::tri_obb: return {{"peer.boxes", wide}};
+      default: return {};
+    }
+  }
+};
+
+TEST(Bands, APartyWithDifferentBandsPerKindIsListedWithEach) {
+  const auto rows = all_bands(TwoBands());
+  std::vector<std::pair<std::string, double>> peers;
+  for (const auto& [row, band] : rows) {
+    if (row.starts_with("peer.")) peers.emplace_back(row, band.width);
+  }
+  const std::vector<std::pair<std::string, double>> expected = {
+      {"peer.boxes (aabb_aabb)", 0x1p-46}, {"peer.same", 0x1p-46}, {"peer.boxes (obb_obb, tri_obb)", 0x1p-40}};
+  EXPECT_EQ(peers, expected);
+}
+
 TEST(WithinBand, ConservativeToleratesOnlyANearHit) {
   const Band b{0x1p-40, BandSides::conservative, 0, ""};
   EXPECT_TRUE(within_band(b, true, -0x1p-41));   // says hit, apart by less than the width
