@@ -17,10 +17,9 @@
 # branches covered, then the branches each generator reaches (src/harness/generation/ per file,
 # and in src/harness/kinds/ each function that draws from a ValueSource or is named generate*),
 # and writes them to the page with the date, commit, processor and command.
-# -Og, not -O0: at -O0 the AVX2 kernel of src/collide/ray_aabb_batch.cpp answers wrongly (its
-# templates carry no target attribute and count on [[gnu::flatten]] to inline them into
-# run_avx2; at -O0 they stay calls that pass 32-byte vectors to the AVX2 lane operators under
-# another ABI), and the properties that meet it fail on their first case.
+# -Og, not -O0: a build without optimisation has the library's scalar kernels only (the vector
+# kernels need inlining, see src/collide/simd.cpp), which would leave the vector kernels
+# uncovered.
 # Code that runs in a forked child which ends with _Exit (src/harness/processes/child.cpp) writes
 # no counters: it shows as not covered.
 set -euo pipefail

@@ -13,6 +13,17 @@ constexpr std::size_t index_of(Kernel k) { return static_cast<std::size_t>(k); }
 // -1: none forced; else the index of the forced kernel.
 std::atomic<int> g_forced{-1};
 
+// Whether this build has the vector kernels. Each is compiled for its instruction set by being
+// inlined into an entry point with that set's target attribute ([[gnu::flatten]], see
+// simd_lanes.h), and without optimisation nothing is inlined: the kernel stays a function compiled
+// for no vector set that passes vectors to the lanes' functions under another calling convention,
+// and answers wrongly. A build without optimisation (-O0) therefore runs the scalar kernel only.
+#ifdef __OPTIMIZE__
+constexpr bool kVectorKernelsBuilt = true;
+#else
+constexpr bool kVectorKernelsBuilt = false;
+#endif
+
 // What the processor runs, asked once. __builtin_cpu_supports also checks that the operating
 // system saves the wider registers (XGETBV), so a kernel it reports can run.
 const std::array<bool, 3>& processor_runs() {
@@ -20,9 +31,9 @@ const std::array<bool, 3>& processor_runs() {
     __builtin_cpu_init();
     std::array<bool, 3> r{};
     r[index_of(Kernel::scalar)] = true;
-    r[index_of(Kernel::avx2)] = __builtin_cpu_supports("avx2");
-    r[index_of(Kernel::avx512)] = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
-                                  __builtin_cpu_supports("avx512vl");
+    r[index_of(Kernel::avx2)] = kVectorKernelsBuilt && __builtin_cpu_supports("avx2");
+    r[index_of(Kernel::avx512)] = kVectorKernelsBuilt && __builtin_cpu_supports("avx512f") &&
+                                  __builtin_cpu_supports("avx512dq") && __builtin_cpu_supports("avx512vl");
     return r;
   }();
   return runs;
@@ -67,6 +78,7 @@ std::vector<Kernel> supported_kernels() {
 
 std::optional<std::string> unsupported_reason(Kernel k) {
   if (supported(k)) return std::nullopt;
+  if (!kVectorKernelsBuilt) return "this build is not optimised, and the vector kernels need inlining (see simd.cpp)";
   return "this processor lacks " + std::string(features_needed(k));
 }
 

@@ -24,12 +24,14 @@ std::optional<Kernel> kernel_named(std::string_view name);
 /// The processor features a kernel needs, e.g. "AVX-512 F, DQ and VL"; "none" for scalar.
 std::string_view features_needed(Kernel k);
 
-/// Whether this processor (and its operating system) runs the kernel, checked at run time.
-/// Always true for scalar.
+/// Whether this processor (and its operating system) runs the kernel, checked at run time, and
+/// this build has it: a build without optimisation (-O0) has the scalar kernel only. Always true
+/// for scalar.
 bool supported(Kernel k);
 /// The kernels this processor runs, scalar first.
 std::vector<Kernel> supported_kernels();
-/// Why this processor cannot run the kernel ("this processor lacks AVX2"), or nothing.
+/// Why the kernel cannot run ("this processor lacks AVX2", or a build without optimisation), or
+/// nothing.
 std::optional<std::string> unsupported_reason(Kernel k);
 
 namespace detail {

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace cc::simd {
 namespace {
@@ -51,6 +52,23 @@ TEST(Simd, AForcedKernelIsUsedUntilItsScopeEnds) {
   EXPECT_EQ(selected(), best);
 }
 
+// The reason a kernel cannot run: the processor, or a build without optimisation, which has the
+// scalar kernel only (its vector kernels would not be inlined into their instruction set's code).
+TEST(Simd, AnUnsupportedKernelSaysWhy) {
+  for (Kernel k : kAllKernels) {
+    if (supported(k)) continue;
+    const std::string why = unsupported_reason(k).value();
+#ifdef __OPTIMIZE__
+    EXPECT_EQ(why, "this processor lacks " + std::string(features_needed(k)));
+#else
+    EXPECT_NE(why.find("not optimised"), std::string::npos) << why;
+#endif
+  }
+#ifndef __OPTIMIZE__
+  EXPECT_EQ(supported_kernels(), std::vector<Kernel>{Kernel::scalar});
+#endif
+}
+
 TEST(Simd, AKernelTheProcessorLacksCannotBeForced) {
   for (Kernel k : kAllKernels) {
     if (supported(k)) continue;
@@ -58,7 +76,7 @@ TEST(Simd, AKernelTheProcessorLacksCannotBeForced) {
       force(k);
       ADD_FAILURE() << to_string(k) << " was forced on a processor that lacks it";
     } catch (const std::invalid_argument& e) {
-      EXPECT_NE(std::string(e.what()).find("this processor lacks"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find(*unsupported_reason(k)), std::string::npos) << e.what();
     }
   }
   EXPECT_TRUE(supported(selected()));  // a failed force changes nothing
