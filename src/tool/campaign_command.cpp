@@ -19,6 +19,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "harness/formats/write_all.h"
 #include "harness/processes/campaign.h"
 #include "harness/processes/child.h"
 #include "harness/processes/interrupts.h"

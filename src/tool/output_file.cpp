@@ -9,7 +9,7 @@
 #include <cstring>
 #include <filesystem>
 
-#include "harness/processes/child.h"
+#include "harness/formats/write_all.h"
 
 namespace cc::tool {
 namespace {

@@ -14,7 +14,7 @@
 #include "harness/formats/input_file.h"
 #include "harness/formats/json_text.h"
 #include "harness/formats/number_text.h"
-#include "harness/processes/child.h"
+#include "harness/formats/write_all.h"
 
 namespace cc::harness {
 namespace {

@@ -10,8 +10,10 @@
 #include <string>
 #include <vector>
 
-#include "harness/judging/classify.h"
 #include "harness/formats/input_json.h"
+#include "harness/model/answer.h"
+#include "harness/model/case_class.h"
+#include "harness/model/oracle.h"
 #include "harness/model/subject.h"
 
 namespace cc::harness {

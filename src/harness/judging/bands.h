@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "harness/judging/band.h"
+#include "harness/model/band.h"
 #include "harness/model/oracle.h"
 
 namespace cc::harness {

@@ -8,6 +8,7 @@
 #include "harness/formats/case_file.h"
 #include "harness/model/library.h"
 #include "harness/model/subject.h"
+#include "harness/formats/write_all.h"
 #include "harness/processes/child.h"
 
 namespace cc::harness {

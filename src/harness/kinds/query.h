@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "harness/formats/parts.h"
-#include "harness/judging/band.h"
+#include "harness/model/band.h"
 #include "harness/judging/party.h"
 #include "harness/judging/relation.h"
 #include "harness/model/answer.h"
@@ -63,7 +63,7 @@ struct QueryDefaults {
 };
 
 /// What every unit provides (Query<In>, for an input type In):
-///   band                  the library's tolerance band for the kind (judging/band.h)
+///   band                  the library's tolerance band for the kind (model/band.h)
 ///   relations             the metamorphic relations that apply (judging/relation.h)
 ///   judged                how its answers are judged
 ///   ask(in)               the library's answer

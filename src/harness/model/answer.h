@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "harness/judging/band.h"
+#include "harness/model/band.h"
 
 namespace cc::harness {
 

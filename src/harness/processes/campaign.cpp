@@ -20,6 +20,7 @@
 #include "harness/judging/party.h"
 #include "harness/model/library.h"
 #include "harness/model/subject.h"
+#include "harness/formats/write_all.h"
 #include "harness/processes/child.h"
 #include "harness/processes/interrupts.h"
 #include "harness/processes/subject_process.h"

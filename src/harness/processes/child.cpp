@@ -192,16 +192,6 @@ ChildEnd run_program(const std::vector<std::string>& argv, const ProgramIo& io, 
   return finish_child(start_program(argv, io), timeout_seconds, stop);
 }
 
-bool write_all(int fd, std::string_view bytes) {
-  for (std::size_t done = 0; done < bytes.size();) {
-    const ssize_t n = ::write(fd, bytes.data() + done, bytes.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) return false;
-    done += static_cast<std::size_t>(n);
-  }
-  return true;
-}
-
 bool capture_to_file(int fd) {
   std::FILE* file = std::tmpfile();
   if (file == nullptr) return false;

@@ -91,9 +91,6 @@ ChildEnd run_in_child(const std::function<int(int out)>& f, double timeout_secon
 ChildEnd run_program(const std::vector<std::string>& argv, const ProgramIo& io = {}, double timeout_seconds = 0,
                      const std::function<bool()>& stop = {});
 
-/// Writes all of `bytes` to `fd` (retrying short writes and EINTR); false on an error.
-bool write_all(int fd, std::string_view bytes);
-
 /// Points the descriptor `fd` (standard output or error) at a new unnamed temporary file, so
 /// that what a party prints there can be looked at (take_captured_line); false when it cannot.
 bool capture_to_file(int fd);

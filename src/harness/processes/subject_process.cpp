@@ -31,6 +31,7 @@
 #include "harness/formats/sha256.h"
 #include "harness/model/mesh_query.h"
 #include "harness/model/subject_binding.h"
+#include "harness/formats/write_all.h"
 #include "harness/processes/child.h"
 
 namespace cc::harness {

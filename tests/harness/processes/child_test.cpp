@@ -18,6 +18,7 @@
 #include <system_error>
 #include <thread>
 
+#include "harness/formats/write_all.h"
 #include "../../temp_folder.h"
 #include "harness/model/answer.h"
 

@@ -1,4 +1,4 @@
-#include "harness/judging/band.h"
+#include "harness/model/band.h"
 
 #include <cmath>
 
