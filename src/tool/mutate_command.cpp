@@ -72,8 +72,10 @@ std::string utc_now() {
 
 // The commit of the source tree, with "-dirty" when it has uncommitted changes (as the tool's
 // own version says it), or "unknown" when it is not a git work tree or git cannot run. The
-// answers of git go to `log`.
+// answers of git go to `log`, made anew.
 std::string commit_of(const fs::path& source, const fs::path& log) {
+  std::error_code ignored;
+  fs::remove(log, ignored);  // run_child appends: an older run's commit must not be read
   const ChildResult head = run_child({"git", "-C", source.string(), "rev-parse", "--short=12", "HEAD"}, {}, log, 60);
   std::ifstream in(log);
   std::string commit;

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <regex>
 #include <string>
 
@@ -48,6 +49,9 @@ const harness::Json& mutant(const harness::Json& report, const std::string& id) 
 TEST(MutateRun, EachMutantIsCaughtByItsTestOrByItsTimeLimitOrSurvives) {
   const TempFolder scratch("crosscheck_mutate_run");
   const std::string source_before = text_of(kFixture / "answer.sh");
+  // An earlier run's answer of git, left in the work folder, is not taken for this one's.
+  fs::create_directories(scratch.path() / "work");
+  std::ofstream(scratch.path() / "work" / "commit.log") << "0123456789ab\n";
   const MutateRun r = mutate(scratch.path(), "10");
   EXPECT_EQ(r.outcome.status, 1) << "a mutant survived: " << r.outcome.out << r.outcome.err;
   ASSERT_FALSE(r.report.is_null()) << r.outcome.err;
@@ -68,6 +72,7 @@ TEST(MutateRun, EachMutantIsCaughtByItsTestOrByItsTimeLimitOrSurvives) {
   // Where it ran: the commit of the fixture's tree (the repository's, outside git "unknown").
   EXPECT_TRUE(std::regex_match(r.report["commit"].get<std::string>(), std::regex("[0-9a-f]{12}(-dirty)?|unknown")))
       << r.report["commit"];
+  EXPECT_FALSE(r.report["commit"].get<std::string>().starts_with("0123456789ab")) << r.report["commit"];
   EXPECT_NE(r.report["processor"].get<std::string>().find("hardware threads"), std::string::npos) << r.report["processor"];
   EXPECT_NE(r.outcome.out.find("score: ctest alone 2/3"), std::string::npos) << r.outcome.out;
 
