@@ -4,7 +4,7 @@
 #include <array>
 #include <cmath>
 
-#include "harness/formats/parts.h"
+#include "harness/model/parts.h"
 
 namespace cc::harness {
 namespace {

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstring>
 
-#include "harness/formats/parts.h"
+#include "harness/model/parts.h"
 #include "harness/generation/rotation.h"
 
 namespace cc::harness {

@@ -7,7 +7,7 @@
 #include "harness/formats/mesh_files.h"
 #include "harness/formats/number_text.h"
 #include "harness/formats/obj_file.h"
-#include "harness/formats/parts.h"
+#include "harness/model/parts.h"
 
 namespace cc::harness {
 

@@ -6,7 +6,7 @@
 #include <utility>
 #include <vector>
 
-#include "harness/formats/parts.h"
+#include "harness/model/parts.h"
 #include "harness/generation/choices.h"
 
 namespace cc::harness {

@@ -18,7 +18,7 @@ bool relation_applies(QueryKind kind, Relation relation);
 /// The transformed query, or nothing when the relation does not apply: to its kind (see
 /// relation_applies), or to this input (the unit's admits(): a k-DOP direction set not closed
 /// under the operation), a scaling that would overflow, underflow or change a value's precision.
-/// The relations act on the parts of the input by their types (formats/fields.h); swapping
+/// The relations act on the parts of the input by their types (model/fields.h); swapping
 /// exchanges the fields a and b. A reordering follows the parameter (any int): the i-th
 /// triangle's vertex order is one of 6 by parameter / 6^i, face f of a mesh takes parameter + f;
 /// the i-th mesh or point set, the slots of boxes over frames and a list of parts (walls) are

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "harness/formats/parts.h"
+#include "harness/model/parts.h"
 #include "harness/model/band.h"
 #include "harness/judging/party.h"
 #include "harness/judging/relation.h"

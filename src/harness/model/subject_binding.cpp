@@ -13,7 +13,7 @@
 #include <type_traits>
 #include <vector>
 
-#include "harness/formats/fields.h"
+#include "harness/model/fields.h"
 
 namespace cc::harness {
 namespace {

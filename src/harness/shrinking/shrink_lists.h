@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "harness/formats/parts.h"
+#include "harness/model/parts.h"
 #include "harness/shrinking/shrink_faces.h"
 
 namespace cc::harness {

@@ -3,7 +3,7 @@
 // the metamorphic relations' maps and the drawing of a case all read them from here.
 //
 // A kind's unit declares Fields<its input>; the parts kinds share declare theirs in
-// formats/parts.h. A type without Fields is a leaf, which each format knows how to handle (a
+// model/parts.h. A type without Fields is a leaf, which each format knows how to handle (a
 // double, a Vec3, a matrix as a frame or a rotation, a triangle, a point set, a mesh, ...).
 #pragma once
 

@@ -15,7 +15,7 @@
 #include "collide/ray.h"
 #include "collide/rigid_transform.h"
 #include "collide/sphere.h"
-#include "harness/formats/fields.h"
+#include "harness/model/fields.h"
 #include "harness/model/mesh_query.h"
 
 namespace cc::harness {
