@@ -45,7 +45,7 @@ struct MutateArgs {
   std::uint64_t campaign_seed = 1;
   int campaign_workers = 1;
   double test_timeout = 10;
-  std::vector<std::string> labels = {"corpus", "fuzz", "unit", "cli", "property"};
+  std::vector<std::string> labels = {"corpus", "fuzz", "unit", "cli", "hostile", "property"};
   std::vector<std::string> only;
   std::string exclude_tests;
   bool check_only = false;
