@@ -158,34 +158,32 @@ BroadphaseInput Query<BroadphaseInput>::generate(ValueSource& v, const GenerateO
 
 void Query<BroadphaseInput>::touch(BroadphaseInput& in, ValueSource& v) {
   Choices& c = v.choices();
-  const auto present_in = [](const std::vector<std::optional<Aabb>>& frame) {  // a slot may be empty
-    std::vector<std::size_t> present;
-    for (std::size_t i = 0; i < frame.size(); ++i) {
-      if (frame[i]) present.push_back(i);
-    }
-    return present;
-  };
-  std::vector<std::size_t> frames;  // those with two boxes or more
+  if (in.frames.empty()) return;
+  std::vector<std::vector<std::size_t>> present(in.frames.size());  // per frame, its slots that hold a box
+  std::vector<std::size_t> frames;                                  // the frames with two boxes or more
   for (std::size_t f = 0; f < in.frames.size(); ++f) {
-    if (present_in(in.frames[f]).size() >= 2) frames.push_back(f);
+    for (std::size_t i = 0; i < in.frames[f].size(); ++i) {
+      if (in.frames[f][i]) present[f].push_back(i);
+    }
+    if (present[f].size() >= 2) frames.push_back(f);
   }
   if (frames.empty()) {  // no frame has two boxes: one gets a second, against one it has
-    if (in.frames.empty()) return;
-    auto& frame = in.frames[c.draw(in.frames.size())];
+    const std::size_t f = c.draw(in.frames.size());
+    auto& frame = in.frames[f];
     if (frame.size() < 2) {
-      for (auto& f : in.frames) f.resize(2);  // every frame has the same slots
+      for (auto& other : in.frames) other.resize(2);  // every frame has the same slots
     }
-    std::vector<std::size_t> present = present_in(frame);
-    if (present.empty()) frame[0] = Aabb{{0, 0, 0}, {1, 1, 1}}, present = {0};
-    const std::size_t empty = present[0] == 0 ? 1 : 0;
-    frame[empty] = frame[present[0]];
-    put_face_to_face(*frame[present[0]], *frame[empty], c);
+    if (present[f].empty()) frame[0] = Aabb{{0, 0, 0}, {1, 1, 1}}, present[f] = {0};
+    const std::size_t held = present[f][0], empty = held == 0 ? 1 : 0;
+    frame[empty] = frame[held];
+    put_face_to_face(*frame[held], *frame[empty], c);
     return;
   }
-  auto& frame = in.frames[frames[c.draw(frames.size())]];
-  const std::vector<std::size_t> present = present_in(frame);
-  const std::size_t i = c.draw(present.size()), j = (i + 1 + c.draw(present.size() - 1)) % present.size();
-  put_face_to_face(*frame[present[i]], *frame[present[j]], c);
+  const std::size_t f = frames[c.draw(frames.size())];
+  auto& frame = in.frames[f];
+  const std::vector<std::size_t>& boxes = present[f];
+  const std::size_t i = c.draw(boxes.size()), j = (i + 1 + c.draw(boxes.size() - 1)) % boxes.size();
+  put_face_to_face(*frame[boxes[i]], *frame[boxes[j]], c);
 }
 
 Features Query<BroadphaseInput>::features(const BroadphaseInput& in) {
