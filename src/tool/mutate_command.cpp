@@ -26,6 +26,7 @@
 #include "tool/flag_checks.h"
 #include "tool/mutant_catalogue.h"
 #include "tool/mutation_report.h"
+#include "tool/output_file.h"
 #include "tool/scratch_tree.h"
 #include "tool/test_time_limits.h"
 
@@ -52,6 +53,7 @@ struct MutateArgs {
   bool no_baseline = false;
   std::string report;
   std::string json;
+  std::string resume;
 };
 
 // A scratch copy of the tree with its own build directory.
@@ -71,18 +73,31 @@ std::string utc_now() {
 }
 
 // The commit of the source tree, with "-dirty" when it has uncommitted changes (as the tool's
-// own version says it), or "unknown" when it is not a git work tree or git cannot run. The
-// answers of git go to `log`, made anew.
-std::string commit_of(const fs::path& source, const fs::path& log) {
+// own version says it), or "unknown" when it is not a git work tree or git cannot run; with
+// "-dirty", a digest of the changes (FNV-1a of `git diff --binary HEAD`: files git does not track
+// are not in it), so that two runs on the same dirty commit are told apart. The answers of git go
+// to `log`, made anew.
+struct SourceState {
+  std::string commit, changes;
+};
+
+SourceState source_state(const fs::path& source, const fs::path& log) {
   std::error_code ignored;
   fs::remove(log, ignored);  // run_child appends: an older run's commit must not be read
   const ChildResult head = run_child({"git", "-C", source.string(), "rev-parse", "--short=12", "HEAD"}, {}, log, 60);
   std::ifstream in(log);
   std::string commit;
   std::getline(in, commit);
-  if (head.exit_status != 0 || commit.empty()) return "unknown";
+  if (head.exit_status != 0 || commit.empty()) return {"unknown", ""};
   const ChildResult diff = run_child({"git", "-C", source.string(), "diff", "--quiet", "HEAD", "--"}, {}, log, 60);
-  return diff.exit_status == 0 ? commit : commit + "-dirty";
+  if (diff.exit_status == 0) return {commit, ""};
+  fs::remove(log, ignored);
+  run_child({"git", "-C", source.string(), "diff", "--binary", "HEAD", "--"}, {}, log, 600);
+  std::uint64_t h = 14695981039346656037ull;
+  for (const char c : read_text(log)) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+  char digest[32];
+  std::snprintf(digest, sizeof digest, "changes %016llx", static_cast<unsigned long long>(h));
+  return {commit + "-dirty", digest};
 }
 
 // The processor's name (the first "model name" of /proc/cpuinfo) and the number of hardware
@@ -376,7 +391,279 @@ std::string command_line(const MutateArgs& a) {
     << " --campaign-seconds " << a.campaign_seconds;
   if (a.campaign_seed != 1) s << " --campaign-seed " << a.campaign_seed;
   for (const std::string& id : a.only) s << " --only " << id;
+  if (!a.resume.empty()) s << " --resume " << a.resume;
   return s.str();
+}
+
+// The run's settings and one result per mutant of the catalogue (or of --only): stale,
+// equivalent and not executable ones decided here, before anything is built; the others are
+// returned in `queue`, still not_run.
+MutationRun plan_run(const MutateArgs& args, const std::vector<Mutant>& catalogue, std::vector<std::size_t>& queue) {
+  MutationRun run;
+  run.date = utc_now();
+  run.command = command_line(args);
+  run.catalogue = args.catalogue;
+  run.jobs = args.jobs;
+  run.budget_minutes = args.budget_minutes;
+  run.campaign_seconds = args.campaign_seconds;
+  run.campaign_seed = args.campaign_seed;
+  run.labels = args.labels;
+  for (const Mutant& m : catalogue) {
+    if (!args.only.empty() && std::find(args.only.begin(), args.only.end(), m.id) == args.only.end()) continue;
+    MutantResult r;
+    r.mutant = m;
+    const fs::path file = fs::path(args.source) / m.file;
+    const std::optional<std::string> why =
+        fs::is_regular_file(file) ? staleness(m, read_text(file)) : std::optional<std::string>("no such file " + file.string());
+    if (why) {
+      r.status = MutantStatus::stale;
+      r.note = *why;
+      std::printf("STALE %s: %s\n", m.id.c_str(), why->c_str());
+    } else if (!m.equivalent.empty()) {
+      r.status = MutantStatus::equivalent;
+    } else if (const auto lacking = not_executable_here(m)) {
+      r.status = MutantStatus::not_executable;
+      r.note = *lacking;
+      std::printf("NOT EXECUTABLE HERE %s: %s\n", m.id.c_str(), lacking->c_str());
+    } else {
+      queue.push_back(run.results.size());
+    }
+    run.results.push_back(std::move(r));
+  }
+  return run;
+}
+
+int count_of(const MutationRun& run, MutantStatus status) {
+  return static_cast<int>(std::count_if(run.results.begin(), run.results.end(),
+                                        [&](const MutantResult& r) { return r.status == status; }));
+}
+
+// Both reports, each written whole or not at all (a run killed while writing leaves the last
+// one). While the run goes on, the mutants not run yet say so.
+void write_reports(const MutateArgs& args, const MutationRun& run) {
+  MutationRun shown = run;
+  if (!run.finished) {
+    for (MutantResult& r : shown.results) {
+      if (r.status == MutantStatus::not_run && r.note.empty()) r.note = "not run yet (the run goes on)";
+    }
+  }
+  const std::string report = args.report.empty() ? (fs::path(args.work) / "report.md").string() : args.report;
+  const std::string json = args.json.empty() ? (fs::path(args.work) / "report.json").string() : args.json;
+  for (const auto& [path, text] : {std::pair{report, markdown_report(shown)}, std::pair{json, json_report(shown)}}) {
+    if (const std::string problem = write_output_file(path, text); !problem.empty()) {
+      std::fprintf(stderr, "crosscheck mutate: %s\n", problem.c_str());
+    }
+  }
+}
+
+// The workers of a run: each sets up its scratch tree (the first also runs the baseline), then
+// takes mutants from the queue until it is empty, the budget would be passed, or the run is
+// interrupted. The reports are written again as each mutant ends.
+class MutationRunner {
+ public:
+  MutationRunner(const MutateArgs& args, MutationRun& run, std::vector<std::size_t> queue, double start)
+      : args_(args), run_(run), queue_(std::move(queue)), start_(start), exclude_(args.exclude_tests) {
+    // With ccache the scratch trees share one cache: paths below the work directory are hashed
+    // relative to the build directory, so the first tree's compilations serve the others. The
+    // first tree is then built alone with every job, and the others from the cache after it.
+    ccache_ = program_on_path("ccache").has_value();
+    if (ccache_ && std::getenv("CCACHE_BASEDIR") == nullptr) {
+      setenv("CCACHE_BASEDIR", fs::weakly_canonical(args.work).c_str(), 1);
+    }
+    baseline_done_ = args.no_baseline;
+    first_tree_built_ = !ccache_;  // (or failed: the others then fail on their own)
+    limits_.floor_seconds = args.test_timeout;
+    run_.time_limit_factor = limits_.factor;
+    run_.time_limit_floor = limits_.floor_seconds;
+  }
+
+  // Runs every worker to its end; false (with the reason in setup_error()) when a tree could
+  // not be set up.
+  bool run_workers() {
+    std::vector<Worker> workers(static_cast<std::size_t>(std::max(1, args_.jobs)));
+    std::vector<std::thread> threads;
+    for (std::size_t i = 0; i < workers.size(); ++i) {
+      workers[i].index = static_cast<int>(i);
+      // Absolute: the campaign runs inside the tree, and finds its binary and its output there.
+      workers[i].root = fs::absolute(args_.work) / ("worker-" + std::to_string(i));
+      workers[i].tree = workers[i].root / "tree";
+      workers[i].build = workers[i].root / "build";
+      workers[i].logs = workers[i].root / "logs";
+    }
+    jobs_ = static_cast<int>(workers.size());
+    for (Worker& w : workers) threads.emplace_back([this, &w] { work(w); });
+    for (std::thread& t : threads) t.join();
+    return !failed_setup_;
+  }
+
+  const std::string& setup_error() const { return setup_error_; }
+
+ private:
+  void work(Worker& w) {
+    try {
+      set_up_tree(w);
+      if (w.index == 0 && !args_.no_baseline) run_baseline(w);
+    } catch (const std::exception& e) {
+      std::lock_guard<std::mutex> g(lock_);
+      failed_setup_ = true;
+      setup_error_ = e.what();
+      baseline_done_ = true;
+      cv_.notify_all();
+      return;
+    }
+    {
+      std::unique_lock<std::mutex> g(lock_);
+      cv_.wait(g, [&] { return baseline_done_; });
+      run_.setup_seconds = std::max(run_.setup_seconds, monotonic_seconds() - start_);
+    }
+    while (const std::optional<std::size_t> index = next_mutant()) {
+      MutantResult r = run_.results[*index];  // (read under no lock: only this worker writes it)
+      try {
+        run_mutant(w, args_, exclude_, limits_, r);
+      } catch (const std::exception& e) {
+        r.status = MutantStatus::error;
+        r.note = e.what();
+      }
+      finish_mutant(*index, std::move(r));
+    }
+  }
+
+  // Worker 0 builds first (alone, with every job, when ccache lets the others build from its
+  // compilations); the others wait for its build to end, built or not.
+  void set_up_tree(Worker& w) {
+    const bool first = w.index == 0;
+    struct FirstBuilt {
+      MutationRunner& runner;
+      bool first;
+      ~FirstBuilt() {
+        if (!first) return;
+        std::lock_guard<std::mutex> g(runner.lock_);
+        runner.first_tree_built_ = true;
+        runner.cv_.notify_all();
+      }
+    } first_built{*this, first};
+    set_up(w, args_, ccache_ && first ? args_.build_jobs * jobs_ : args_.build_jobs, [&] {
+      if (first) return;
+      std::unique_lock<std::mutex> g(lock_);
+      cv_.wait(g, [&] { return first_tree_built_; });
+    });
+  }
+
+  // ctest on the unmutated tree, label by label: the tests failing there are left out of every
+  // mutant's run (say, work in progress), and each test's own time sets its limit.
+  void run_baseline(Worker& w) {
+    std::vector<std::string> failing;
+    std::map<std::string, double> own;
+    for (const std::string& label : args_.labels) {
+      const fs::path log = w.logs / ("baseline." + label + ".log");
+      const CtestOutcome c = run_ctest(w, label, nullptr, log, false, args_.exclude_tests);
+      own.merge(passed_test_seconds(read_text(log)));
+      if (!c.problem.empty()) throw std::runtime_error("the unmutated tree: label " + label + ": " + c.problem);
+      failing.insert(failing.end(), c.failed_tests.begin(), c.failed_tests.end());
+      std::lock_guard<std::mutex> g(lock_);
+      run_.baseline.emplace_back(label, c.seconds);
+      std::printf("baseline: label %s: %zu tests fail on the unmutated tree (see %s), %.0f s\n", label.c_str(),
+                  c.failed_tests.size(), log.string().c_str(), c.seconds);
+      for (const std::string& t : c.failed_tests) std::printf("  left out of the mutant runs: %s\n", t.c_str());
+      std::fflush(stdout);
+    }
+    std::lock_guard<std::mutex> g(lock_);
+    run_.excluded_tests = failing;
+    // A test counts as hanging only well past its own time on the unmutated tree: the machine
+    // may be shared, and a loaded machine must not make a mutant look caught.
+    double slowest = 0;
+    for (const auto& [test, seconds] : own) slowest = std::max(slowest, seconds);
+    limits_.own_seconds = std::move(own);
+    limits_.unknown_seconds = limits_.factor * slowest;
+    std::printf("a test times out past %g times its own time on the unmutated tree, at least %g s (%zu tests timed)\n",
+                limits_.factor, limits_.floor_seconds, limits_.own_seconds.size());
+    if (!failing.empty()) exclude_ += (exclude_.empty() ? "" : "|") + exact_names_pattern(failing);
+    baseline_done_ = true;
+    cv_.notify_all();
+  }
+
+  // The next mutant to run, or none when the queue is done, a worker's setup failed, the run was
+  // interrupted, or one more (at the mean cost so far) would pass the budget.
+  std::optional<std::size_t> next_mutant() {
+    std::lock_guard<std::mutex> g(lock_);
+    if (failed_setup_ || interrupted() || next_ == queue_.size()) return std::nullopt;
+    const double estimate = done_ ? finished_seconds_ / static_cast<double>(done_) : 120.0;
+    if (monotonic_seconds() + estimate > start_ + 60 * args_.budget_minutes) return std::nullopt;
+    return queue_[next_++];
+  }
+
+  void finish_mutant(std::size_t index, MutantResult r) {
+    std::lock_guard<std::mutex> g(lock_);
+    ++done_;
+    finished_seconds_ += r.seconds;
+    const bool caught = r.status == MutantStatus::caught_by_ctest || r.status == MutantStatus::caught_by_campaign;
+    std::printf("[%zu/%zu] %-18s %-44s %s%s%s %.0f s\n", done_, queue_.size(), std::string(to_string(r.status)).c_str(),
+                r.mutant.id.c_str(), caught ? (r.check + ": " + r.test).c_str() : r.note.c_str(), caught ? "," : "",
+                caught ? " after" : "", caught ? r.seconds_to_catch : r.seconds);
+    std::fflush(stdout);
+    run_.results[index] = std::move(r);
+    run_.seconds = monotonic_seconds() - start_;
+    run_.finished = false;
+    write_reports(args_, run_);
+  }
+
+  const MutateArgs& args_;
+  MutationRun& run_;
+  const std::vector<std::size_t> queue_;
+  const double start_;
+  std::string exclude_;  // ctest -E: --exclude-tests and the tests failing on the unmutated tree
+  TestTimeLimits limits_;
+  bool ccache_ = false;
+  int jobs_ = 1;
+  std::mutex lock_;
+  std::condition_variable cv_;  // the baseline is done; worker 0's tree is built
+  bool baseline_done_ = false, first_tree_built_ = false, failed_setup_ = false;
+  std::string setup_error_;
+  std::size_t next_ = 0, done_ = 0;
+  double finished_seconds_ = 0;
+};
+
+// Takes the results of an earlier run's report (--resume) that still hold out of the queue.
+// Returns "" or why the report cannot be resumed.
+std::string resume(const MutateArgs& args, MutationRun& run, std::vector<std::size_t>& queue) {
+  try {
+    const MutationRun earlier = read_json_report(args.resume);
+    const std::vector<std::size_t> carried = carry_over(run, earlier);
+    std::erase_if(queue, [&](std::size_t i) { return std::find(carried.begin(), carried.end(), i) != carried.end(); });
+    run.resumed_from = args.resume;
+    std::printf("resumed from %s (the run of %s): %zu results carried over, %zu mutants to run\n", args.resume.c_str(),
+                earlier.date.c_str(), carried.size(), queue.size());
+    return {};
+  } catch (const std::runtime_error& e) {
+    return e.what();
+  }
+}
+
+// The end of a run: the reports, the survivors and the score.
+int report(const MutateArgs& args, MutationRun& run) {
+  for (MutantResult& r : run.results) {
+    if (r.status == MutantStatus::not_run && r.note.empty()) {
+      r.note = interrupted() ? "interrupted (SIGINT or SIGTERM)" : "the budget would have been exceeded";
+    }
+  }
+  run.finished = true;
+  write_reports(args, run);
+  for (const MutantResult& r : run.results) {
+    if (r.status == MutantStatus::survived) std::printf("SURVIVED %s: %s\n", r.mutant.id.c_str(), r.mutant.description.c_str());
+    if (r.status == MutantStatus::not_run) std::printf("not run %s: %s\n", r.mutant.id.c_str(), r.note.c_str());
+    if (r.status == MutantStatus::not_executable) {
+      std::printf("NOT EXECUTABLE HERE %s: %s\n", r.mutant.id.c_str(), r.note.c_str());
+    }
+  }
+  const Score s = score_of(run);
+  const int survived = count_of(run, MutantStatus::survived), stale = count_of(run, MutantStatus::stale),
+            errors = count_of(run, MutantStatus::error);
+  std::printf("score: ctest alone %d/%d, ctest + campaign %d/%d; %d stale, %d not run, %d errors\n", s.by_ctest,
+              s.counted, s.by_either, s.counted, stale, count_of(run, MutantStatus::not_run), errors);
+  std::printf("report: %s, %s\n", (args.report.empty() ? fs::path(args.work) / "report.md" : fs::path(args.report)).c_str(),
+              (args.json.empty() ? fs::path(args.work) / "report.json" : fs::path(args.json)).c_str());
+  if (interrupted()) return kExitFound;
+  return survived || stale || errors ? kExitFound : 0;
 }
 
 int run(const MutateArgs& args) {
@@ -394,54 +681,24 @@ int run(const MutateArgs& args) {
       return kExitBadInput;
     }
   }
-  MutationRun run;
-  run.date = utc_now();
-  run.command = command_line(args);
-  run.catalogue = args.catalogue;
-  run.jobs = args.jobs;
-  run.budget_minutes = args.budget_minutes;
-  run.campaign_seconds = args.campaign_seconds;
-  run.campaign_seed = args.campaign_seed;
-  run.labels = args.labels;
-
-  // Staleness against the source tree, before anything is built.
   std::vector<std::size_t> queue;
-  int stale = 0;
-  for (const Mutant& m : catalogue) {
-    if (!args.only.empty() && std::find(args.only.begin(), args.only.end(), m.id) == args.only.end()) continue;
-    MutantResult r;
-    r.mutant = m;
-    const fs::path file = fs::path(args.source) / m.file;
-    std::optional<std::string> why;
-    if (!fs::is_regular_file(file)) {
-      why = "no such file " + file.string();
-    } else {
-      why = staleness(m, read_text(file));
-    }
-    if (why) {
-      r.status = MutantStatus::stale;
-      r.note = *why;
-      ++stale;
-      std::printf("STALE %s: %s\n", m.id.c_str(), why->c_str());
-    } else if (!m.equivalent.empty()) {
-      r.status = MutantStatus::equivalent;
-    } else if (const auto lacking = not_executable_here(m)) {
-      r.status = MutantStatus::not_executable;
-      r.note = *lacking;
-      std::printf("NOT EXECUTABLE HERE %s: %s\n", m.id.c_str(), lacking->c_str());
-    } else {
-      queue.push_back(run.results.size());
-    }
-    run.results.push_back(std::move(r));
-  }
-  const auto not_executable = std::count_if(run.results.begin(), run.results.end(),
-                                            [](const MutantResult& r) { return r.status == MutantStatus::not_executable; });
-  std::printf("%zu mutants: %zu to run, %d stale, %zu equivalent, %zu not executable on this processor\n",
-              run.results.size(), queue.size(), stale,
-              run.results.size() - queue.size() - static_cast<std::size_t>(stale) - static_cast<std::size_t>(not_executable),
-              static_cast<std::size_t>(not_executable));
+  MutationRun run = plan_run(args, catalogue, queue);
+  const int stale = count_of(run, MutantStatus::stale), not_executable = count_of(run, MutantStatus::not_executable);
+  std::printf("%zu mutants: %zu to run, %d stale, %d equivalent, %d not executable on this processor\n",
+              run.results.size(), queue.size(), stale, count_of(run, MutantStatus::equivalent), not_executable);
   if (args.check_only) return stale ? kExitFound : 0;
 
+  fs::create_directories(args.work);
+  const SourceState source = source_state(args.source, fs::path(args.work) / "commit.log");
+  run.commit = source.commit;
+  run.changes = source.changes;
+  run.processor = processor_description();
+  if (!args.resume.empty()) {
+    if (const std::string why = resume(args, run, queue); !why.empty()) {
+      std::fprintf(stderr, "crosscheck mutate: --resume %s: %s\n", args.resume.c_str(), why.c_str());
+      return kExitBadInput;
+    }
+  }
   // Mutants of one file run one after the other (fewer files to recompile), headers last (a
   // header recompiles much of the tree).
   std::stable_sort(queue.begin(), queue.end(), [&](std::size_t a, std::size_t b) {
@@ -451,172 +708,13 @@ int run(const MutateArgs& args) {
   });
 
   interrupt_children_on_signal();
-  // With ccache the scratch trees share one cache: paths below the work directory are hashed
-  // relative to the build directory, so the first tree's compilations serve the others. The first
-  // tree is then built alone with every job, and the others from the cache after it.
-  const bool ccache = program_on_path("ccache").has_value();
-  if (ccache && std::getenv("CCACHE_BASEDIR") == nullptr) {
-    fs::create_directories(args.work);
-    setenv("CCACHE_BASEDIR", fs::weakly_canonical(args.work).c_str(), 1);
-  }
-  fs::create_directories(args.work);
-  run.commit = commit_of(args.source, fs::path(args.work) / "commit.log");
-  run.processor = processor_description();
-  const double deadline = start + 60 * args.budget_minutes;
-  std::vector<Worker> workers(static_cast<std::size_t>(std::max(1, args.jobs)));
-  std::mutex lock;
-  std::size_t next = 0, done = 0;
-  double finished_seconds = 0;
-  std::atomic<bool> failed_setup = false;
-  std::string setup_error;
-
-  // Tests that fail on the unmutated tree (say, work in progress) are left out of every mutant's
-  // run, and listed in the report; --exclude-tests adds a pattern of the user's.
-  std::condition_variable baseline_cv;
-  bool baseline_done = args.no_baseline;
-  bool first_tree_built = !ccache;  // (or failed: the others then fail on their own)
-  std::string exclude = args.exclude_tests;
-  TestTimeLimits limits;
-  limits.floor_seconds = args.test_timeout;
-  run.time_limit_factor = limits.factor;
-  run.time_limit_floor = limits.floor_seconds;
-
-  const auto work = [&](Worker& w) {
-    try {
-      const bool first = w.index == 0;
-      struct FirstBuilt {  // worker 0's build has ended, built or not: the others may start theirs
-        bool first;
-        std::mutex& lock;
-        std::condition_variable& cv;
-        bool& flag;
-        ~FirstBuilt() {
-          if (!first) return;
-          std::lock_guard<std::mutex> g(lock);
-          flag = true;
-          cv.notify_all();
-        }
-      };
-      {
-        const FirstBuilt first_built{first, lock, baseline_cv, first_tree_built};
-        set_up(w, args, ccache && first ? args.build_jobs * static_cast<int>(workers.size()) : args.build_jobs, [&] {
-          if (first) return;
-          std::unique_lock<std::mutex> g(lock);
-          baseline_cv.wait(g, [&] { return first_tree_built; });
-        });
-      }
-      if (w.index == 0 && !args.no_baseline) {
-        std::vector<std::string> failing;
-        std::map<std::string, double> own;
-        for (const std::string& label : args.labels) {
-          const fs::path log = w.logs / ("baseline." + label + ".log");
-          const CtestOutcome c = run_ctest(w, label, nullptr, log, false, args.exclude_tests);
-          own.merge(passed_test_seconds(read_text(log)));
-          if (!c.problem.empty()) throw std::runtime_error("the unmutated tree: label " + label + ": " + c.problem);
-          failing.insert(failing.end(), c.failed_tests.begin(), c.failed_tests.end());
-          std::lock_guard<std::mutex> g(lock);
-          run.baseline.emplace_back(label, c.seconds);
-          std::printf("baseline: label %s: %zu tests fail on the unmutated tree (see %s), %.0f s\n", label.c_str(),
-                      c.failed_tests.size(), log.string().c_str(), c.seconds);
-          for (const std::string& t : c.failed_tests) std::printf("  left out of the mutant runs: %s\n", t.c_str());
-          std::fflush(stdout);
-        }
-        std::lock_guard<std::mutex> g(lock);
-        run.excluded_tests = failing;
-        // A test counts as hanging only well past its own time on the unmutated tree: the machine
-        // may be shared, and a loaded machine must not make a mutant look caught.
-        double slowest = 0;
-        for (const auto& [test, seconds] : own) slowest = std::max(slowest, seconds);
-        limits.own_seconds = std::move(own);
-        limits.unknown_seconds = limits.factor * slowest;
-        std::printf("a test times out past %g times its own time on the unmutated tree, at least %g s (%zu tests timed)\n",
-                    limits.factor, limits.floor_seconds, limits.own_seconds.size());
-        if (!failing.empty()) exclude += (exclude.empty() ? "" : "|") + exact_names_pattern(failing);
-        baseline_done = true;
-        baseline_cv.notify_all();
-      }
-    } catch (const std::exception& e) {
-      std::lock_guard<std::mutex> g(lock);
-      failed_setup = true;
-      setup_error = e.what();
-      baseline_done = true;
-      baseline_cv.notify_all();
-      return;
-    }
-    {
-      std::unique_lock<std::mutex> g(lock);
-      baseline_cv.wait(g, [&] { return baseline_done; });
-      run.setup_seconds = std::max(run.setup_seconds, monotonic_seconds() - start);
-    }
-    for (;;) {
-      std::size_t index;
-      {
-        std::lock_guard<std::mutex> g(lock);
-        if (failed_setup || interrupted() || next == queue.size()) return;
-        // Stop starting mutants when one more (at the mean cost so far) would pass the budget.
-        const double estimate = done ? finished_seconds / static_cast<double>(done) : 120.0;
-        if (monotonic_seconds() + estimate > deadline) return;
-        index = queue[next++];
-      }
-      MutantResult& r = run.results[index];
-      try {
-        run_mutant(w, args, exclude, limits, r);
-      } catch (const std::exception& e) {
-        r.status = MutantStatus::error;
-        r.note = e.what();
-      }
-      std::lock_guard<std::mutex> g(lock);
-      ++done;
-      finished_seconds += r.seconds;
-      const bool caught = r.status == MutantStatus::caught_by_ctest || r.status == MutantStatus::caught_by_campaign;
-      std::printf("[%zu/%zu] %-18s %-44s %s%s%s %.0f s\n", done, queue.size(), std::string(to_string(r.status)).c_str(),
-                  r.mutant.id.c_str(), caught ? (r.check + ": " + r.test).c_str() : r.note.c_str(), caught ? "," : "",
-                  caught ? " after" : "", caught ? r.seconds_to_catch : r.seconds);
-      std::fflush(stdout);
-    }
-  };
-  std::vector<std::thread> threads;
-  for (std::size_t i = 0; i < workers.size(); ++i) {
-    workers[i].index = static_cast<int>(i);
-    // Absolute: the campaign runs inside the tree, and finds its binary and its output from there.
-    workers[i].root = fs::absolute(args.work) / ("worker-" + std::to_string(i));
-    workers[i].tree = workers[i].root / "tree";
-    workers[i].build = workers[i].root / "build";
-    workers[i].logs = workers[i].root / "logs";
-    threads.emplace_back(work, std::ref(workers[i]));
-  }
-  for (std::thread& t : threads) t.join();
-  if (failed_setup) {
-    std::fprintf(stderr, "crosscheck mutate: %s\n", setup_error.c_str());
+  MutationRunner runner(args, run, queue, start);
+  if (!runner.run_workers()) {
+    std::fprintf(stderr, "crosscheck mutate: %s\n", runner.setup_error().c_str());
     return kExitFound;
   }
   run.seconds = monotonic_seconds() - start;
-  for (MutantResult& r : run.results) {
-    if (r.status == MutantStatus::not_run && r.note.empty()) {
-      r.note = interrupted() ? "interrupted (SIGINT or SIGTERM)" : "the budget would have been exceeded";
-    }
-  }
-
-  const fs::path report = args.report.empty() ? fs::path(args.work) / "report.md" : fs::path(args.report);
-  const fs::path json = args.json.empty() ? fs::path(args.work) / "report.json" : fs::path(args.json);
-  write_text(report, markdown_report(run));
-  write_text(json, json_report(run));
-  const Score s = score_of(run);
-  int survived = 0, not_run = 0, errors = 0;
-  for (const MutantResult& r : run.results) {
-    survived += r.status == MutantStatus::survived;
-    not_run += r.status == MutantStatus::not_run;
-    errors += r.status == MutantStatus::error;
-    if (r.status == MutantStatus::survived) std::printf("SURVIVED %s: %s\n", r.mutant.id.c_str(), r.mutant.description.c_str());
-    if (r.status == MutantStatus::not_run) std::printf("not run %s: %s\n", r.mutant.id.c_str(), r.note.c_str());
-    if (r.status == MutantStatus::not_executable) {
-      std::printf("NOT EXECUTABLE HERE %s: %s\n", r.mutant.id.c_str(), r.note.c_str());
-    }
-  }
-  std::printf("score: ctest alone %d/%d, ctest + campaign %d/%d; %d stale, %d not run, %d errors\n", s.by_ctest,
-              s.counted, s.by_either, s.counted, stale, not_run, errors);
-  std::printf("report: %s, %s\n", report.string().c_str(), json.string().c_str());
-  if (interrupted()) return kExitFound;
-  return survived || stale || errors ? kExitFound : 0;
+  return report(args, run);
 }
 
 }  // namespace
@@ -656,7 +754,12 @@ void add_mutate_command(CLI::App& app, int& exit_code) {
   cmd->add_flag("--no-baseline", args->no_baseline,
                 "Skip running ctest on the unmutated tree (whose failing tests are otherwise left out)");
   cmd->add_option("--report", args->report, "Markdown report (default WORK/report.md)")->check(writable_file());
-  cmd->add_option("--json", args->json, "JSON report (default WORK/report.json)")->check(writable_file());
+  cmd->add_option("--json", args->json, "JSON report (default WORK/report.json), written again as each mutant ends")
+      ->check(writable_file());
+  cmd->add_option("--resume", args->resume,
+                  "JSON report of an earlier run on the same source (say, one cut short): its results that still "
+                  "hold are taken, and only the other mutants run")
+      ->check(CLI::ExistingFile);
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 

@@ -1,7 +1,10 @@
 #include "tool/mutation_report.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <stdexcept>
 
 namespace cc::tool {
 namespace {
@@ -98,7 +101,15 @@ std::string markdown_report(const MutationRun& run) {
   out += "Written by `crosscheck mutate`, which replaces it at each run; what it measures and how to read it: "
          "[testing.md](testing.md).\n\n";
   out += "- date: " + run.date + " UTC\n- commit: " + run.commit + "\n- processor: " + run.processor +
-         "\n- command: `" + run.command + "`\n\n";
+         "\n- command: `" + run.command + "`\n";
+  if (!run.resumed_from.empty()) {
+    const auto carried = std::count_if(run.results.begin(), run.results.end(),
+                                       [](const MutantResult& r) { return !r.from_run.empty(); });
+    out += "- resumed from: `" + run.resumed_from + "`, whose results for " + std::to_string(carried) +
+           " mutants (on the same source) are carried over, each marked in its note\n";
+  }
+  out += "\n";
+  if (!run.finished) out += "**Unfinished**: written while the run goes on; mutants not run yet are marked so.\n\n";
   out += "Catalogue `" + run.catalogue + "`, " + std::to_string(run.results.size()) + " mutants; " +
          std::to_string(run.jobs) + " worker(s); checks in order: ctest labels ";
   for (std::size_t i = 0; i < run.labels.size(); ++i) out += (i ? ", " : "") + run.labels[i];
@@ -162,6 +173,7 @@ std::string markdown_report(const MutationRun& run) {
     std::string note = r.note;
     if (r.status == MutantStatus::equivalent) note = r.mutant.equivalent;
     if (note.empty()) note = r.mutant.description;
+    if (!r.from_run.empty()) note += " (from the run of " + r.from_run + ")";
     out += "| `" + r.mutant.id + "` | " + r.mutant.query + " | " + cell(r.mutant.file) + " | " +
            std::string(to_string(r.status)) + " | " + cell(by) + " | " + (caught ? seconds_text(r.seconds_to_catch) : "") +
            " | " + (ran ? seconds_text(r.build_seconds) : "") + " | " + cell(note) + " |\n";
@@ -176,6 +188,7 @@ std::string json_report(const MutationRun& run) {
   j["date"] = run.date;
   j["command"] = run.command;
   j["commit"] = run.commit;
+  j["changes"] = run.changes;
   j["processor"] = run.processor;
   j["catalogue"] = run.catalogue;
   j["jobs"] = run.jobs;
@@ -189,6 +202,8 @@ std::string json_report(const MutationRun& run) {
   j["test_time_limit"] = {{"factor_of_own_time", run.time_limit_factor}, {"floor_seconds", run.time_limit_floor}};
   j["setup_seconds"] = run.setup_seconds;
   j["seconds"] = run.seconds;
+  j["finished"] = run.finished;
+  j["resumed_from"] = run.resumed_from;
   j["score"] = {{"counted", s.counted},
                 {"caught_by_ctest", s.by_ctest},
                 {"caught_by_ctest_or_campaign", s.by_either},
@@ -205,6 +220,8 @@ std::string json_report(const MutationRun& run) {
                             {"file", r.mutant.file},
                             {"kernel", r.mutant.kernel},
                             {"description", r.mutant.description},
+                            {"original", r.mutant.original},
+                            {"replacement", r.mutant.replacement},
                             {"status", std::string(to_string(r.status))},
                             {"check", r.check},
                             {"test", r.test},
@@ -212,9 +229,115 @@ std::string json_report(const MutationRun& run) {
                             {"seconds_to_catch", r.seconds_to_catch},
                             {"build_seconds", r.build_seconds},
                             {"seconds", r.seconds},
-                            {"worker", r.worker}});
+                            {"worker", r.worker},
+                            {"from_run", r.from_run}});
   }
   return j.dump(2) + "\n";
+}
+
+namespace {
+
+constexpr MutantStatus kStatuses[] = {MutantStatus::caught_by_ctest, MutantStatus::caught_by_campaign,
+                                      MutantStatus::survived,        MutantStatus::equivalent,
+                                      MutantStatus::stale,           MutantStatus::build_failed,
+                                      MutantStatus::not_executable,  MutantStatus::not_run,
+                                      MutantStatus::error};
+
+// A field of a report, or std::runtime_error naming the file and the field's JSON pointer.
+template <class T>
+T field(const nlohmann::json& j, const nlohmann::json::json_pointer& at, const std::filesystem::path& path) {
+  try {
+    return j.at(at).get<T>();
+  } catch (const nlohmann::json::exception&) {
+    throw std::runtime_error(path.string() + ": " + at.to_string() + " is missing or of the wrong type");
+  }
+}
+
+MutantStatus status_named(const std::string& name, const std::string& where) {
+  for (const MutantStatus s : kStatuses) {
+    if (to_string(s) == name) return s;
+  }
+  throw std::runtime_error(where + ": \"" + name + "\" is not a mutant's result");
+}
+
+}  // namespace
+
+MutationRun read_json_report(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path.string());
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw std::runtime_error(path.string() + ": not JSON (byte " + std::to_string(e.byte) + ")");
+  }
+  using P = nlohmann::json::json_pointer;
+  MutationRun run;
+  run.date = field<std::string>(j, P("/date"), path);
+  run.commit = field<std::string>(j, P("/commit"), path);
+  run.changes = j.value("changes", std::string());
+  run.labels = field<std::vector<std::string>>(j, P("/labels"), path);
+  run.campaign_seconds = field<double>(j, P("/campaign_seconds"), path);
+  run.campaign_seed = field<std::uint64_t>(j, P("/campaign_seed"), path);
+  const auto count = field<nlohmann::json>(j, P("/mutants"), path).size();
+  for (std::size_t i = 0; i < count; ++i) {
+    const std::string at = "/mutants/" + std::to_string(i);
+    MutantResult r;
+    r.mutant.id = field<std::string>(j, P(at + "/id"), path);
+    r.mutant.query = field<std::string>(j, P(at + "/query"), path);
+    r.mutant.file = field<std::string>(j, P(at + "/file"), path);
+    r.mutant.description = field<std::string>(j, P(at + "/description"), path);
+    // Reports from before the texts were written carry none: their results are not taken.
+    r.mutant.original = j.at(P(at)).value("original", std::string());
+    r.mutant.replacement = j.at(P(at)).value("replacement", std::string());
+    r.status = status_named(field<std::string>(j, P(at + "/status"), path), path.string() + ": " + at + "/status");
+    r.check = field<std::string>(j, P(at + "/check"), path);
+    r.test = field<std::string>(j, P(at + "/test"), path);
+    r.note = field<std::string>(j, P(at + "/note"), path);
+    r.seconds_to_catch = field<double>(j, P(at + "/seconds_to_catch"), path);
+    r.build_seconds = field<double>(j, P(at + "/build_seconds"), path);
+    r.seconds = field<double>(j, P(at + "/seconds"), path);
+    r.worker = field<int>(j, P(at + "/worker"), path);
+    r.from_run = j.at(P(at)).value("from_run", std::string());
+    run.results.push_back(std::move(r));
+  }
+  return run;
+}
+
+std::vector<std::size_t> carry_over(MutationRun& run, const MutationRun& earlier) {
+  if (run.commit == "unknown" || earlier.commit == "unknown") {
+    throw std::runtime_error("the source tree's commit is unknown (not in git), so the runs cannot be told the same");
+  }
+  if (earlier.commit != run.commit || earlier.changes != run.changes) {
+    throw std::runtime_error("its run was on " + earlier.commit + (earlier.changes.empty() ? "" : " (" + earlier.changes + ")") +
+                             ", the source is now at " + run.commit + (run.changes.empty() ? "" : " (" + run.changes + ")"));
+  }
+  const bool same_campaign = earlier.campaign_seconds == run.campaign_seconds && earlier.campaign_seed == run.campaign_seed;
+  const bool same_checks = earlier.labels == run.labels && same_campaign;
+  const auto runs_check = [&](const std::string& check) {
+    if (check == "campaign") return run.campaign_seconds > 0 && same_campaign;
+    return std::find(run.labels.begin(), run.labels.end(), check) != run.labels.end();
+  };
+  std::vector<std::size_t> carried;
+  for (std::size_t i = 0; i < run.results.size(); ++i) {
+    MutantResult& now = run.results[i];
+    if (now.status != MutantStatus::not_run) continue;  // stale, equivalent, not executable here
+    const auto before = std::find_if(earlier.results.begin(), earlier.results.end(), [&](const MutantResult& e) {
+      return e.mutant.id == now.mutant.id && e.mutant.file == now.mutant.file && e.mutant.original == now.mutant.original &&
+             e.mutant.replacement == now.mutant.replacement;
+    });
+    if (before == earlier.results.end()) continue;
+    const bool caught = before->status == MutantStatus::caught_by_ctest || before->status == MutantStatus::caught_by_campaign;
+    const bool holds = (caught && runs_check(before->check)) || before->status == MutantStatus::build_failed ||
+                       (before->status == MutantStatus::survived && same_checks);
+    if (!holds) continue;
+    const Mutant mutant = now.mutant;
+    now = *before;
+    now.mutant = mutant;
+    if (now.from_run.empty()) now.from_run = earlier.date;
+    carried.push_back(i);
+  }
+  return carried;
 }
 
 }  // namespace cc::tool

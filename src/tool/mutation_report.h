@@ -37,12 +37,14 @@ struct MutantResult {
   double build_seconds = 0;     // incremental builds, all stages
   double seconds = 0;           // the mutant's whole run
   int worker = -1;
+  std::string from_run;  // non-empty: carried over from the earlier run of this date (--resume)
 };
 
 struct MutationRun {
   std::string date;  // UTC, YYYY-MM-DD HH:MM
   std::string command;
   std::string commit;     // of the source tree ("unknown" outside git; "-dirty" with changes)
+  std::string changes;    // with "-dirty": a digest of the uncommitted changes; else empty
   std::string processor;  // its name and hardware threads
   std::string catalogue;
   int jobs = 1;
@@ -57,6 +59,8 @@ struct MutationRun {
   double time_limit_factor = 5, time_limit_floor = 0;
   double setup_seconds = 0;
   double seconds = 0;
+  bool finished = true;      // false in the report written while the run goes on
+  std::string resumed_from;  // the report whose results were carried over (--resume), if any
   std::vector<MutantResult> results;  // in catalogue order
 };
 
@@ -80,5 +84,19 @@ std::string markdown_report(const MutationRun& run);
 
 /// The report as JSON text.
 std::string json_report(const MutationRun& run);
+
+/// Reads a report that json_report wrote (the fields carry_over needs: the run's date, commit,
+/// changes, labels and campaign, each mutant's id, file, text and result). Throws
+/// std::runtime_error naming the file and the place when it cannot be read or is not one.
+MutationRun read_json_report(const std::filesystem::path& path);
+
+/// Takes into `run`, for its mutants still to run, the results of `earlier` that still hold, and returns their indices in
+/// run.results. Both runs must be of the same source: the same commit (never "unknown") and the
+/// same uncommitted changes, else std::runtime_error says why. A mutant's result is taken when
+/// its id, file, original and replacement are the same and it is one of: caught by a check that
+/// `run` also runs (a ctest label of its labels, or the campaign with the same seconds and seed);
+/// does not build; survived, when `run` runs the same labels and campaign. Anything else (not
+/// run, errors, survivors of other checks) is left to run again.
+std::vector<std::size_t> carry_over(MutationRun& run, const MutationRun& earlier);
 
 }  // namespace cc::tool

@@ -4,10 +4,14 @@
 // left as it was and the scratch tree is reverted.
 #include <gtest/gtest.h>
 
+#include <csignal>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <regex>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "cli/program_run.h"
 #include "harness/formats/input_json.h"
@@ -26,14 +30,25 @@ struct MutateRun {
   harness::Json report;  // report.json, null when none was written
 };
 
-// crosscheck mutate on the fixture's catalogue, one job, a 2 s floor on test time limits.
+// crosscheck mutate's command line on the fixture's catalogue: one job, test time limits with a
+// floor of `test_timeout` seconds, the work (and the reports) in scratch/`work`.
+std::vector<std::string> mutate_argv(const fs::path& scratch, const std::string& budget_minutes,
+                                     const std::string& test_timeout = "2", const std::string& work = "work") {
+  return {kTool,   "mutate", "--source",     kFixture.string(), "--catalogue", (kFixture / "catalogue.json").string(),
+          "--work", (scratch / work).string(), "--labels", "unit", "--jobs", "1", "--build-jobs", "1",
+          "--test-timeout", test_timeout, "--campaign-seconds", "0", "--budget", budget_minutes};
+}
+
+// The report in scratch/`work`, null when there is none (or it does not parse).
+harness::Json report_in(const fs::path& scratch, const std::string& work = "work") {
+  const fs::path json = scratch / work / "report.json";
+  return fs::exists(json) ? harness::Json::parse(text_of(json), nullptr, false) : harness::Json();
+}
+
 MutateRun mutate(const fs::path& scratch, const std::string& budget_minutes) {
   MutateRun r;
-  r.outcome = run({kTool, "mutate", "--source", kFixture.string(), "--catalogue", (kFixture / "catalogue.json").string(),
-                   "--work", (scratch / "work").string(), "--labels", "unit", "--jobs", "1", "--build-jobs", "1",
-                   "--test-timeout", "2", "--campaign-seconds", "0", "--budget", budget_minutes},
-                  scratch, scratch);
-  if (fs::exists(scratch / "work" / "report.json")) r.report = harness::Json::parse(text_of(scratch / "work" / "report.json"));
+  r.outcome = run(mutate_argv(scratch, budget_minutes), scratch, scratch);
+  r.report = report_in(scratch);
   return r;
 }
 
@@ -93,6 +108,86 @@ TEST(MutateRun, NoMutantStartsThatWouldEndPastTheBudget) {
     EXPECT_EQ(m["note"], "the budget would have been exceeded") << m["id"];
   }
   EXPECT_LT(r.report["seconds"].get<double>(), 60.0);
+}
+
+// Kills every process whose command line names `folder` (with its process group): what a run
+// killed without warning leaves running.
+void kill_processes_under(const fs::path& folder) {
+  for (const auto& entry : fs::directory_iterator("/proc")) {
+    const std::string name = entry.path().filename();
+    if (name.find_first_not_of("0123456789") != std::string::npos) continue;
+    std::string cmdline = text_of(entry.path() / "cmdline");
+    std::replace(cmdline.begin(), cmdline.end(), '\0', ' ');
+    if (cmdline.find(folder.string()) == std::string::npos) continue;
+    const pid_t pid = std::stoi(name);
+    if (const pid_t group = getpgid(pid); group > 1 && group != getpgrp()) kill(-group, SIGKILL);
+    kill(pid, SIGKILL);
+  }
+}
+
+// The report is written again as each mutant ends, so a run killed without warning (the machine
+// goes down) leaves the results it had; --resume takes them and runs only the rest.
+TEST(MutateRun, ARunKilledMidwayIsResumedFromItsReport) {
+  const TempFolder scratch("crosscheck_mutate_resume");
+  // A 30 s floor: fixture.hangs (the second mutant) runs 30 s, time enough to kill the run.
+  harness::Child child = harness::start_program(mutate_argv(scratch.path(), "10", "30", "cut"),
+                                                {scratch.path(), scratch.path() / "cut.out", scratch.path() / "cut.err"});
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(100);
+  harness::Json cut;
+  while (std::chrono::steady_clock::now() < deadline) {
+    cut = report_in(scratch.path(), "cut");
+    if (cut.is_object() && mutant(cut, "fixture.wrong_answer")["status"] == "caught by ctest") break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  }
+  kill(child.pid, SIGKILL);
+  harness::finish_child(child);
+  kill_processes_under(scratch.path() / "cut");
+  ASSERT_TRUE(cut.is_object()) << text_of(scratch.path() / "cut.out") << text_of(scratch.path() / "cut.err");
+  EXPECT_EQ(cut["finished"], false);
+  EXPECT_EQ(mutant(cut, "fixture.wrong_answer")["status"], "caught by ctest");
+  EXPECT_EQ(mutant(cut, "fixture.hangs")["status"], "not run");
+  EXPECT_EQ(mutant(cut, "fixture.comment_only")["note"], "not run yet (the run goes on)");
+
+  const std::string earlier = (scratch.path() / "cut" / "report.json").string();
+  std::vector<std::string> argv = mutate_argv(scratch.path(), "10", "2", "resumed");
+  argv.insert(argv.end(), {"--resume", earlier});
+  const Outcome resumed = run(argv, scratch.path(), scratch.path());
+  EXPECT_EQ(resumed.status, 1) << "fixture.comment_only survives: " << resumed.out << resumed.err;
+  EXPECT_NE(resumed.out.find("1 results carried over, 2 mutants to run"), std::string::npos) << resumed.out;
+  const harness::Json report = report_in(scratch.path(), "resumed");
+  ASSERT_TRUE(report.is_object()) << resumed.err;
+  EXPECT_EQ(report["finished"], true);
+  EXPECT_EQ(report["resumed_from"], earlier);
+  const harness::Json& carried = mutant(report, "fixture.wrong_answer");
+  EXPECT_EQ(carried["status"], "caught by ctest");
+  EXPECT_EQ(carried["from_run"], cut["date"]);
+  EXPECT_FALSE(fs::exists(scratch.path() / "resumed" / "worker-0" / "logs" / "fixture.wrong_answer.unit.log"))
+      << "a carried-over mutant was run again";
+  EXPECT_EQ(mutant(report, "fixture.hangs")["status"], "caught by ctest");
+  EXPECT_EQ(mutant(report, "fixture.hangs")["from_run"], "");
+  EXPECT_EQ(mutant(report, "fixture.comment_only")["status"], "SURVIVED");
+  EXPECT_NE(resumed.out.find("score: ctest alone 2/3"), std::string::npos) << resumed.out;
+}
+
+// A report of another source is refused before anything is built, naming the flag.
+TEST(MutateRun, AReportOfAnotherSourceIsNotResumed) {
+  const TempFolder scratch("crosscheck_mutate_resume_other");
+  harness::Json other = harness::Json::parse(R"({"date": "2026-11-20 09:00", "commit": "000000000000", "changes": "",
+      "labels": ["unit"], "campaign_seconds": 0, "campaign_seed": 1, "mutants": []})");
+  std::ofstream(scratch.path() / "other.json") << other.dump();
+  std::vector<std::string> argv = mutate_argv(scratch.path(), "10");
+  argv.insert(argv.end(), {"--resume", (scratch.path() / "other.json").string()});
+  const Outcome o = run(argv, scratch.path(), scratch.path());
+  EXPECT_EQ(o.status, 2) << o.out << o.err;
+  EXPECT_NE(o.err.find("--resume " + (scratch.path() / "other.json").string() + ": its run was on 000000000000"),
+            std::string::npos)
+      << o.err;
+  EXPECT_FALSE(fs::exists(scratch.path() / "work" / "worker-0")) << "set up before the flag was checked";
+
+  argv.back() = (scratch.path() / "missing.json").string();
+  const Outcome missing = run(argv, scratch.path(), scratch.path());
+  EXPECT_EQ(missing.status, 2);
+  EXPECT_NE(missing.err.find("--resume"), std::string::npos) << missing.err;
 }
 
 }  // namespace

@@ -6,10 +6,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 #include <vector>
+
+#include "temp_folder.h"
 
 namespace cc::tool {
 namespace {
@@ -232,6 +235,157 @@ TEST(MutationReport, EachLayerHasItsOwnScore) {
   const auto j = nlohmann::json::parse(json_report(run));
   EXPECT_EQ(j["score_by_layer"]["harness"]["counted"], 1);
   EXPECT_EQ(j["score_by_layer"]["tool"]["caught_by_ctest"], 1);
+}
+
+// Resuming: a report read back holds what carry_over needs, as written.
+TEST(MutationReport, AJsonReportReadsBackAsWritten) {
+  MutationRun run = sample_run();
+  run.changes = "changes 00000000000000ff";
+  run.results[0].mutant.original = "t < 1";
+  run.results[0].mutant.replacement = "t <= 1";
+  run.results[0].from_run = "2026-11-20 09:00";
+  const test::TempFolder scratch("crosscheck_mutation_report");
+  const auto path = scratch.path() / "report.json";
+  std::ofstream(path) << json_report(run);
+  const MutationRun back = read_json_report(path);
+  EXPECT_EQ(back.date, run.date);
+  EXPECT_EQ(back.commit, run.commit);
+  EXPECT_EQ(back.changes, run.changes);
+  EXPECT_EQ(back.labels, run.labels);
+  EXPECT_EQ(back.campaign_seconds, run.campaign_seconds);
+  ASSERT_EQ(back.results.size(), run.results.size());
+  for (std::size_t i = 0; i < run.results.size(); ++i) {
+    const MutantResult &a = back.results[i], &b = run.results[i];
+    EXPECT_EQ(a.mutant.id, b.mutant.id);
+    EXPECT_EQ(a.mutant.file, b.mutant.file);
+    EXPECT_EQ(a.status, b.status) << b.mutant.id;
+    EXPECT_EQ(a.check, b.check);
+    EXPECT_EQ(a.test, b.test);
+    EXPECT_EQ(a.seconds_to_catch, b.seconds_to_catch);
+  }
+  EXPECT_EQ(back.results[0].mutant.original, "t < 1");
+  EXPECT_EQ(back.results[0].mutant.replacement, "t <= 1");
+  EXPECT_EQ(back.results[0].from_run, "2026-11-20 09:00");
+}
+
+TEST(MutationReport, ABadReportIsRefusedNamingTheFileAndThePlace) {
+  const test::TempFolder scratch("crosscheck_mutation_report_bad");
+  const auto path = scratch.path() / "report.json";
+  auto j = nlohmann::json::parse(json_report(sample_run()));
+  j["mutants"][2]["status"] = "caught by luck";
+  std::ofstream(path) << j.dump();
+  try {
+    read_json_report(path);
+    ADD_FAILURE() << "read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_TRUE(contains(e.what(), path.string() + ": /mutants/2/status")) << e.what();
+  }
+  j = nlohmann::json::parse(json_report(sample_run()));
+  j["mutants"][1].erase("check");
+  std::ofstream(path, std::ios::trunc) << j.dump();
+  EXPECT_THROW(read_json_report(path), std::runtime_error);
+  std::ofstream(path, std::ios::trunc) << "{\"date\": ";
+  EXPECT_THROW(read_json_report(path), std::runtime_error);
+}
+
+// The runs to resume: an earlier one on commit 0123456789ab (clean) with each kind of result,
+// and the same catalogue to run now, every mutant still to run.
+MutationRun earlier_run() {
+  MutationRun run = sample_run();
+  run.commit = "0123456789ab";
+  return run;
+}
+
+MutationRun run_to_resume(const std::vector<std::string>& labels) {
+  MutationRun run = earlier_run();
+  run.date = "2026-11-22 08:00";
+  run.labels = labels;
+  for (MutantResult& r : run.results) {
+    r.status = MutantStatus::not_run;
+    r.check.clear(), r.test.clear(), r.note.clear();
+    r.seconds_to_catch = 0;
+  }
+  return run;
+}
+
+MutantStatus status_of(const MutationRun& run, const std::string& id) {
+  for (const MutantResult& r : run.results) {
+    if (r.mutant.id == id) return r.status;
+  }
+  ADD_FAILURE() << "no mutant " << id;
+  return MutantStatus::error;
+}
+
+TEST(MutationReport, ResumingTakesWhatStillHoldsAndLeavesTheRestToRun) {
+  MutationRun now = run_to_resume(earlier_run().labels);
+  const std::vector<std::size_t> carried = carry_over(now, earlier_run());
+  // Caught by ctest twice, by the campaign (same seconds and seed), a survivor (same checks),
+  // one that does not build; not the stale, not-run, error or equivalent ones.
+  EXPECT_EQ(carried, (std::vector<std::size_t>{0, 1, 2, 3, 6}));
+  EXPECT_EQ(status_of(now, "a.by_unit"), MutantStatus::caught_by_ctest);
+  EXPECT_EQ(now.results[0].test, "RayAabb.Grazes (Failed)");
+  EXPECT_EQ(now.results[0].seconds_to_catch, 73);
+  EXPECT_EQ(now.results[0].from_run, "2026-11-21 10:00");
+  EXPECT_EQ(status_of(now, "h.not_run"), MutantStatus::not_run);
+  EXPECT_EQ(status_of(now, "i.error"), MutantStatus::not_run);
+  EXPECT_TRUE(contains(markdown_report(now), "(from the run of 2026-11-21 10:00)"));
+}
+
+TEST(MutationReport, ACatchIsTakenOnlyWhenThisRunHasItsCheck) {
+  // Without the property label the property catch must be found again, and with other labels a
+  // survivor may now be caught.
+  MutationRun now = run_to_resume({"corpus", "unit"});
+  carry_over(now, earlier_run());
+  EXPECT_EQ(status_of(now, "a.by_unit"), MutantStatus::caught_by_ctest);
+  EXPECT_EQ(status_of(now, "b.by_property"), MutantStatus::not_run);
+  EXPECT_EQ(status_of(now, "d.survivor"), MutantStatus::not_run);
+  EXPECT_EQ(status_of(now, "c.by_campaign"), MutantStatus::caught_by_campaign);
+  // Another campaign seed: its catch is not this run's.
+  now = run_to_resume({"corpus", "unit"});
+  now.campaign_seed = 2;
+  carry_over(now, earlier_run());
+  EXPECT_EQ(status_of(now, "c.by_campaign"), MutantStatus::not_run);
+}
+
+TEST(MutationReport, AMutantWhoseTextChangedRunsAgain) {
+  MutationRun now = run_to_resume(earlier_run().labels);
+  now.results[0].mutant.replacement = "something else";
+  now.results[1].mutant.file = "src/collide/other.cpp";
+  carry_over(now, earlier_run());
+  EXPECT_EQ(status_of(now, "a.by_unit"), MutantStatus::not_run);
+  EXPECT_EQ(status_of(now, "b.by_property"), MutantStatus::not_run);
+}
+
+TEST(MutationReport, OnlyARunOnTheSameSourceIsResumed) {
+  MutationRun now = run_to_resume(earlier_run().labels);
+  now.commit = "ba9876543210";
+  EXPECT_THROW(carry_over(now, earlier_run()), std::runtime_error);
+  now.commit = "0123456789ab-dirty";  // the same commit with changes
+  now.changes = "changes 0000000000000001";
+  EXPECT_THROW(carry_over(now, earlier_run()), std::runtime_error);
+  MutationRun earlier = earlier_run();
+  earlier.commit = now.commit;
+  earlier.changes = "changes 0000000000000002";  // other changes
+  EXPECT_THROW(carry_over(now, earlier), std::runtime_error);
+  earlier.changes = now.changes;
+  EXPECT_NO_THROW(carry_over(now, earlier));
+  now.commit = earlier.commit = "unknown";
+  now.changes = earlier.changes = "";
+  now.results = run_to_resume(earlier_run().labels).results;
+  EXPECT_THROW(carry_over(now, earlier), std::runtime_error);
+  EXPECT_EQ(status_of(now, "a.by_unit"), MutantStatus::not_run);
+}
+
+TEST(MutationReport, AnUnfinishedReportSaysSo) {
+  MutationRun run = sample_run();
+  run.finished = false;
+  run.resumed_from = "build/mutate/report.json";
+  run.results[0].from_run = "2026-11-20 09:00";
+  const std::string md = markdown_report(run);
+  EXPECT_TRUE(contains(md, "**Unfinished**")) << md;
+  EXPECT_TRUE(contains(md, "- resumed from: `build/mutate/report.json`, whose results for 1 mutants")) << md;
+  EXPECT_EQ(nlohmann::json::parse(json_report(run))["finished"], false);
+  EXPECT_FALSE(contains(markdown_report(sample_run()), "Unfinished"));
 }
 
 }  // namespace
