@@ -264,22 +264,9 @@ Json row_json(const Tally& t) {
           {"failed", t.failed}};
 }
 
-int run(const ReportArgs& args) {
-  if (args.random + args.near == 0) {
-    std::fprintf(stderr, "crosscheck bvh-report: --random and --near are both 0: no pose to report on (give one at least 1)\n");
-    return kExitBadInput;
-  }
-  const auto folder = harness::mesh_folder(args.corpora);
-  const auto env = harness::find_mesh_file("env.obj", folder), rob = harness::find_mesh_file("rob.obj", folder);
-  if (!env || !rob) {
-    std::fprintf(stderr, "crosscheck bvh-report: env.obj and rob.obj not found in %s\n", folder.string().c_str());
-    return kExitBadInput;
-  }
-  MeshPair base;
-  base.a.source = base.b.source = harness::MeshRef::Source::file;
-  base.a.file = "meshes/env.obj", base.b.file = "meshes/rob.obj";
-  base.a.mesh = harness::load_mesh_file(*env), base.b.mesh = harness::load_mesh_file(*rob);
-
+// The poses: --random ones drawn as FCL's test draws them, then --near ones bisected to contact,
+// each with the exact reference's answer.
+std::vector<Pose> draw_poses(const ReportArgs& args, const MeshPair& base) {
   harness::RandomChoices c(args.seed);
   std::vector<Pose> poses;
   for (int i = 0; i < args.random + args.near; ++i) {
@@ -293,35 +280,17 @@ int run(const ReportArgs& args) {
     p.exact = exact::judge_meshes(p.m);
     poses.push_back(std::move(p));
   }
-  std::size_t exact_pairs = 0, colliding = 0;
-  for (const Pose& p : poses) exact_pairs += p.exact.answer.pairs.size(), colliding += p.exact.answer.hit;
-  std::printf("env.obj (%zu triangles) against rob.obj (%zu triangles): %d random poses (as FCL's test draws them), "
-              "%d near contact; seed %llu\n",
-              base.a.mesh->size(), base.b.mesh->size(), args.random, args.near, static_cast<unsigned long long>(args.seed));
-  std::printf("exact reference: %zu colliding pairs over %zu poses with a pair; top-down builds: longest side, midpoint, "
-              "%d triangle(s) per leaf\n\n",
-              exact_pairs, colliding, args.leaf_size);
-  std::printf("%-38s %9s %7s %10s %10s %10s %9s %12s %9s %6s %6s %6s %6s\n", "hierarchy (volume build update)",
-              "build ms", "pairs", "n_v/query", "n_p/query", "n_u/query", "pts/upd", "median us", "apx/exact", "right",
-              "band", "wrong", "failed");
-  Json rows = Json::array();
-  for (const harness::LibraryBvh& l : every_hierarchy(args.leaf_size)) {
-    const Tally t = run_library(l, poses);
-    print_row(t, poses.size());
-    rows.push_back(row_json(t));
-  }
-  std::printf("\n");
-  for (const std::string& party : fcl_oracle::fcl_mesh_parties()) {
-    const Tally t = run_fcl(party, poses);
-    print_row(t, poses.size());
-    rows.push_back(row_json(t));
-  }
+  return poses;
+}
+
+// The lazy top-down trees' table (printed), one row per volume type and kind of pose.
+Json print_lazy_rows(const std::vector<Pose>& poses, int leaf_size) {
   std::printf("\n%-38s %6s %16s %16s %9s %12s\n", "lazy top-down (volume poses)", "poses", "nodes made/query",
               "of whole trees", "made %", "median us");
   Json lazy_rows = Json::array();
   for (harness::BvType bv : harness::kAllBvTypes) {
     for (bool near : {false, true}) {
-      const LazyRow r = run_lazy(bv, poses, near, args.leaf_size);
+      const LazyRow r = run_lazy(bv, poses, near, leaf_size);
       if (r.poses == 0) continue;
       std::printf("%-38s %6zu %16.1f %16.0f %8.1f%% %12.1f\n", r.name.c_str(), r.poses, r.nodes_made, r.nodes_total,
                   100 * r.nodes_made / r.nodes_total, r.median_us);
@@ -332,6 +301,12 @@ int run(const ReportArgs& args) {
                            {"median_query_us", r.median_us}});
     }
   }
+  return lazy_rows;
+}
+
+// Collision determination (printed): the library's pairs and corners against FCL's contacts;
+// null when no pose has a colliding pair.
+Json print_contacts(const std::vector<Pose>& poses) {
   const ContactRow contacts = run_contacts(poses);
   Json contact_json;
   if (contacts.poses > 0) {
@@ -361,6 +336,51 @@ int run(const ReportArgs& args) {
                     {"fcl_contact_distance_max", at(1.0)},
                     {"fcl_contacts_on_the_intersection", contacts.on_the_intersection}};
   }
+  return contact_json;
+}
+
+int run(const ReportArgs& args) {
+  if (args.random + args.near == 0) {
+    std::fprintf(stderr, "crosscheck bvh-report: --random and --near are both 0: no pose to report on (give one at least 1)\n");
+    return kExitBadInput;
+  }
+  const auto folder = harness::mesh_folder(args.corpora);
+  const auto env = harness::find_mesh_file("env.obj", folder), rob = harness::find_mesh_file("rob.obj", folder);
+  if (!env || !rob) {
+    std::fprintf(stderr, "crosscheck bvh-report: env.obj and rob.obj not found in %s\n", folder.string().c_str());
+    return kExitBadInput;
+  }
+  MeshPair base;
+  base.a.source = base.b.source = harness::MeshRef::Source::file;
+  base.a.file = "meshes/env.obj", base.b.file = "meshes/rob.obj";
+  base.a.mesh = harness::load_mesh_file(*env), base.b.mesh = harness::load_mesh_file(*rob);
+
+  const std::vector<Pose> poses = draw_poses(args, base);
+  std::size_t exact_pairs = 0, colliding = 0;
+  for (const Pose& p : poses) exact_pairs += p.exact.answer.pairs.size(), colliding += p.exact.answer.hit;
+  std::printf("env.obj (%zu triangles) against rob.obj (%zu triangles): %d random poses (as FCL's test draws them), "
+              "%d near contact; seed %llu\n",
+              base.a.mesh->size(), base.b.mesh->size(), args.random, args.near, static_cast<unsigned long long>(args.seed));
+  std::printf("exact reference: %zu colliding pairs over %zu poses with a pair; top-down builds: longest side, midpoint, "
+              "%d triangle(s) per leaf\n\n",
+              exact_pairs, colliding, args.leaf_size);
+  std::printf("%-38s %9s %7s %10s %10s %10s %9s %12s %9s %6s %6s %6s %6s\n", "hierarchy (volume build update)",
+              "build ms", "pairs", "n_v/query", "n_p/query", "n_u/query", "pts/upd", "median us", "apx/exact", "right",
+              "band", "wrong", "failed");
+  Json rows = Json::array();
+  for (const harness::LibraryBvh& l : every_hierarchy(args.leaf_size)) {
+    const Tally t = run_library(l, poses);
+    print_row(t, poses.size());
+    rows.push_back(row_json(t));
+  }
+  std::printf("\n");
+  for (const std::string& party : fcl_oracle::fcl_mesh_parties()) {
+    const Tally t = run_fcl(party, poses);
+    print_row(t, poses.size());
+    rows.push_back(row_json(t));
+  }
+  const Json lazy_rows = print_lazy_rows(poses, args.leaf_size);
+  const Json contact_json = print_contacts(poses);
   std::printf("\nn_v, n_p, n_u: volume tests, triangle tests and volume updates per query (all pairs, descent into a's\n"
               "hierarchy). pts/upd: hull points per update that the exact update moves, or that hill climbing\n"
               "evaluates on its walks (plus the exact update's when a walk is not certified). apx/exact: median ratio of the approximate update's moved volume to the exact update's.\n"

@@ -209,6 +209,284 @@ struct Worker {
 // this long after, SIGKILL: every worker stops within a second.
 constexpr std::int64_t kStopGraceNs = 500'000'000;
 
+// The supervisor of a campaign: starts the workers, reads their findings, replaces those that
+// end early, tells a death in a case (a finding) from one outside every case (a problem of the
+// run) or from outside the run (the case asked again), and kills a case that hangs.
+class Supervisor {
+ public:
+  Supervisor(const CampaignOptions& options, const Oracles& oracles, Slot* slots)
+      : options_(options),
+        oracles_(oracles),
+        slots_(slots),
+        workers_(static_cast<std::size_t>(options.workers)),
+        harness_deaths_(workers_.size(), 0),
+        start_ns_(now_ns()),
+        deadline_ns_(start_ns_ + static_cast<std::int64_t>(options.seconds * 1e9)) {
+    result_.seed = options.seed;
+  }
+
+  CampaignResult run() {
+    std::size_t alive = 0;
+    for (int w = 0; w < options_.workers; ++w) alive += spawn(w) ? 1 : 0;
+    result_.workers = static_cast<int>(alive);  // the rates are those of the workers that ran
+    // The supervisor's own references, made after the workers forked (they make theirs).
+    exact_ = oracles_.exact();
+    second_ = oracles_.second();
+    while (alive > 0) {
+      stop_workers_when_due();
+      std::vector<pollfd> fds;
+      for (const Worker& w : workers_) fds.push_back({w.fd, POLLIN, 0});
+      poll(fds.data(), fds.size(), 100);
+      for (std::size_t i = 0; i < workers_.size(); ++i) {
+        if (workers_[i].fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP))) continue;
+        if (read_from(workers_[i])) continue;
+        if (!reap(i)) --alive;
+      }
+      kill_hung_cases();
+      report_progress();
+    }
+    result_.seconds = static_cast<double>(now_ns() - start_ns_) * 1e-9;
+    result_.tallies = tallies();
+    result_.interrupted = interrupts() > 0;
+    // Never lose a finding silently: one a worker sent that did not arrive is a problem of the run.
+    std::uint64_t findings_sent = 0;
+    for (int w = 0; w < options_.workers; ++w) findings_sent += slots_[w].findings_sent;
+    if (findings_sent > findings_received_) {
+      result_.problems.push_back(std::to_string(findings_sent - findings_received_) +
+                                 " findings of the workers never reached the campaign (a worker's report was cut off)");
+    }
+    return std::move(result_);
+  }
+
+ private:
+  bool stopping() const { return interrupts() > 0 || now_ns() >= deadline_ns_; }
+
+  // Starts worker w; false (and a problem recorded) when the pipe or the fork fails.
+  bool spawn(int w) {
+    slots_[w].phase = starting;
+    try {
+      const Child child = start_child([&](int out) -> int { run_worker(w, options_, oracles_, slots_[w], out, deadline_ns_); });
+      workers_[static_cast<std::size_t>(w)] = {child.pid, child.out, "", false};
+      return true;
+    } catch (const std::system_error& e) {
+      workers_[static_cast<std::size_t>(w)] = {};
+      result_.problems.push_back("worker " + std::to_string(w) + " could not be started (" + e.what() +
+                                 "); the campaign went on without it");
+      return false;
+    }
+  }
+
+  // At the deadline or an interrupt every worker gets SIGTERM, and SIGKILL after the grace.
+  void stop_workers_when_due() {
+    if (stop_ns_ == 0 && stopping()) {
+      stop_ns_ = now_ns();
+      for (const Worker& w : workers_) {
+        if (w.fd >= 0) kill(w.pid, SIGTERM);
+      }
+    }
+    if (stop_ns_ != 0 && now_ns() - stop_ns_ > kStopGraceNs) {
+      for (Worker& w : workers_) {
+        if (w.fd >= 0 && !w.stopped) {
+          w.stopped = true;
+          kill(w.pid, SIGKILL);
+        }
+      }
+    }
+  }
+
+  // Reads what a worker wrote and handles each whole line; false at the end of its pipe.
+  bool read_from(Worker& w) {
+    char chunk[4096];
+    const ssize_t n = ::read(w.fd, chunk, sizeof chunk);
+    if (n <= 0) return false;
+    w.buffer.append(chunk, static_cast<std::size_t>(n));
+    std::size_t eol;
+    while ((eol = w.buffer.find('\n')) != std::string::npos) {
+      handle_line(w.buffer.substr(0, eol));
+      w.buffer.erase(0, eol + 1);
+    }
+    return true;
+  }
+
+  // A worker's line: "F <kind> <case index> <answers>" (a finding) or "E <kind> <case index>
+  // <first line>" (a case that wrote to standard error).
+  void handle_line(const std::string& line) {
+    std::istringstream in(line);
+    char tag = 0;
+    int kind_number = 0;
+    std::uint64_t index = 0;
+    in >> tag >> kind_number >> index;
+    if (!in) return;
+    const auto kind = static_cast<QueryKind>(kind_number);
+    std::string rest;
+    std::getline(in, rest);
+    if (tag == 'E') {
+      if (result_.noisy_cases++ == 0) result_.first_noise = std::string(name(kind)) + " case " + std::to_string(index) + ":" + rest;
+      return;
+    }
+    if (tag != 'F') return;
+    std::optional<Json> answers;
+    try {
+      answers = Json::parse(rest);
+    } catch (const std::exception&) {
+    }
+    ++findings_received_;
+    record_finding(kind, index, "", idle, answers);
+  }
+
+  void record_finding(QueryKind kind, std::uint64_t index, const std::string& crash, int phase,
+                      const std::optional<Json>& answers) {
+    Finding f;
+    f.kind = kind;
+    f.case_index = index;
+    f.input = campaign_case(options_.seed, kind, index, options_.out_of_contract_percent, options_.mesh_folder);
+    f.crash = crash;
+    bool answered = false;
+    if (crash.empty() && answers) {  // it returned in the worker, which sent the answers it got
+      try {
+        answers_from_json(*answers, *second_, kind, f.evaluation);
+        f.evaluation.exact = exact_->judge(f.input);
+        judge_into(f.evaluation, f.input);
+        answered = true;
+      } catch (const std::exception&) {
+        f.evaluation = {};
+      }
+    }
+    if (crash.empty() && !answered) {  // (answers that did not parse) the same again, first in a child
+      if (auto e = evaluate_in_child(f.input, *exact_, *second_)) {
+        f.evaluation = std::move(*e);
+      } else {
+        const std::string how = "died when asked again in a child process";
+        f.evaluation = evaluation_after_death(f.input, *exact_, *second_, DiedIn::second_opinions, how);
+        f.crash = death_text(how, DiedIn::second_opinions);
+        f.died_in = DiedIn::second_opinions;
+      }
+    }
+    if (!crash.empty()) {  // rebuilt without the party that died, as every command rebuilds it
+      f.evaluation = evaluation_after_death(f.input, *exact_, *second_, died_in(phase), crash);
+      f.crash = death_text(crash, died_in(phase));
+      f.died_in = died_in(phase);
+      KindTally& t = crashed_[kind];
+      t.cases += 1;
+      t.by_class[static_cast<std::size_t>(f.evaluation.verdict.cls)] += 1;
+    }
+    result_.findings.push_back(std::move(f));
+  }
+
+  // A worker whose pipe ended: reaped, and its end judged. True when it was replaced (or its
+  // slot goes on), false when the slot is done.
+  bool reap(std::size_t i) {
+    Worker& w = workers_[i];
+    ::close(w.fd);
+    w.fd = -1;
+    const ChildEnd end = wait_child(w.pid);
+    Slot& slot = slots_[i];
+    const bool retired = end.status == kRetired && slot.phase == idle;
+    const bool in_a_case = slot.phase != idle && slot.phase != starting;
+    // Ended by the SIGTERM or SIGKILL that stopped the run: its last case is not a finding.
+    const bool stopped = w.stopped || (stop_ns_ != 0 && !slot.hung && end.signal == SIGTERM);
+    // Killed from outside (a SIGKILL the supervisor did not send, a signal another process
+    // sent): an interruption, not the case's fault. The case is asked again, once: a second
+    // such death in it is its finding (an out-of-memory kill, say).
+    const bool from_outside = !stopped && !retired && end.signal != 0 && !slot.hung &&
+                              (end.signal == SIGKILL || slot.outside_signal == end.signal);
+    const bool asked_before = slot.again_kind == slot.kind && slot.again_index == slot.case_index;
+    const bool interrupted = from_outside && (!in_a_case || !asked_before);
+    if (interrupted && in_a_case && !stopping()) {  // a run that stops asks nothing again
+      slot.again_kind = slot.kind.load();
+      slot.again_index = slot.case_index.load();
+      slot.ask_again = true;
+      slot.phase = idle;
+      ++result_.asked_again;
+    }
+    // An exit in the middle of a case, whatever its status (0 too), is a death in that case.
+    const bool died = (!end.succeeded() || in_a_case) && !retired && !stopped && !interrupted;
+    // A worker that ended early without dying (retired, interrupted) is replaced.
+    if (!died && !stopped && !stopping()) return spawn(static_cast<int>(i));
+    if (died && !in_a_case) {
+      const bool was_starting = slot.phase == starting;
+      result_.problems.push_back("worker " + std::to_string(i) + " " + end.what() +
+                                 (was_starting ? " while starting"
+                                               : " between cases, after " + std::string(name(static_cast<QueryKind>(slot.kind.load()))) +
+                                                     " case " + std::to_string(slot.case_index.load())) +
+                                 " (the harness's own failure: no party was asking)");
+      slot.phase = idle;
+      return ++harness_deaths_[i] < kHarnessDeathsPerSlot && !stopping() && spawn(static_cast<int>(i));
+    }
+    if (died) {
+      std::string what = end.what();
+      if (from_outside) what += ", sent by another process, in the case asked again after the same";
+      if (slot.hung) what = std::string(kTimedOut) + ": hung for more than " + format_seconds(options_.case_timeout_seconds);
+      record_finding(static_cast<QueryKind>(slot.kind.load()), slot.case_index, what, slot.phase, std::nullopt);
+      slot.phase = idle;
+      slot.hung = false;
+      return !stopping() && spawn(static_cast<int>(i));  // its counters skip the case it died on
+    }
+    return false;
+  }
+
+  // Hangs: a case that has run too long is killed; the worker is then reaped. A subject's call
+  // has a time limit of its own (subject_process.h): its hang is its answer's.
+  void kill_hung_cases() {
+    for (std::size_t i = 0; i < workers_.size(); ++i) {
+      Slot& slot = slots_[i];
+      const int phase = slot.phase;
+      if (phase == in_library && subject_under_test() != nullptr) continue;
+      if (options_.case_timeout_seconds > 0 && workers_[i].fd >= 0 && !workers_[i].stopped && phase != idle &&
+          phase != starting && !slot.hung &&
+          now_ns() - slot.started_ns > static_cast<std::int64_t>(options_.case_timeout_seconds * 1e9)) {
+        slot.hung = true;
+        kill(workers_[i].pid, SIGKILL);
+      }
+    }
+  }
+
+  void report_progress() {
+    const std::int64_t now = now_ns();
+    if (!options_.progress || now - last_progress_ns_ < 1'000'000'000) return;
+    last_progress_ns_ = now;
+    std::uint64_t cases = 0, bugs = 0;
+    for (const auto& [kind, t] : tallies()) cases += t.cases, bugs += t.count(CaseClass::impl_bug);
+    std::ostringstream line;
+    line << "[" << static_cast<int>(static_cast<double>(now - start_ns_) * 1e-9) << "/"
+         << static_cast<int>(options_.seconds) << " s] " << cases << " cases, " << bugs << " impl_bug, "
+         << result_.findings.size() << " findings";
+    options_.progress(line.str());
+  }
+
+  // The tallies: the workers' shared counters plus the cases they died on.
+  std::map<QueryKind, KindTally> tallies() const {
+    std::map<QueryKind, KindTally> all = crashed_;
+    for (QueryKind kind : options_.kinds) {
+      const auto k = static_cast<std::size_t>(kind);
+      KindTally& t = all[kind];
+      for (int w = 0; w < options_.workers; ++w) {
+        for (std::size_t c = 0; c < kClasses; ++c) {
+          const std::uint64_t n = slots_[w].counts[k][c];
+          t.by_class[c] += n;
+          t.cases += n;
+        }
+        t.busy_seconds += static_cast<double>(slots_[w].busy_ns[k].load()) * 1e-9;
+      }
+    }
+    return all;
+  }
+
+  const CampaignOptions& options_;
+  const Oracles& oracles_;
+  Slot* slots_;
+  std::unique_ptr<ExactReference> exact_;  // to judge what the workers send
+  std::unique_ptr<SecondOpinion> second_;
+  CampaignResult result_;
+  std::vector<Worker> workers_;
+  std::map<QueryKind, KindTally> crashed_;  // cases on which a worker died
+  std::vector<int> harness_deaths_;          // per slot: deaths outside every party
+  std::uint64_t findings_received_ = 0;
+  const std::int64_t start_ns_, deadline_ns_;
+  std::int64_t stop_ns_ = 0;  // when the workers were told to stop
+  std::int64_t last_progress_ns_ = 0;
+};
+
 }  // namespace
 
 Input campaign_case(std::uint64_t seed, QueryKind kind, std::uint64_t case_index, int out_of_contract_percent,
@@ -226,245 +504,12 @@ double cases_per_second(const KindTally& tally, int workers) {
 }
 
 CampaignResult run_campaign(const CampaignOptions& options, const Oracles& oracles) {
-  CampaignResult result;
-  result.seed = options.seed;
-  result.workers = options.workers;
-
-  auto* slots = static_cast<Slot*>(
-      mmap(nullptr, sizeof(Slot) * static_cast<std::size_t>(options.workers), PROT_READ | PROT_WRITE,
-           MAP_SHARED | MAP_ANONYMOUS, -1, 0));
+  auto* slots = static_cast<Slot*>(mmap(nullptr, sizeof(Slot) * static_cast<std::size_t>(options.workers),
+                                        PROT_READ | PROT_WRITE, MAP_SHARED | MAP_ANONYMOUS, -1, 0));
   if (slots == MAP_FAILED) throw std::runtime_error("campaign: cannot map shared memory");
   for (int w = 0; w < options.workers; ++w) new (&slots[w]) Slot();
-
   count_interrupts();
-
-  const std::int64_t start_ns = now_ns();
-  const std::int64_t deadline_ns = start_ns + static_cast<std::int64_t>(options.seconds * 1e9);
-  std::vector<Worker> workers(static_cast<std::size_t>(options.workers));
-  const auto stopping = [&] { return interrupts() > 0 || now_ns() >= deadline_ns; };
-  // Starts worker w; false (and a problem recorded) when the pipe or the fork fails.
-  const auto spawn = [&](int w) {
-    slots[w].phase = starting;
-    try {
-      const Child child = start_child([&](int out) -> int { run_worker(w, options, oracles, slots[w], out, deadline_ns); });
-      workers[static_cast<std::size_t>(w)] = {child.pid, child.out, "", false};
-      return true;
-    } catch (const std::system_error& e) {
-      workers[static_cast<std::size_t>(w)] = {};
-      result.problems.push_back("worker " + std::to_string(w) + " could not be started (" + e.what() +
-                                "); the campaign went on without it");
-      return false;
-    }
-  };
-  std::size_t alive = 0;
-  for (int w = 0; w < options.workers; ++w) alive += spawn(w) ? 1 : 0;
-  result.workers = static_cast<int>(alive);  // the rates are those of the workers that ran
-
-  const auto exact = oracles.exact();
-  const auto second = oracles.second();
-  std::map<QueryKind, KindTally> crashed;  // cases on which a worker died
-  std::vector<int> harness_deaths(workers.size(), 0);  // per slot: deaths outside every party
-  const auto record_finding = [&](QueryKind kind, std::uint64_t index, const std::string& crash, int phase,
-                                  const std::optional<Json>& answers) {
-    Finding f;
-    f.kind = kind;
-    f.case_index = index;
-    f.input = campaign_case(options.seed, kind, index, options.out_of_contract_percent, options.mesh_folder);
-    f.crash = crash;
-    bool answered = false;
-    if (crash.empty() && answers) {  // it returned in the worker, which sent the answers it got
-      try {
-        answers_from_json(*answers, *second, kind, f.evaluation);
-        f.evaluation.exact = exact->judge(f.input);
-        judge_into(f.evaluation, f.input);
-        answered = true;
-      } catch (const std::exception&) {
-        f.evaluation = {};
-      }
-    }
-    if (crash.empty() && !answered) {  // (answers that did not parse) the same again, first in a child
-      if (auto e = evaluate_in_child(f.input, *exact, *second)) {
-        f.evaluation = std::move(*e);
-      } else {
-        const std::string how = "died when asked again in a child process";
-        f.evaluation = evaluation_after_death(f.input, *exact, *second, DiedIn::second_opinions, how);
-        f.crash = death_text(how, DiedIn::second_opinions);
-        f.died_in = DiedIn::second_opinions;
-      }
-    }
-    if (!crash.empty()) {  // rebuilt without the party that died, as every command rebuilds it
-      f.evaluation = evaluation_after_death(f.input, *exact, *second, died_in(phase), crash);
-      f.crash = death_text(crash, died_in(phase));
-      f.died_in = died_in(phase);
-    }
-    if (!crash.empty()) {
-      KindTally& t = crashed[kind];
-      t.cases += 1;
-      t.by_class[static_cast<std::size_t>(f.evaluation.verdict.cls)] += 1;
-    }
-    result.findings.push_back(std::move(f));
-  };
-  std::uint64_t findings_received = 0;
-  // A worker's line: "F <kind> <case index> <answers>" (a finding) or "E <kind> <case index>
-  // <first line>" (a case that wrote to standard error).
-  const auto handle_line = [&](const std::string& line) {
-    std::istringstream in(line);
-    char tag = 0;
-    int kind_number = 0;
-    std::uint64_t index = 0;
-    in >> tag >> kind_number >> index;
-    if (!in) return;
-    const auto kind = static_cast<QueryKind>(kind_number);
-    std::string rest;
-    std::getline(in, rest);
-    if (tag == 'E') {
-      if (result.noisy_cases++ == 0) result.first_noise = std::string(name(kind)) + " case " + std::to_string(index) + ":" + rest;
-      return;
-    }
-    if (tag != 'F') return;
-    std::optional<Json> answers;
-    try {
-      answers = Json::parse(rest);
-    } catch (const std::exception&) {
-    }
-    ++findings_received;
-    record_finding(kind, index, "", idle, answers);
-  };
-  // The tallies: the workers' shared counters plus the cases they died on.
-  const auto tallies = [&] {
-    std::map<QueryKind, KindTally> all = crashed;
-    for (QueryKind kind : options.kinds) {
-      const auto k = static_cast<std::size_t>(kind);
-      KindTally& t = all[kind];
-      for (int w = 0; w < options.workers; ++w) {
-        for (std::size_t c = 0; c < kClasses; ++c) {
-          const std::uint64_t n = slots[w].counts[k][c];
-          t.by_class[c] += n;
-          t.cases += n;
-        }
-        t.busy_seconds += static_cast<double>(slots[w].busy_ns[k].load()) * 1e-9;
-      }
-    }
-    return all;
-  };
-
-  std::int64_t last_progress = 0;
-  std::int64_t stop_ns = 0;  // when the workers were told to stop
-  while (alive > 0) {
-    if (stop_ns == 0 && stopping()) {
-      stop_ns = now_ns();
-      for (const Worker& w : workers) {
-        if (w.fd >= 0) kill(w.pid, SIGTERM);
-      }
-    }
-    if (stop_ns != 0 && now_ns() - stop_ns > kStopGraceNs) {
-      for (Worker& w : workers) {
-        if (w.fd >= 0 && !w.stopped) {
-          w.stopped = true;
-          kill(w.pid, SIGKILL);
-        }
-      }
-    }
-    std::vector<pollfd> fds;
-    for (const Worker& w : workers) fds.push_back({w.fd, POLLIN, 0});
-    poll(fds.data(), fds.size(), 100);
-    for (std::size_t i = 0; i < workers.size(); ++i) {
-      Worker& w = workers[i];
-      if (w.fd < 0 || !(fds[i].revents & (POLLIN | POLLHUP))) continue;
-      char chunk[4096];
-      const ssize_t n = ::read(w.fd, chunk, sizeof chunk);
-      if (n > 0) {
-        w.buffer.append(chunk, static_cast<std::size_t>(n));
-        std::size_t eol;
-        while ((eol = w.buffer.find('\n')) != std::string::npos) {
-          handle_line(w.buffer.substr(0, eol));
-          w.buffer.erase(0, eol + 1);
-        }
-        continue;
-      }
-      // End of the pipe: the worker finished or died.
-      ::close(w.fd);
-      w.fd = -1;
-      const ChildEnd end = wait_child(w.pid);
-      Slot& slot = slots[i];
-      const bool retired = end.status == kRetired && slot.phase == idle;
-      const bool in_a_case = slot.phase != idle && slot.phase != starting;
-      // Ended by the SIGTERM or SIGKILL that stopped the run: its last case is not a finding.
-      const bool stopped = w.stopped || (stop_ns != 0 && !slot.hung && end.signal == SIGTERM);
-      // Killed from outside (a SIGKILL the supervisor did not send, a signal another process
-      // sent): an interruption, not the case's fault. The case is asked again, once: a second
-      // such death in it is its finding (an out-of-memory kill, say).
-      const bool from_outside = !stopped && !retired && end.signal != 0 && !slot.hung &&
-                                (end.signal == SIGKILL || slot.outside_signal == end.signal);
-      const bool asked_before = slot.again_kind == slot.kind && slot.again_index == slot.case_index;
-      const bool interrupted = from_outside && (!in_a_case || !asked_before);
-      if (interrupted && in_a_case && !stopping()) {  // a run that stops asks nothing again
-        slot.again_kind = slot.kind.load();
-        slot.again_index = slot.case_index.load();
-        slot.ask_again = true;
-        slot.phase = idle;
-        ++result.asked_again;
-      }
-      // An exit in the middle of a case, whatever its status (0 too), is a death in that case.
-      const bool died = (!end.succeeded() || in_a_case) && !retired && !stopped && !interrupted;
-      // A worker that ended early without dying (retired, interrupted) is replaced.
-      if (!died && !stopped && !stopping()) {
-        if (spawn(static_cast<int>(i))) continue;
-      }
-      if (died && !in_a_case) {
-        const bool was_starting = slot.phase == starting;
-        result.problems.push_back("worker " + std::to_string(i) + " " + end.what() +
-                                  (was_starting ? " while starting"
-                                                : " between cases, after " + std::string(name(static_cast<QueryKind>(slot.kind.load()))) +
-                                                      " case " + std::to_string(slot.case_index.load())) +
-                                  " (the harness's own failure: no party was asking)");
-        slot.phase = idle;
-        if (++harness_deaths[i] < kHarnessDeathsPerSlot && !stopping() && spawn(static_cast<int>(i))) continue;
-      } else if (died) {
-        std::string what = end.what();
-        if (from_outside) what += ", sent by another process, in the case asked again after the same";
-        if (slot.hung) what = std::string(kTimedOut) + ": hung for more than " + format_seconds(options.case_timeout_seconds);
-        record_finding(static_cast<QueryKind>(slot.kind.load()), slot.case_index, what, slot.phase, std::nullopt);
-        slot.phase = idle;
-        slot.hung = false;
-        if (!stopping() && spawn(static_cast<int>(i))) continue;  // its counters skip the case it died on
-      }
-      --alive;
-    }
-    // Hangs: a case that has run too long is killed; the worker is then reaped above. A
-    // subject's call has a time limit of its own (subject_process.h): its hang is its answer's.
-    for (std::size_t i = 0; i < workers.size(); ++i) {
-      Slot& slot = slots[i];
-      const int phase = slot.phase;
-      if (phase == in_library && subject_under_test() != nullptr) continue;
-      if (options.case_timeout_seconds > 0 && workers[i].fd >= 0 && !workers[i].stopped && phase != idle && phase != starting &&
-          !slot.hung && now_ns() - slot.started_ns > static_cast<std::int64_t>(options.case_timeout_seconds * 1e9)) {
-        slot.hung = true;
-        kill(workers[i].pid, SIGKILL);
-      }
-    }
-    const std::int64_t now = now_ns();
-    if (options.progress && now - last_progress >= 1'000'000'000) {
-      last_progress = now;
-      std::uint64_t cases = 0, bugs = 0;
-      for (const auto& [kind, t] : tallies()) cases += t.cases, bugs += t.count(CaseClass::impl_bug);
-      std::ostringstream line;
-      line << "[" << static_cast<int>(static_cast<double>(now - start_ns) * 1e-9) << "/"
-           << static_cast<int>(options.seconds) << " s] " << cases << " cases, " << bugs << " impl_bug, "
-           << result.findings.size() << " findings";
-      options.progress(line.str());
-    }
-  }
-  result.seconds = static_cast<double>(now_ns() - start_ns) * 1e-9;
-  result.tallies = tallies();
-  result.interrupted = interrupts() > 0;
-  // Never lose a finding silently: one a worker sent that did not arrive is a problem of the run.
-  std::uint64_t findings_sent = 0;
-  for (int w = 0; w < options.workers; ++w) findings_sent += slots[w].findings_sent;
-  if (findings_sent > findings_received) {
-    result.problems.push_back(std::to_string(findings_sent - findings_received) +
-                              " findings of the workers never reached the campaign (a worker's report was cut off)");
-  }
+  CampaignResult result = Supervisor(options, oracles, slots).run();
   munmap(slots, sizeof(Slot) * static_cast<std::size_t>(options.workers));
   return result;
 }

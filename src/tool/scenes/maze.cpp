@@ -51,16 +51,13 @@ const char* to_string(MazeStep::Kind kind) {
   return "?";
 }
 
-Maze make_maze(const MazeOptions& o) {
-  if (o.width < 1 || o.width > 200 || o.height < 1 || o.height > 200) throw std::invalid_argument("maze sizes must lie in [1, 200]");
-  if (!(o.radius >= 0 && o.radius < 0.5)) throw std::invalid_argument("the disc's radius must lie in [0, 0.5) cells");
-  if (o.substeps < 1 || o.substeps > 64) throw std::invalid_argument("substeps must lie in [1, 64]");
-  if (!std::isfinite(o.origin.x) || !std::isfinite(o.origin.y)) throw std::invalid_argument("the origin must be finite");
-  const int w = o.width, h = o.height;
-  Grid grid(w, h);
-  SeededRandom random(o.seed);
+namespace {
 
-  // Carve: a depth-first walk from cell 0 over unvisited neighbours in random order.
+// Carves a w x h grid: a depth-first walk from cell 0 over unvisited neighbours in random
+// order; then opens the entrance (left of the first cell) and the exit (right of the last).
+Grid carve(int w, int h, std::uint64_t seed) {
+  Grid grid(w, h);
+  SeededRandom random(seed);
   std::vector<char> seen(static_cast<std::size_t>(w * h), 0);
   std::vector<int> stack{0};
   seen[0] = 1;
@@ -81,24 +78,14 @@ Maze make_maze(const MazeOptions& o) {
     seen[static_cast<std::size_t>(next)] = 1;
     stack.push_back(next);
   }
-  grid.v(0, 0) = 0;          // the entrance, on the left of the first cell
-  grid.v(w, h - 1) = 0;      // the exit, on the right of the last
+  grid.v(0, 0) = 0;
+  grid.v(w, h - 1) = 0;
+  return grid;
+}
 
-  Maze maze;
-  maze.options = o;
-  const auto at = [&](double x, double y) { return Vec2{o.origin.x + x, o.origin.y + y}; };
-  for (int x = 0; x <= w; ++x) {
-    for (int y = 0; y < h; ++y) {
-      if (grid.v(x, y)) maze.walls.push_back({at(x, y), at(x, y + 1)});
-    }
-  }
-  for (int y = 0; y <= h; ++y) {
-    for (int x = 0; x < w; ++x) {
-      if (grid.h(x, y)) maze.walls.push_back({at(x, y), at(x + 1, y)});
-    }
-  }
-
-  // The path: breadth-first from the entrance cell to the exit cell through open sides.
+// The cells from the entrance cell to the exit cell: breadth-first through open sides.
+std::vector<int> path_through(Grid& grid) {
+  const int w = grid.width, h = grid.height;
   std::vector<int> parent(static_cast<std::size_t>(w * h), -1);
   std::vector<int> queue{0};
   parent[0] = 0;
@@ -113,63 +100,94 @@ Maze make_maze(const MazeOptions& o) {
       queue.push_back(next);
     }
   }
+  std::vector<int> path;
   for (int cell = w * h - 1;; cell = parent[static_cast<std::size_t>(cell)]) {
-    maze.path.push_back(cell);
+    path.push_back(cell);
     if (cell == 0) break;
   }
-  std::reverse(maze.path.begin(), maze.path.end());
+  std::reverse(path.begin(), path.end());
+  return path;
+}
 
-  // The walk and the probes. With the default radius (5/16) and a power-of-two substep count,
-  // every position is exact at the origin's magnitude: a touch is a touch in exact arithmetic.
+// The probes of the path's i-th cell: the walk to the next cell in substeps; each standing side
+// touched at its middle, and one ulp either way; each corner touched at distance exactly r from
+// inside the cell, along (3, 4) / 5 and (4, 3) / 5. With the default radius (5/16) and a
+// power-of-two substep count, every position is exact at the origin's magnitude: a touch is a
+// touch in exact arithmetic.
+void add_steps_of_cell(Maze& maze, Grid& grid, std::size_t i) {
+  const MazeOptions& o = maze.options;
+  const int w = grid.width;
+  const auto at = [&](double x, double y) { return Vec2{o.origin.x + x, o.origin.y + y}; };
   const double r = o.radius;
-  for (std::size_t i = 0; i < maze.path.size(); ++i) {
-    const int cell = maze.path[i], x = cell % w, y = cell / w;
-    const Vec2 centre = at(x + 0.5, y + 0.5);
-    const int index = static_cast<int>(i);
-    if (i + 1 < maze.path.size()) {
-      const int next = maze.path[i + 1];
-      const double dx = next % w - x, dy = next / w - y;
-      for (int s = 0; s < o.substeps; ++s) {
-        const double f = static_cast<double>(s) / o.substeps;
-        maze.steps.push_back({{{centre.x + f * dx, centre.y + f * dy}, r}, MazeStep::Kind::walk, index});
-      }
-    } else {
-      maze.steps.push_back({{centre, r}, MazeStep::Kind::walk, index});
+  const int cell = maze.path[i], x = cell % w, y = cell / w;
+  const Vec2 centre = at(x + 0.5, y + 0.5);
+  const int index = static_cast<int>(i);
+  if (i + 1 < maze.path.size()) {
+    const int next = maze.path[i + 1];
+    const double dx = next % w - x, dy = next / w - y;
+    for (int s = 0; s < o.substeps; ++s) {
+      const double f = static_cast<double>(s) / o.substeps;
+      maze.steps.push_back({{{centre.x + f * dx, centre.y + f * dy}, r}, MazeStep::Kind::walk, index});
     }
-    // Touching each standing side of the cell at its middle, and one ulp either way.
-    const struct {
-      bool standing;
-      Vec2 touch;
-      int axis;     // the coordinate that moves toward the wall
-      double sign;  // toward the wall
-    } sides[4] = {
-        {grid.v(x + 1, y) != 0, at(x + 1 - r, y + 0.5), 0, 1},
-        {grid.v(x, y) != 0, at(x + r, y + 0.5), 0, -1},
-        {grid.h(x, y + 1) != 0, at(x + 0.5, y + 1 - r), 1, 1},
-        {grid.h(x, y) != 0, at(x + 0.5, y + r), 1, -1},
-    };
-    for (const auto& side : sides) {
-      if (!side.standing) continue;
-      maze.steps.push_back({{side.touch, r}, MazeStep::Kind::side_touch, index});
-      for (const double direction : {side.sign, -side.sign}) {
-        Vec2 moved = side.touch;
-        double& c = side.axis == 0 ? moved.x : moved.y;
-        c = std::nextafter(c, direction * INFINITY);
-        maze.steps.push_back({{moved, r}, direction == side.sign ? MazeStep::Kind::side_closer : MazeStep::Kind::side_farther, index});
-      }
+  } else {
+    maze.steps.push_back({{centre, r}, MazeStep::Kind::walk, index});
+  }
+  const struct {
+    bool standing;
+    Vec2 touch;
+    int axis;     // the coordinate that moves toward the wall
+    double sign;  // toward the wall
+  } sides[4] = {
+      {grid.v(x + 1, y) != 0, at(x + 1 - r, y + 0.5), 0, 1},
+      {grid.v(x, y) != 0, at(x + r, y + 0.5), 0, -1},
+      {grid.h(x, y + 1) != 0, at(x + 0.5, y + 1 - r), 1, 1},
+      {grid.h(x, y) != 0, at(x + 0.5, y + r), 1, -1},
+  };
+  for (const auto& side : sides) {
+    if (!side.standing) continue;
+    maze.steps.push_back({{side.touch, r}, MazeStep::Kind::side_touch, index});
+    for (const double direction : {side.sign, -side.sign}) {
+      Vec2 moved = side.touch;
+      double& c = side.axis == 0 ? moved.x : moved.y;
+      c = std::nextafter(c, direction * INFINITY);
+      maze.steps.push_back({{moved, r}, direction == side.sign ? MazeStep::Kind::side_closer : MazeStep::Kind::side_farther, index});
     }
-    // Touching each corner of the cell (where wall ends meet) at distance exactly r, from
-    // inside the cell, along (3, 4) / 5 and (4, 3) / 5.
-    for (const int cx : {0, 1}) {
-      for (const int cy : {0, 1}) {
-        const double sx = cx ? -1 : 1, sy = cy ? -1 : 1;
-        for (const auto& [p, q] : {std::pair{3.0, 4.0}, std::pair{4.0, 3.0}}) {
-          const Vec2 corner = at(x + cx, y + cy);
-          maze.steps.push_back({{{corner.x + sx * (p * r / 5), corner.y + sy * (q * r / 5)}, r}, MazeStep::Kind::corner, index});
-        }
+  }
+  for (const int cx : {0, 1}) {
+    for (const int cy : {0, 1}) {
+      const double sx = cx ? -1 : 1, sy = cy ? -1 : 1;
+      for (const auto& [p, q] : {std::pair{3.0, 4.0}, std::pair{4.0, 3.0}}) {
+        const Vec2 corner = at(x + cx, y + cy);
+        maze.steps.push_back({{{corner.x + sx * (p * r / 5), corner.y + sy * (q * r / 5)}, r}, MazeStep::Kind::corner, index});
       }
     }
   }
+}
+
+}  // namespace
+
+Maze make_maze(const MazeOptions& o) {
+  if (o.width < 1 || o.width > 200 || o.height < 1 || o.height > 200) throw std::invalid_argument("maze sizes must lie in [1, 200]");
+  if (!(o.radius >= 0 && o.radius < 0.5)) throw std::invalid_argument("the disc's radius must lie in [0, 0.5) cells");
+  if (o.substeps < 1 || o.substeps > 64) throw std::invalid_argument("substeps must lie in [1, 64]");
+  if (!std::isfinite(o.origin.x) || !std::isfinite(o.origin.y)) throw std::invalid_argument("the origin must be finite");
+  const int w = o.width, h = o.height;
+  Grid grid = carve(w, h, o.seed);
+  Maze maze;
+  maze.options = o;
+  const auto at = [&](double x, double y) { return Vec2{o.origin.x + x, o.origin.y + y}; };
+  for (int x = 0; x <= w; ++x) {
+    for (int y = 0; y < h; ++y) {
+      if (grid.v(x, y)) maze.walls.push_back({at(x, y), at(x, y + 1)});
+    }
+  }
+  for (int y = 0; y <= h; ++y) {
+    for (int x = 0; x < w; ++x) {
+      if (grid.h(x, y)) maze.walls.push_back({at(x, y), at(x + 1, y)});
+    }
+  }
+  maze.path = path_through(grid);
+  for (std::size_t i = 0; i < maze.path.size(); ++i) add_steps_of_cell(maze, grid, i);
   return maze;
 }
 
