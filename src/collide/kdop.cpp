@@ -2,7 +2,8 @@
 
 #include <utility>
 
-#include "collide/bound_records.h"
+#include "collide/kdop_bound.h"
+#include "collide/record_sink.h"
 #include "collide/simd_lanes.h"
 
 namespace cc {
@@ -172,7 +173,8 @@ Kdop<K> fit_kdop(std::span<const Vec3> points) {
 
 template <int K>
 Kdop<K> fit_kdop(std::span<const Vec3> points, bounds::Records& records) {
-  return fit<K>(points, records);
+  bounds::RecordsRef into{records};
+  return fit<K>(points, into);
 }
 
 #define CC_INSTANTIATE(K)                                  \

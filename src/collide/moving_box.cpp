@@ -4,7 +4,9 @@
 #include <limits>
 #include <utility>
 
-#include "collide/bound_records.h"
+#include "collide/obb_bound.h"
+#include "collide/record_sink.h"
+#include "collide/sweep_bound.h"
 
 namespace cc {
 namespace {
@@ -207,7 +209,8 @@ SweepHit sweep_obb_obb(const MovingObb& a, const MovingObb& b) {
 }
 
 SweepHit sweep_obb_obb(const MovingObb& a, const MovingObb& b, bounds::Records& records) {
-  return sweep_obb(a, b, records);
+  bounds::RecordsRef into{records};
+  return sweep_obb(a, b, into);
 }
 
 SweepHit sweep_aabb_aabb(const Aabb& a, Vec3 va, const Aabb& b, Vec3 vb) {
@@ -216,7 +219,8 @@ SweepHit sweep_aabb_aabb(const Aabb& a, Vec3 va, const Aabb& b, Vec3 vb) {
 }
 
 SweepHit sweep_aabb_aabb(const Aabb& a, Vec3 va, const Aabb& b, Vec3 vb, bounds::Records& records) {
-  return sweep_aabb(a, va, b, vb, records);
+  bounds::RecordsRef into{records};
+  return sweep_aabb(a, va, b, vb, into);
 }
 
 }  // namespace cc

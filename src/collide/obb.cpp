@@ -2,7 +2,8 @@
 
 #include <type_traits>
 
-#include "collide/bound_records.h"
+#include "collide/obb_bound.h"
+#include "collide/record_sink.h"
 #include "collide/simd_lanes.h"
 
 namespace cc {
@@ -126,7 +127,8 @@ bool test_obb_obb(const Obb& a, const Obb& b) {
 }
 
 bool test_obb_obb(const Obb& a, const Obb& b, bounds::Records& records) {
-  return test<simd::Triple<simd::Scalar>>(a, b, records);
+  bounds::RecordsRef into{records};
+  return test<simd::Triple<simd::Scalar>>(a, b, into);
 }
 
 }  // namespace cc

@@ -4,7 +4,8 @@
 #include <cfloat>
 #include <cmath>
 
-#include "collide/bound_records.h"
+#include "collide/cube_bound.h"
+#include "collide/record_sink.h"
 #include "collide/sphere_fit.h"
 
 namespace cc {
@@ -61,7 +62,7 @@ Aabb fitted(const Mesh& mesh, const RigidTransform& pose, Records& records) {
     for (int k = 0; k < 3; ++k) box.lo[k] = std::min(box.lo[k], p[k]), box.hi[k] = std::max(box.hi[k], p[k]);
   }
   const bounds::TransformBound transform{reach, max_abs(pose.translation)};
-  if constexpr (std::is_same_v<Records, bounds::Records>) {  // each placement, as apply() computes it
+  if constexpr (!std::is_same_v<Records, bounds::NoRecords>) {  // each placement, as apply() computes it
     for (const Vec3& v : mesh.vertices) {
       const Vec3 rotated = pose.rotation * v;
       records.add(bounds::Placement{pose, v, rotated, rotated + pose.translation, transform});
@@ -82,7 +83,10 @@ double rotation_radius(const Mesh& mesh) {
   return radius(mesh, none);
 }
 
-double rotation_radius(const Mesh& mesh, bounds::Records& records) { return radius(mesh, records); }
+double rotation_radius(const Mesh& mesh, bounds::Records& records) {
+  bounds::RecordsRef into{records};
+  return radius(mesh, into);
+}
 
 Aabb bounding_cube(double radius, const RigidTransform& pose) {
   bounds::NoRecords none;
@@ -90,7 +94,8 @@ Aabb bounding_cube(double radius, const RigidTransform& pose) {
 }
 
 Aabb bounding_cube(double radius, const RigidTransform& pose, bounds::Records& records) {
-  return cube(radius, pose, records);
+  bounds::RecordsRef into{records};
+  return cube(radius, pose, into);
 }
 
 Sphere mesh_ball(const Mesh& mesh) { return mesh.vertices.empty() ? Sphere{} : fit_sphere(mesh.vertices); }
@@ -122,7 +127,8 @@ Aabb fitted_box(const Mesh& mesh, const RigidTransform& pose) {
 }
 
 Aabb fitted_box(const Mesh& mesh, const RigidTransform& pose, bounds::Records& records) {
-  return fitted(mesh, pose, records);
+  bounds::RecordsRef into{records};
+  return fitted(mesh, pose, into);
 }
 
 }  // namespace cc

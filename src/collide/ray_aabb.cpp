@@ -4,7 +4,8 @@
 #include <cmath>
 #include <utility>
 
-#include "collide/bound_records.h"
+#include "collide/ray_slab_bound.h"
+#include "collide/record_sink.h"
 
 namespace cc {
 namespace {
@@ -83,7 +84,8 @@ RayHit intersect_prepared(const PreparedRay& r, const Aabb& box) {
 }  // namespace detail
 
 RayHit intersect_ray_aabb(const Ray& ray, const Aabb& box, bounds::Records& records) {
-  return intersect(PreparedRay(ray), box, records);
+  bounds::RecordsRef into{records};
+  return intersect(PreparedRay(ray), box, into);
 }
 
 namespace {

@@ -5,8 +5,8 @@
 #include <cmath>
 
 #include "collide/aabb.h"
-#include "collide/error_bounds.h"
 #include "collide/ray.h"
+#include "collide/ray_slab_bound.h"
 
 namespace cc {
 

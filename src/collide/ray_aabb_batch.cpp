@@ -8,7 +8,7 @@
 #include <string>
 #include <utility>
 
-#include "collide/error_bounds.h"
+#include "collide/ray_slab_bound.h"
 #include "collide/simd_lanes.h"
 
 namespace cc {

@@ -5,7 +5,10 @@
 #include <utility>
 #include <vector>
 
-#include "collide/bound_records.h"
+#include "collide/ray_aabb.h"
+#include "collide/ray_mesh_bound.h"
+#include "collide/ray_triangle_bound.h"
+#include "collide/record_sink.h"
 
 namespace cc {
 namespace {
@@ -165,8 +168,8 @@ class RayTraversal {
   }
 
   RayTriangleHit intersect(const Triangle& t) {
-    if constexpr (std::is_same_v<Records, bounds::Records>) {
-      return intersect_ray_triangle(ray_, t, records_);
+    if constexpr (std::is_same_v<Records, bounds::RecordsRef>) {
+      return intersect_ray_triangle(ray_, t, records_.records);
     } else {
       return intersect_ray_triangle(ray_, t);
     }
@@ -204,7 +207,8 @@ RayMeshHit ray_mesh_closest(const Bvh<BV>& bvh, const Ray& ray) {
 
 template <class BV>
 RayMeshHit ray_mesh_closest(const Bvh<BV>& bvh, const Ray& ray, bounds::Records& records) {
-  return RayTraversal<BV, bounds::Records>(bvh, ray, records).run(false);
+  bounds::RecordsRef into{records};
+  return RayTraversal<BV, bounds::RecordsRef>(bvh, ray, into).run(false);
 }
 
 template <class BV>

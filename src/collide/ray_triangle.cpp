@@ -3,7 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "collide/bound_records.h"
+#include "collide/ray_triangle_bound.h"
+#include "collide/record_sink.h"
 
 namespace cc {
 namespace {
@@ -257,7 +258,8 @@ RayTriangleHit intersect_ray_triangle(const Ray& ray, const Triangle& triangle) 
 }
 
 RayTriangleHit intersect_ray_triangle(const Ray& ray, const Triangle& triangle, bounds::Records& records) {
-  return intersect(ray, triangle, records);
+  bounds::RecordsRef into{records};
+  return intersect(ray, triangle, into);
 }
 
 }  // namespace cc

@@ -1,6 +1,6 @@
 #include "collide/rigid_transform.h"
 
-#include "collide/error_bounds.h"
+#include "collide/transform_bound.h"
 
 namespace cc {
 

@@ -83,9 +83,9 @@ bool separated_by_degenerate_axes(const A& a, const B& b, std::span<const Vec3> 
   template bool separates(const Vec3&, const A&, const TriangleSet&, double, R&); \
   template bool separated_by_degenerate_axes(const A&, const TriangleSet&, std::span<const Vec3>, double, R&);
 CC_INSTANTIATE(TriangleSet, bounds::NoRecords)
-CC_INSTANTIATE(TriangleSet, bounds::Records)
+CC_INSTANTIATE(TriangleSet, bounds::RecordsRef)
 CC_INSTANTIATE(BoxSet, bounds::NoRecords)
-CC_INSTANTIATE(BoxSet, bounds::Records)
+CC_INSTANTIATE(BoxSet, bounds::RecordsRef)
 #undef CC_INSTANTIATE
 
 }  // namespace cc::sat

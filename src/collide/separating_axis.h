@@ -9,7 +9,8 @@
 #include <span>
 
 #include "collide/aabb.h"
-#include "collide/bound_records.h"
+#include "collide/record_sink.h"
+#include "collide/sat_bound.h"
 #include "collide/triangle.h"
 
 namespace cc::sat {
@@ -46,7 +47,7 @@ struct BoxSet {
 /// True when the projections of a and b onto `axis` are apart by more than their rounding
 /// error (bounds::SatBound), with both sets' coordinates also allowed to be off by
 /// `perturbation` (a bound on errors made before, such as a change of frame). Records the gap
-/// (bounds::SatAxis) into `records` (bounds::NoRecords or bounds::Records).
+/// (bounds::SatAxis) into `records` (bounds::NoRecords or bounds::RecordsRef).
 template <class A, class B, class Records>
 bool separates(const Vec3& axis, const A& a, const B& b, double perturbation, Records& records);
 

@@ -1,6 +1,7 @@
 #include "collide/sphere.h"
 
-#include "collide/bound_records.h"
+#include "collide/record_sink.h"
+#include "collide/sphere_bound.h"
 
 namespace cc {
 namespace {
@@ -62,6 +63,9 @@ bool test_sphere_sphere(const Sphere& a, const Sphere& b) {
   return test(a, b, none);
 }
 
-bool test_sphere_sphere(const Sphere& a, const Sphere& b, bounds::Records& records) { return test(a, b, records); }
+bool test_sphere_sphere(const Sphere& a, const Sphere& b, bounds::Records& records) {
+  bounds::RecordsRef into{records};
+  return test(a, b, into);
+}
 
 }  // namespace cc

@@ -1,5 +1,6 @@
 #include "collide/triangle_box.h"
 
+#include "collide/frame_change_bound.h"
 #include "collide/separating_axis.h"
 
 namespace cc {
@@ -76,7 +77,8 @@ bool test_triangle_aabb(const Triangle& t, const Aabb& box) {
 }
 
 bool test_triangle_aabb(const Triangle& t, const Aabb& box, bounds::Records& records) {
-  return test_aabb(t, box, records);
+  bounds::RecordsRef into{records};
+  return test_aabb(t, box, into);
 }
 
 bool test_triangle_obb(const Triangle& t, const Obb& box) {
@@ -85,7 +87,8 @@ bool test_triangle_obb(const Triangle& t, const Obb& box) {
 }
 
 bool test_triangle_obb(const Triangle& t, const Obb& box, bounds::Records& records) {
-  return test_obb(t, box, records);
+  bounds::RecordsRef into{records};
+  return test_obb(t, box, into);
 }
 
 }  // namespace cc

@@ -2,6 +2,7 @@
 
 #include <type_traits>
 
+#include "collide/independence_bound.h"
 #include "collide/separating_axis.h"
 #include "collide/simd_lanes.h"
 
@@ -191,7 +192,8 @@ bool test_triangle_triangle(const Triangle& a, const Triangle& b) {
 }
 
 bool test_triangle_triangle(const Triangle& a, const Triangle& b, bounds::Records& records) {
-  return test<simd::Triple<simd::Scalar>>(a, b, records);
+  bounds::RecordsRef into{records};
+  return test<simd::Triple<simd::Scalar>>(a, b, into);
 }
 
 }  // namespace cc

@@ -5,6 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "collide/bound_records.h"
 #include "harness/judging/bound_coverage.h"
 #include "harness/generation/generate.h"
 #include "harness/formats/mesh_files.h"

@@ -5,6 +5,9 @@
 #include <cmath>
 
 #include "collide/procedural_mesh.h"
+#include "collide/ray_aabb.h"
+#include "collide/triangle_box.h"
+#include "collide/triangle_triangle.h"
 
 namespace cc {
 namespace {

@@ -1,4 +1,4 @@
-#include "collide/error_bounds.h"
+#include "collide/bound_records.h"
 
 #include <gtest/gtest.h>
 

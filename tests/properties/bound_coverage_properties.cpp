@@ -7,6 +7,7 @@
 
 #include <algorithm>
 
+#include "collide/bound_records.h"
 #include "harness/judging/bound_coverage.h"
 #include "harness/formats/input_json.h"
 #include "oracle/exact/exact_reference.h"

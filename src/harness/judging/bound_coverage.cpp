@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <set>
 
+#include "collide/bound_records.h"
 #include "harness/formats/input_json.h"
 #include "harness/model/mesh_collide.h"
 

@@ -11,7 +11,7 @@
 #include <string_view>
 #include <vector>
 
-#include "collide/bound_records.h"
+#include "collide/record_sink.h"
 #include "harness/model/input.h"
 #include "harness/model/oracle.h"
 

@@ -5,8 +5,9 @@
 
 #include <cmath>
 
-#include "collide/bound_records.h"
 #include "collide/kdop.h"
+#include "collide/kdop_bound.h"
+#include "collide/record_sink.h"
 #include "harness/generation/regimes.h"
 #include "harness/generation/shapes.h"
 #include "harness/judging/configurations.h"
@@ -186,7 +187,7 @@ void Query<KdopKdopInput>::recognise(const KdopKdopInput& in, Configurations& fo
 std::span<const BoundTerm> Query<KdopKdopInput>::bound_terms() { return kBoundTerms; }
 
 void Query<KdopKdopInput>::probe(const KdopKdopInput& in, std::vector<bounds::Records>& records) {
-  bounds::Records& r = records.emplace_back();
+  bounds::Records& r = bounds::next_call(records);
   switch (in.k) {
     case 6: return fit_both<6>(in, r);
     case 14: return fit_both<14>(in, r);

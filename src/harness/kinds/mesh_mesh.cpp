@@ -4,9 +4,10 @@
 
 #include <algorithm>
 
-#include "collide/bound_records.h"
 #include "collide/collision_world.h"
+#include "collide/cube_bound.h"
 #include "collide/object_bounds.h"
+#include "collide/record_sink.h"
 #include "harness/model/mesh_collide.h"
 
 namespace cc::harness {
@@ -34,11 +35,9 @@ Answer world_pairs(const MeshPair& m, RotationBounds bounds) {
 
 // The object bounds of a placed mesh: its fitted box, its radius and its cube, apart from the
 // other mesh's (the cube is checked against this mesh's vertices).
-bounds::Records object_bounds(const Mesh& mesh, const RigidTransform& pose) {
-  bounds::Records r;
+void object_bounds(const Mesh& mesh, const RigidTransform& pose, bounds::Records& r) {
   fitted_box(mesh, pose, r);
   bounding_cube(rotation_radius(mesh, r), pose, r);
-  return r;
 }
 
 constexpr BoundTerm kBoundTerms[] = {
@@ -63,8 +62,8 @@ const std::vector<Party<MeshMeshInput>>& Query<MeshMeshInput>::library_parties()
 std::span<const BoundTerm> Query<MeshMeshInput>::bound_terms() { return kBoundTerms; }
 
 void Query<MeshMeshInput>::probe(const MeshMeshInput& in, std::vector<bounds::Records>& records) {
-  records.push_back(object_bounds(*in.meshes.a.mesh, in.meshes.pose_a));
-  records.push_back(object_bounds(*in.meshes.b.mesh, in.meshes.pose_b));
+  object_bounds(*in.meshes.a.mesh, in.meshes.pose_a, bounds::next_call(records));
+  object_bounds(*in.meshes.b.mesh, in.meshes.pose_b, bounds::next_call(records));
 }
 
 }  // namespace cc::harness

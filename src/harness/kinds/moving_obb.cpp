@@ -9,7 +9,9 @@
 #include <cmath>
 #include <optional>
 
-#include "collide/bound_records.h"
+#include "collide/obb_bound.h"
+#include "collide/record_sink.h"
+#include "collide/sweep_bound.h"
 #include "harness/generation/regimes.h"
 #include "harness/generation/shapes.h"
 #include "harness/generation/touch.h"
@@ -157,7 +159,7 @@ void Query<MovingObbInput>::recognise(const MovingObbInput& in, Configurations& 
 std::span<const BoundTerm> Query<MovingObbInput>::bound_terms() { return kBoundTerms; }
 
 void Query<MovingObbInput>::probe(const MovingObbInput& in, std::vector<bounds::Records>& records) {
-  bounds::Records& r = records.emplace_back();
+  bounds::Records& r = bounds::next_call(records);
   sweep_obb_obb(in.a, in.b, r);
   if (in.a.box.axes == Mat3::identity() && in.b.box.axes == Mat3::identity()) {
     const auto box = [](const Obb& b) { return Aabb{b.center - b.half, b.center + b.half}; };

@@ -5,7 +5,8 @@
 
 #include <cmath>
 
-#include "collide/bound_records.h"
+#include "collide/obb_bound.h"
+#include "collide/record_sink.h"
 #include "harness/generation/regimes.h"
 #include "harness/generation/rotation.h"
 #include "harness/generation/shapes.h"
@@ -79,7 +80,7 @@ void Query<ObbObbInput>::recognise(const ObbObbInput& in, Configurations& found)
 std::span<const BoundTerm> Query<ObbObbInput>::bound_terms() { return kBoundTerms; }
 
 void Query<ObbObbInput>::probe(const ObbObbInput& in, std::vector<bounds::Records>& records) {
-  test_obb_obb(in.a, in.b, records.emplace_back());
+  test_obb_obb(in.a, in.b, bounds::next_call(records));
 }
 
 }  // namespace cc::harness

@@ -13,8 +13,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "collide/bound_records.h"
 #include "collide/ray_aabb_batch.h"
+#include "collide/ray_slab_bound.h"
+#include "collide/record_sink.h"
 #include "harness/generation/regimes.h"
 #include "harness/generation/shapes.h"
 #include "harness/judging/configurations.h"
@@ -320,7 +321,7 @@ void Query<RayAabbInput>::recognise(const RayAabbInput& in, Configurations& foun
 std::span<const BoundTerm> Query<RayAabbInput>::bound_terms() { return kBoundTerms; }
 
 void Query<RayAabbInput>::probe(const RayAabbInput& in, std::vector<bounds::Records>& records) {
-  intersect_ray_aabb(in.ray, in.box, records.emplace_back());
+  intersect_ray_aabb(in.ray, in.box, bounds::next_call(records));
 }
 
 }  // namespace cc::harness

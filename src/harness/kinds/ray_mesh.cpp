@@ -7,8 +7,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "collide/bound_records.h"
 #include "collide/ray_mesh.h"
+#include "collide/ray_mesh_bound.h"
+#include "collide/record_sink.h"
 #include "harness/formats/mesh_files.h"
 #include "harness/generation/meshes.h"
 #include "harness/generation/regimes.h"
@@ -249,7 +250,7 @@ std::span<const BoundTerm> Query<RayMeshInput>::bound_terms() { return kBoundTer
 void Query<RayMeshInput>::probe(const RayMeshInput& in, std::vector<bounds::Records>& records) {
   with_bv_type(in.library.bv, [&]<class BV>() {
     const auto bvh = cached_bvh<BV>(in.mesh.mesh, in.library.build);
-    ray_mesh_closest(*bvh, in.ray, records.emplace_back());
+    ray_mesh_closest(*bvh, in.ray, bounds::next_call(records));
   });
 }
 

@@ -7,7 +7,8 @@
 
 #include <cmath>
 
-#include "collide/bound_records.h"
+#include "collide/record_sink.h"
+#include "collide/sphere_bound.h"
 #include "harness/generation/regimes.h"
 #include "harness/judging/configurations.h"
 #include "harness/judging/features.h"
@@ -129,7 +130,7 @@ void Query<SphereSphereInput>::recognise(const SphereSphereInput& in, Configurat
 std::span<const BoundTerm> Query<SphereSphereInput>::bound_terms() { return kBoundTerms; }
 
 void Query<SphereSphereInput>::probe(const SphereSphereInput& in, std::vector<bounds::Records>& records) {
-  test_sphere_sphere(in.a, in.b, records.emplace_back());
+  test_sphere_sphere(in.a, in.b, bounds::next_call(records));
 }
 
 }  // namespace cc::harness

@@ -8,7 +8,8 @@
 #include <cmath>
 #include <utility>
 
-#include "collide/bound_records.h"
+#include "collide/record_sink.h"
+#include "collide/sat_bound.h"
 #include "collide/triangle_box.h"
 #include "collide/triangle_triangle.h"
 #include "harness/generation/rotation.h"
@@ -81,7 +82,7 @@ void Query<TriAabbInput>::recognise(const TriAabbInput& in, Configurations& foun
 std::span<const BoundTerm> Query<TriAabbInput>::bound_terms() { return kBoundTerms; }
 
 void Query<TriAabbInput>::probe(const TriAabbInput& in, std::vector<bounds::Records>& records) {
-  test_triangle_aabb(in.tri, in.box, records.emplace_back());
+  test_triangle_aabb(in.tri, in.box, bounds::next_call(records));
 }
 
 }  // namespace cc::harness

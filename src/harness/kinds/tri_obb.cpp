@@ -9,7 +9,8 @@
 #include <cmath>
 #include <utility>
 
-#include "collide/bound_records.h"
+#include "collide/frame_change_bound.h"
+#include "collide/record_sink.h"
 #include "collide/triangle_box.h"
 #include "collide/triangle_triangle.h"
 #include "harness/generation/rotation.h"
@@ -96,7 +97,7 @@ void Query<TriObbInput>::recognise(const TriObbInput& in, Configurations& found)
 std::span<const BoundTerm> Query<TriObbInput>::bound_terms() { return kBoundTerms; }
 
 void Query<TriObbInput>::probe(const TriObbInput& in, std::vector<bounds::Records>& records) {
-  test_triangle_obb(in.tri, in.box, records.emplace_back());
+  test_triangle_obb(in.tri, in.box, bounds::next_call(records));
 }
 
 }  // namespace cc::harness

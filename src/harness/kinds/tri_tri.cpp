@@ -8,7 +8,8 @@
 #include <cmath>
 #include <utility>
 
-#include "collide/bound_records.h"
+#include "collide/independence_bound.h"
+#include "collide/record_sink.h"
 #include "collide/triangle_box.h"
 #include "collide/triangle_triangle.h"
 #include "harness/generation/rotation.h"
@@ -132,7 +133,7 @@ void Query<TriTriInput>::recognise(const TriTriInput& in, Configurations& found)
 std::span<const BoundTerm> Query<TriTriInput>::bound_terms() { return kBoundTerms; }
 
 void Query<TriTriInput>::probe(const TriTriInput& in, std::vector<bounds::Records>& records) {
-  test_triangle_triangle(in.a, in.b, records.emplace_back());
+  test_triangle_triangle(in.a, in.b, bounds::next_call(records));
 }
 
 }  // namespace cc::harness

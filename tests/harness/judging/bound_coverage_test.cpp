@@ -4,6 +4,7 @@
 
 #include <algorithm>
 
+#include "collide/bound_records.h"
 #include "harness/generation/generate.h"
 #include "oracle/exact/exact_reference.h"
 #include "test_paths.h"
