@@ -9,6 +9,7 @@
 #include "harness/model/library.h"
 #include "harness/model/subject.h"
 #include "harness/processes/child.h"
+#include "harness/processes/evaluate_in_child.h"
 #include "harness/formats/number_text.h"
 #include "oracle/exact/exact_reference.h"
 #include "oracle/peers/peer_opinions.h"

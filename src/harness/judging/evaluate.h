@@ -1,7 +1,6 @@
 // One case, answered by the three parties and classified.
 #pragma once
 
-#include <functional>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -30,17 +29,6 @@ void judge_into(Evaluation& e, const Input& input);
 
 /// Asks the library, the exact reference and (when given) the second opinions, and classifies.
 Evaluation evaluate(const Input& input, const ExactReference& exact, const SecondOpinion* second);
-
-/// The same, the opinions asked first in a child process (crosscheck's own library too, to
-/// prove it returns), which passes them back (as case files store them, exactly); the library
-/// (a subject in its own process) and the exact reference are asked here. A party that crashes, or is cut short by a jump out of its code (see
-/// SecondOpinion::abandoned_calls), thus neither ends nor damages the caller. Nothing when the
-/// child did not answer (it crashed, ran past timeout_seconds when that is not 0, or was
-/// stopped when `stop` said so: finish_child), and then how it ended into `how` when given
-/// (ChildEnd::what()).
-std::optional<Evaluation> evaluate_in_child(const Input& input, const ExactReference& exact, const SecondOpinion& second,
-                                            double timeout_seconds = 0, std::string* how = nullptr,
-                                            const std::function<bool()>& stop = {});
 
 /// The party a case's process died in (crashed, exited, or was killed at its time limit).
 enum class DiedIn { library, exact, second_opinions };

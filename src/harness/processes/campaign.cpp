@@ -22,6 +22,7 @@
 #include "harness/model/subject.h"
 #include "harness/formats/write_all.h"
 #include "harness/processes/child.h"
+#include "harness/processes/evaluate_in_child.h"
 #include "harness/processes/interrupts.h"
 #include "harness/processes/subject_process.h"
 

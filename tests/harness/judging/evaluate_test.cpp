@@ -1,6 +1,6 @@
 // A case whose process died is rebuilt one way, whoever rebuilds it (the campaign, any command):
 // the party that died fails, nothing is invented for the parties not asked, and a time-out is
-// never an answer. A child that dies says how.
+// never an answer.
 #include "harness/judging/evaluate.h"
 
 #include <gtest/gtest.h>
@@ -119,13 +119,6 @@ TEST(EvaluationAfterDeath, InTheExactReferenceNoVerdict) {
   EXPECT_EQ(e.exact.note, "killed by signal 6 (Aborted) in the exact reference");
   EXPECT_TRUE(e.opinions.empty());
   EXPECT_EQ(e.verdict.cls, CaseClass::undecided);
-}
-
-TEST(EvaluateInChild, AChildThatDiesSaysHowAndLeavesTheCallerWhole) {
-  const exact::ExactRationalReference exact;
-  std::string how;
-  EXPECT_FALSE(evaluate_in_child(kOverlapping, exact, Crashing{}, 0, &how).has_value());
-  EXPECT_EQ(how, "killed by signal 11 (Segmentation fault)");
 }
 
 }  // namespace
