@@ -6,7 +6,9 @@
 // counted (tests, which mirror the units; bench, whose rows are named after the library's
 // primitives; the library, src/collide, which has no query kinds: a file or an include path
 // named after a library function, collide/<name>.h, is not the kind, nor is a folder of FCL's,
-// fcl/<name>/), and anything else. With --check, exit 1 when a kind is named anywhere else.
+// fcl/<name>/), and anything else. Then what the checklist for adding a kind
+// (docs/query-kinds.md) asks that is missing. With --check, exit 1 when a kind is named anywhere
+// else or its checklist is not complete.
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
@@ -108,6 +110,49 @@ std::string not_counted_because(const std::string& rel) {
   return {};
 }
 
+// Whether `file` under `root` holds `text`.
+bool holds(const fs::path& root, const std::string& file, const std::string& text) {
+  return read_text(root / file).find(text) != std::string::npos;
+}
+
+bool has_file_in(const fs::path& folder, const std::string& extension) {
+  std::error_code ec;
+  for (auto it = fs::directory_iterator(folder, ec); !ec && it != fs::directory_iterator(); ++it) {
+    if (it->is_regular_file() && (extension.empty() || it->path().extension() == extension)) return true;
+  }
+  return false;
+}
+
+// What the checklist for adding a kind (docs/query-kinds.md, "Adding a query kind") asks that
+// the tree lacks: its units in every layer (the harness, the exact reference, each peer's
+// oracle/<peer>/kinds/), hand-written cases and fuzz seeds in its corpora folder, its rows in the
+// manual (query-kinds.md, bands.md, peers.md), and its case in the distinct-inputs switch. The
+// registry line is what makes it a kind.
+std::vector<std::string> checklist_gaps(const fs::path& root, const std::string& kind) {
+  std::vector<std::string> gaps;
+  std::vector<std::string> units = {"src/harness/kinds/" + kind + ".h", "src/harness/kinds/" + kind + ".cpp",
+                                    "oracle/exact/kinds/" + kind + ".cpp"};
+  std::error_code ec;
+  std::set<std::string> peers;
+  for (auto it = fs::directory_iterator(root / "oracle", ec); !ec && it != fs::directory_iterator(); ++it) {
+    const std::string peer = it->path().filename().string();
+    if (peer != "exact" && fs::is_directory(it->path() / "kinds")) peers.insert(peer);
+  }
+  for (const std::string& peer : peers) units.push_back("oracle/" + peer + "/kinds/" + kind + ".cpp");
+  for (const std::string& unit : units) {
+    if (!fs::is_regular_file(root / unit)) gaps.push_back("its unit " + unit);
+  }
+  if (!has_file_in(root / "corpora" / kind, ".json")) gaps.push_back("hand-written cases in corpora/" + kind + "/");
+  if (!has_file_in(root / "corpora" / kind / "seed", "")) gaps.push_back("fuzz seeds in corpora/" + kind + "/seed/");
+  for (const std::string page : {"docs/query-kinds.md", "docs/bands.md", "docs/peers.md"}) {
+    if (!holds(root, page, "`" + kind + "`")) gaps.push_back("its row in " + page);
+  }
+  if (!holds(root, "tests/harness/formats/distinct_inputs.h", "case QueryKind::" + kind + ":")) {
+    gaps.push_back("its case in the switch of tests/harness/formats/distinct_inputs.h");
+  }
+  return gaps;
+}
+
 int run(const KindFilesArgs& args) {
   std::vector<std::string> kinds;
   for (const std::string& k : args.kinds) {
@@ -173,7 +218,13 @@ int run(const KindFilesArgs& args) {
     for (const auto& [category, files] : where) {
       if (category.starts_with("not counted")) std::printf("  (%s: %zu files)\n", category.c_str(), files.size());
     }
-    clean &= elsewhere == 0;
+    const std::vector<std::string> gaps = checklist_gaps(root, kind);
+    if (gaps.empty()) {
+      std::printf("  the checklist: complete\n");
+    } else {
+      for (const std::string& gap : gaps) std::printf("  the checklist lacks %s\n", gap.c_str());
+    }
+    clean &= elsewhere == 0 && gaps.empty();
   }
   return args.check && !clean ? kExitFound : 0;
 }
@@ -185,7 +236,9 @@ void add_kind_files_command(CLI::App& app, int& exit_code) {
   auto* cmd = app.add_subcommand("kind-files", "List, per query kind, the files of the source tree that name it");
   cmd->add_option("kinds", args->kinds, "Query kinds (default: all)");
   cmd->add_option("--source", args->source, "The source tree")->capture_default_str();
-  cmd->add_flag("--check", args->check, "Exit 1 if a kind is named outside its units, the registry, the manual (README, docs/) and its corpora folder");
+  cmd->add_flag("--check", args->check,
+                "Exit 1 if a kind is named outside its units, the registry, the manual (README, docs/) and its corpora "
+                "folder, or if the checklist for adding a kind (docs/query-kinds.md) is not complete");
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }
 
