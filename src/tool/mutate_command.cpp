@@ -710,7 +710,10 @@ int run(const MutateArgs& args) {
   interrupt_children_on_signal();
   MutationRunner runner(args, run, queue, start);
   if (!runner.run_workers()) {
-    std::fprintf(stderr, "crosscheck mutate: %s\n", runner.setup_error().c_str());
+    // An interrupt kills the set-up's build too: say so, not that the build failed.
+    std::fprintf(stderr, "crosscheck mutate: %s\n",
+                 interrupted() ? "interrupted (SIGINT or SIGTERM) while setting up the scratch trees: no mutant ran"
+                               : runner.setup_error().c_str());
     return kExitFound;
   }
   run.seconds = monotonic_seconds() - start;

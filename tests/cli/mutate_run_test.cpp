@@ -190,5 +190,19 @@ TEST(MutateRun, AReportOfAnotherSourceIsNotResumed) {
   EXPECT_NE(missing.err.find("--resume"), std::string::npos) << missing.err;
 }
 
+// SIGTERM while the scratch trees are set up kills their build: the run says it was interrupted,
+// not that the tree does not build.
+TEST(MutateRun, AnInterruptDuringSetUpIsToldAsOne) {
+  const TempFolder scratch("crosscheck_mutate_setup_interrupt");
+  const fs::path out = scratch.path() / "out", err = scratch.path() / "err";
+  const harness::ChildEnd end =
+      harness::run_program(mutate_argv(scratch.path(), "10"), {scratch.path(), out, err}, 120,
+                           [&] { return fs::exists(scratch.path() / "work" / "worker-0" / "logs"); });
+  EXPECT_EQ(end.signal, 0) << "it ends by itself, after killing its children";
+  EXPECT_EQ(end.status, 1) << text_of(err);
+  EXPECT_NE(text_of(err).find("interrupted (SIGINT or SIGTERM) while setting up"), std::string::npos) << text_of(err);
+  EXPECT_EQ(text_of(err).find("failed"), std::string::npos) << text_of(err);
+}
+
 }  // namespace
 }  // namespace cc::test
