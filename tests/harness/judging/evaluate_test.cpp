@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <csignal>
 
+#include "harness/crashing_opinions.h"
 #include "harness/judging/replay.h"
 #include "harness/model/library.h"
 #include "oracle/exact/exact_reference.h"
@@ -15,24 +15,14 @@
 namespace cc::harness {
 namespace {
 
-constexpr Band kBand{0, BandSides::exact, 0, "comparisons of inputs only: exact"};
+constexpr Band kBand = CrashingOpinions::kBand;
 
-// Two parties that crash the process they are asked in.
-class Crashing final : public SecondOpinion {
- public:
-  std::vector<Opinion> opinions(const Input&) const override {
-    std::raise(SIGSEGV);
-    return {};
-  }
-  std::vector<PartyBand> parties(QueryKind) const override { return {{"fcl.AABBd::overlap", kBand}, {"bullet.x", kBand}}; }
-};
-
-const Input kOverlapping = AabbAabbInput{{{0, 0, 0}, {1, 1, 1}}, {{0.5, 0.5, 0.5}, {2, 2, 2}}};
 
 TEST(EvaluationAfterDeath, InTheSecondOpinionsEachFailedTheLibraryAndExactAnswered) {
   const exact::ExactRationalReference exact;
   const Evaluation e =
-      evaluation_after_death(kOverlapping, exact, Crashing{}, DiedIn::second_opinions, "killed by signal 11 (Segmentation fault)");
+      evaluation_after_death(kOverlapping, exact, CrashingOpinions{}, DiedIn::second_opinions,
+                             "killed by signal 11 (Segmentation fault)");
   EXPECT_TRUE(e.library_failure.empty());
   EXPECT_TRUE(e.library.hit);
   EXPECT_TRUE(e.exact.decided);
@@ -46,7 +36,7 @@ TEST(EvaluationAfterDeath, InTheSecondOpinionsEachFailedTheLibraryAndExactAnswer
 
 TEST(EvaluationAfterDeath, ATimeOutIsTimedOutNeverAnAnswer) {
   const exact::ExactRationalReference exact;
-  const Evaluation e = evaluation_after_death(kOverlapping, exact, Crashing{}, DiedIn::second_opinions,
+  const Evaluation e = evaluation_after_death(kOverlapping, exact, CrashingOpinions{}, DiedIn::second_opinions,
                                               "timed out: ran past its time limit");
   for (const Opinion& o : e.opinions) EXPECT_EQ(o.status, Opinion::Status::timed_out);
   EXPECT_EQ(e.verdict.cls, CaseClass::oracle_crash);
@@ -54,7 +44,7 @@ TEST(EvaluationAfterDeath, ATimeOutIsTimedOutNeverAnAnswer) {
 
 TEST(EvaluationAfterDeath, InTheLibraryItsFailureAndNoOpinion) {
   const exact::ExactRationalReference exact;
-  const Evaluation e = evaluation_after_death(kOverlapping, exact, Crashing{}, DiedIn::library, "exited with status 3");
+  const Evaluation e = evaluation_after_death(kOverlapping, exact, CrashingOpinions{}, DiedIn::library, "exited with status 3");
   EXPECT_EQ(e.library_failure, "exited with status 3 in the library");
   EXPECT_TRUE(e.opinions.empty());
   // The exact reference was never asked where the library died: it is not asked here either.
@@ -112,7 +102,7 @@ TEST(EvaluationAfterDeath, ATimeOutAnywhereReplaysUnchangedBothWays) {
 
 TEST(EvaluationAfterDeath, InTheExactReferenceNoVerdict) {
   const exact::ExactRationalReference exact;
-  const Evaluation e = evaluation_after_death(kOverlapping, exact, Crashing{}, DiedIn::exact, "killed by signal 6 (Aborted)");
+  const Evaluation e = evaluation_after_death(kOverlapping, exact, CrashingOpinions{}, DiedIn::exact, "killed by signal 6 (Aborted)");
   EXPECT_TRUE(e.library.hit);
   EXPECT_FALSE(e.exact.decided);
   EXPECT_TRUE(std::isnan(e.exact.margin));
