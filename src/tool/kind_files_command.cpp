@@ -103,6 +103,18 @@ std::string unit_of(const std::string& rel) {
   return harness::query_kind_named(stem) ? stem : std::string();
 }
 
+// Whether `text`, a peer's oracle/<peer>/no_parties.cpp, declares that it has no parties for
+// `kind` (a CC_NO_PARTIES line): that line is the kind's unit there.
+bool declares_no_parties(const std::string& rel, const std::string& text, const std::string& kind) {
+  if (fs::path(rel).filename() != "no_parties.cpp") return false;
+  const std::size_t at = text.find("\nCC_NO_PARTIES(");
+  for (std::size_t line = at; line != std::string::npos; line = text.find("\nCC_NO_PARTIES(", line + 1)) {
+    const std::size_t comma = text.find(", ", line);
+    if (comma != std::string::npos && text.compare(comma + 2, kind.size() + 1, kind + ",") == 0) return true;
+  }
+  return false;
+}
+
 std::string not_counted_because(const std::string& rel) {
   if (rel.starts_with("tests/")) return "tests";
   if (rel.starts_with("bench/")) return "bench";
@@ -125,7 +137,7 @@ bool has_file_in(const fs::path& folder, const std::string& extension) {
 
 // What the checklist for adding a kind (docs/query-kinds.md, "Adding a query kind") asks that
 // the tree lacks: its units in every layer (the harness, the exact reference, each peer's
-// oracle/<peer>/kinds/), hand-written cases and fuzz seeds in its corpora folder, its rows in the
+// oracle/<peer>/kinds/, or the peer's line saying it has none), hand-written cases and fuzz seeds in its corpora folder, its rows in the
 // manual (query-kinds.md, bands.md, peers.md), and its case in the distinct-inputs switch. The
 // registry line is what makes it a kind.
 std::vector<std::string> checklist_gaps(const fs::path& root, const std::string& kind) {
@@ -138,9 +150,12 @@ std::vector<std::string> checklist_gaps(const fs::path& root, const std::string&
     const std::string peer = it->path().filename().string();
     if (peer != "exact" && fs::is_directory(it->path() / "kinds")) peers.insert(peer);
   }
-  for (const std::string& peer : peers) units.push_back("oracle/" + peer + "/kinds/" + kind + ".cpp");
+  for (const std::string& peer : peers) {
+    const std::string none = "oracle/" + peer + "/no_parties.cpp";
+    if (!declares_no_parties(none, read_text(root / none), kind)) units.push_back("oracle/" + peer + "/kinds/" + kind + ".cpp");
+  }
   for (const std::string& unit : units) {
-    if (!fs::is_regular_file(root / unit)) gaps.push_back("its unit " + unit);
+    if (!fs::is_regular_file(root / unit)) gaps.push_back("its unit " + unit + " (or, for a peer, a line in its no_parties.cpp)");
   }
   if (!has_file_in(root / "corpora" / kind, ".json")) gaps.push_back("hand-written cases in corpora/" + kind + "/");
   if (!has_file_in(root / "corpora" / kind / "seed", "")) gaps.push_back("fuzz seeds in corpora/" + kind + "/seed/");
@@ -182,7 +197,7 @@ int run(const KindFilesArgs& args) {
       if (!names(text, kind) && !names(text, type)) continue;
       const std::string unit = unit_of(rel);
       std::string category;
-      if (unit == kind) {
+      if (unit == kind || declares_no_parties(rel, text, kind)) {
         category = "its units";
       } else if (rel == "src/harness/kinds/registry.h") {
         category = "the registry";
