@@ -107,8 +107,8 @@ std::string unit_of(const std::string& rel) {
 // `kind` (a CC_NO_PARTIES line): that line is the kind's unit there.
 bool declares_no_parties(const std::string& rel, const std::string& text, const std::string& kind) {
   if (fs::path(rel).filename() != "no_parties.cpp") return false;
-  const std::size_t at = text.find("\nCC_NO_PARTIES(");
-  for (std::size_t line = at; line != std::string::npos; line = text.find("\nCC_NO_PARTIES(", line + 1)) {
+  for (std::size_t line = text.find("\nCC_NO_PARTIES("); line != std::string::npos;
+       line = text.find("\nCC_NO_PARTIES(", line + 1)) {
     const std::size_t comma = text.find(", ", line);
     if (comma != std::string::npos && text.compare(comma + 2, kind.size() + 1, kind + ",") == 0) return true;
   }

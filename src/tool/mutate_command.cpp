@@ -438,6 +438,14 @@ int count_of(const MutationRun& run, MutantStatus status) {
                                         [&](const MutantResult& r) { return r.status == status; }));
 }
 
+// Where the reports go: --report and --json, by default under --work.
+std::string report_path(const MutateArgs& args) {
+  return args.report.empty() ? (fs::path(args.work) / "report.md").string() : args.report;
+}
+std::string json_path(const MutateArgs& args) {
+  return args.json.empty() ? (fs::path(args.work) / "report.json").string() : args.json;
+}
+
 // Both reports, each written whole or not at all (a run killed while writing leaves the last
 // one). While the run goes on, the mutants not run yet say so.
 void write_reports(const MutateArgs& args, const MutationRun& run) {
@@ -447,9 +455,7 @@ void write_reports(const MutateArgs& args, const MutationRun& run) {
       if (r.status == MutantStatus::not_run && r.note.empty()) r.note = "not run yet (the run goes on)";
     }
   }
-  const std::string report = args.report.empty() ? (fs::path(args.work) / "report.md").string() : args.report;
-  const std::string json = args.json.empty() ? (fs::path(args.work) / "report.json").string() : args.json;
-  for (const auto& [path, text] : {std::pair{report, markdown_report(shown)}, std::pair{json, json_report(shown)}}) {
+  for (const auto& [path, text] : {std::pair{report_path(args), markdown_report(shown)}, std::pair{json_path(args), json_report(shown)}}) {
     if (const std::string problem = write_output_file(path, text); !problem.empty()) {
       std::fprintf(stderr, "crosscheck mutate: %s\n", problem.c_str());
     }
@@ -660,8 +666,7 @@ int report(const MutateArgs& args, MutationRun& run) {
             errors = count_of(run, MutantStatus::error);
   std::printf("score: ctest alone %d/%d, ctest + campaign %d/%d; %d stale, %d not run, %d errors\n", s.by_ctest,
               s.counted, s.by_either, s.counted, stale, count_of(run, MutantStatus::not_run), errors);
-  std::printf("report: %s, %s\n", (args.report.empty() ? fs::path(args.work) / "report.md" : fs::path(args.report)).c_str(),
-              (args.json.empty() ? fs::path(args.work) / "report.json" : fs::path(args.json)).c_str());
+  std::printf("report: %s, %s\n", report_path(args).c_str(), json_path(args).c_str());
   if (interrupted()) return kExitFound;
   return survived || stale || errors ? kExitFound : 0;
 }
@@ -693,6 +698,9 @@ int run(const MutateArgs& args) {
   run.commit = source.commit;
   run.changes = source.changes;
   run.processor = processor_description();
+  // Named as the workers name their files (absolute), for the Markdown report to show relative.
+  run.source_folder = fs::absolute(args.source).lexically_normal().string();
+  run.work_folder = fs::absolute(args.work).lexically_normal().string();
   if (!args.resume.empty()) {
     if (const std::string why = resume(args, run, queue); !why.empty()) {
       std::fprintf(stderr, "crosscheck mutate: --resume %s: %s\n", args.resume.c_str(), why.c_str());

@@ -36,6 +36,19 @@ std::string cell(const std::string& s) {
   return out;
 }
 
+// `text` with every path under the run's source tree shown by its path in the repository, and
+// every path under its work folder as WORK/...
+std::string without_machine_paths(const MutationRun& run, std::string text) {
+  for (const auto& [folder, shown] : {std::pair{run.source_folder, std::string()}, std::pair{run.work_folder, std::string("WORK/")}}) {
+    if (folder.empty()) continue;
+    const std::string prefix = folder.back() == '/' ? folder : folder + "/";
+    for (std::size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at + shown.size())) {
+      text.replace(at, prefix.size(), shown);
+    }
+  }
+  return text;
+}
+
 }  // namespace
 
 std::string_view to_string(MutantStatus s) {
@@ -101,16 +114,16 @@ std::string markdown_report(const MutationRun& run) {
   out += "Written by `crosscheck mutate`, which replaces it at each run; what it measures and how to read it: "
          "[testing.md](testing.md).\n\n";
   out += "- date: " + run.date + " UTC\n- commit: " + run.commit + "\n- processor: " + run.processor +
-         "\n- command: `" + run.command + "`\n";
+         "\n- command: `" + without_machine_paths(run, run.command) + "`\n";
   if (!run.resumed_from.empty()) {
     const auto carried = std::count_if(run.results.begin(), run.results.end(),
                                        [](const MutantResult& r) { return !r.from_run.empty(); });
-    out += "- resumed from: `" + run.resumed_from + "`, whose results for " + std::to_string(carried) +
+    out += "- resumed from: `" + without_machine_paths(run, run.resumed_from) + "`, whose results for " + std::to_string(carried) +
            " mutants (on the same source) are carried over, each marked in its note\n";
   }
   out += "\n";
   if (!run.finished) out += "**Unfinished**: written while the run goes on; mutants not run yet are marked so.\n\n";
-  out += "Catalogue `" + run.catalogue + "`, " + std::to_string(run.results.size()) + " mutants; " +
+  out += "Catalogue `" + without_machine_paths(run, run.catalogue) + "`, " + std::to_string(run.results.size()) + " mutants; " +
          std::to_string(run.jobs) + " worker(s); checks in order: ctest labels ";
   for (std::size_t i = 0; i < run.labels.size(); ++i) out += (i ? ", " : "") + run.labels[i];
   char line[256];
@@ -174,6 +187,7 @@ std::string markdown_report(const MutationRun& run) {
     if (r.status == MutantStatus::equivalent) note = r.mutant.equivalent;
     if (note.empty()) note = r.mutant.description;
     if (!r.from_run.empty()) note += " (from the run of " + r.from_run + ")";
+    note = without_machine_paths(run, note);
     out += "| `" + r.mutant.id + "` | " + r.mutant.query + " | " + cell(r.mutant.file) + " | " +
            std::string(to_string(r.status)) + " | " + cell(by) + " | " + (caught ? seconds_text(r.seconds_to_catch) : "") +
            " | " + (ran ? seconds_text(r.build_seconds) : "") + " | " + cell(note) + " |\n";

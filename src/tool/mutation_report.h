@@ -47,6 +47,10 @@ struct MutationRun {
   std::string changes;    // with "-dirty": a digest of the uncommitted changes; else empty
   std::string processor;  // its name and hardware threads
   std::string catalogue;
+  // The source tree and the work folder as absolute paths: the Markdown report names a file
+  // under the first by its path in the repository, under the second as WORK/..., so that a
+  // page committed to docs/ names no folder of the machine it ran on.
+  std::string source_folder, work_folder;
   int jobs = 1;
   double budget_minutes = 0;
   double campaign_seconds = 0;
@@ -79,7 +83,8 @@ std::string_view layer_of(std::string_view file);
 /// (layers without mutants left out).
 std::vector<std::pair<std::string, Score>> scores_by_layer(const MutationRun& run);
 
-/// The report as Markdown: the scores, then one table row per mutant.
+/// The report as Markdown: the scores, then one table row per mutant; paths under
+/// run.source_folder and run.work_folder shown relative to them (see MutationRun).
 std::string markdown_report(const MutationRun& run);
 
 /// The report as JSON text.

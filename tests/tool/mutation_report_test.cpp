@@ -388,5 +388,23 @@ TEST(MutationReport, AnUnfinishedReportSaysSo) {
   EXPECT_FALSE(contains(markdown_report(sample_run()), "Unfinished"));
 }
 
+// A page committed to docs/ names no folder of the machine: the catalogue by its path in the
+// repository, the logs under the work folder as WORK/...; the JSON keeps the paths whole.
+TEST(MutationReport, MarkdownNamesNoFolderOfTheMachine) {
+  MutationRun run = sample_run();
+  run.source_folder = "/home/someone/tree";
+  run.work_folder = "/scratch/mutate/";
+  run.catalogue = "/home/someone/tree/tests/mutation/mutants.json";
+  run.command = "crosscheck mutate --catalogue /home/someone/tree/tests/mutation/mutants.json --jobs 2";
+  run.results[6].note = "see /scratch/mutate/worker-0/logs/g.build.log and /scratch/mutate/worker-1/logs/g.build.log";
+  const std::string md = markdown_report(run);
+  EXPECT_TRUE(contains(md, "Catalogue `tests/mutation/mutants.json`")) << md;
+  EXPECT_TRUE(contains(md, "- command: `crosscheck mutate --catalogue tests/mutation/mutants.json --jobs 2`")) << md;
+  EXPECT_TRUE(contains(md, "see WORK/worker-0/logs/g.build.log and WORK/worker-1/logs/g.build.log")) << md;
+  EXPECT_FALSE(contains(md, "/home/someone")) << md;
+  EXPECT_FALSE(contains(md, "/scratch")) << md;
+  EXPECT_TRUE(contains(json_report(run), "/home/someone/tree/tests/mutation/mutants.json"));
+}
+
 }  // namespace
 }  // namespace cc::tool
