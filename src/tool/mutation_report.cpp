@@ -36,14 +36,21 @@ std::string cell(const std::string& s) {
   return out;
 }
 
-// `text` with every path under the run's source tree shown by its path in the repository, and
-// every path under its work folder as WORK/...
+// `text` with every path under the run's source tree shown by its path in the repository, every
+// path under its work folder as WORK/..., and the report it resumed from by its file name.
 std::string without_machine_paths(const MutationRun& run, std::string text) {
   for (const auto& [folder, shown] : {std::pair{run.source_folder, std::string()}, std::pair{run.work_folder, std::string("WORK/")}}) {
     if (folder.empty()) continue;
     const std::string prefix = folder.back() == '/' ? folder : folder + "/";
     for (std::size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at + shown.size())) {
       text.replace(at, prefix.size(), shown);
+    }
+  }
+  // A resumed report kept outside both (beside the work folder, say) is named by its file name.
+  if (run.resumed_from.starts_with('/')) {
+    const std::string name = std::filesystem::path(run.resumed_from).filename().string();
+    for (std::size_t at = text.find(run.resumed_from); at != std::string::npos; at = text.find(run.resumed_from, at + name.size())) {
+      text.replace(at, run.resumed_from.size(), name);
     }
   }
   return text;

@@ -84,7 +84,8 @@ std::string_view layer_of(std::string_view file);
 std::vector<std::pair<std::string, Score>> scores_by_layer(const MutationRun& run);
 
 /// The report as Markdown: the scores, then one table row per mutant; paths under
-/// run.source_folder and run.work_folder shown relative to them (see MutationRun).
+/// run.source_folder and run.work_folder shown relative to them (see MutationRun), and the
+/// report it resumed from by its file name.
 std::string markdown_report(const MutationRun& run);
 
 /// The report as JSON text.

@@ -404,6 +404,12 @@ TEST(MutationReport, MarkdownNamesNoFolderOfTheMachine) {
   EXPECT_FALSE(contains(md, "/home/someone")) << md;
   EXPECT_FALSE(contains(md, "/scratch")) << md;
   EXPECT_TRUE(contains(json_report(run), "/home/someone/tree/tests/mutation/mutants.json"));
+  run.resumed_from = "/elsewhere/earlier.json";
+  run.command += " --resume /elsewhere/earlier.json";
+  const std::string resumed = markdown_report(run);
+  EXPECT_TRUE(contains(resumed, "--jobs 2 --resume earlier.json`")) << resumed;
+  EXPECT_TRUE(contains(resumed, "- resumed from: `earlier.json`")) << resumed;
+  EXPECT_FALSE(contains(resumed, "/elsewhere")) << resumed;
 }
 
 }  // namespace
