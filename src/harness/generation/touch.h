@@ -12,9 +12,9 @@ namespace cc::harness {
 /// Moves the second shape (the ray, the triangle against a box) so that it touches the first.
 void make_touching(Input& input, ValueSource& values);
 
-/// Mesh b translated so that one of its vertices lands on one of a's (exactly when both poses
-/// are exact, as signed permutations with simple translations are; otherwise within the
-/// rounding of the vertices placed, whatever b's translation was before).
+/// Mesh b translated so that one of its vertices lands on one of a's: within the roundings of
+/// the two vertices placed and of their difference, whatever b's translation was before (exactly
+/// where those are exact).
 void touch_at_vertices(MeshPair& m, Choices& choices);
 
 /// B moved so that its corner farthest against the normal of a face of A (on a tie, either)
