@@ -1,7 +1,7 @@
 // Bullet's GImpact on two placed meshes, for the mesh kinds (internal to oracle/bullet).
 #pragma once
 
-#include "harness/judging/party.h"
+#include "harness/model/party.h"
 #include "harness/model/mesh_query.h"
 
 namespace cc::bullet_oracle {

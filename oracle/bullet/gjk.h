@@ -10,7 +10,7 @@
 
 #include "collide/triangle.h"
 #include "collide/vec3.h"
-#include "harness/judging/party.h"
+#include "harness/model/party.h"
 
 namespace cc::bullet_oracle {
 

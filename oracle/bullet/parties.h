@@ -6,7 +6,7 @@
 
 #include <vector>
 
-#include "harness/judging/party.h"
+#include "harness/model/party.h"
 #include "harness/model/input.h"
 
 namespace cc::bullet_oracle {

@@ -2,7 +2,7 @@
 
 #include <chipmunk/chipmunk.h>
 
-#include "harness/judging/party.h"
+#include "harness/model/party.h"
 #include "oracle/fcl/time_limit.h"
 
 static_assert(sizeof(cpFloat) == sizeof(double), "Chipmunk must be built with CP_USE_DOUBLES (cpFloat a double)");

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "harness/judging/party.h"
+#include "harness/model/party.h"
 #include "harness/model/input.h"
 #include "oracle/chipmunk/chipmunk_call.h"
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "harness/judging/party.h"
+#include "harness/model/party.h"
 #include "harness/model/input.h"
 
 namespace cc::fcl_oracle {

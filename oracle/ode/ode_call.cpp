@@ -7,7 +7,7 @@
 #include <cstdlib>
 #include <string>
 
-#include "harness/judging/party.h"
+#include "harness/model/party.h"
 #include "oracle/fcl/time_limit.h"
 
 #ifndef dDOUBLE

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "harness/judging/party.h"
+#include "harness/model/party.h"
 #include "harness/model/input.h"
 #include "oracle/ode/ode_call.h"
 

@@ -25,7 +25,7 @@ CLI::Validator whole_in(std::int64_t lo, std::int64_t hi);
 /// "-1" into 2^64 - 1).
 CLI::Validator seed_value();
 
-/// The name of a query kind in the registry (harness/kinds/registry.h).
+/// The name of a query kind in the registry (harness/model/registry.h).
 CLI::Validator query_kind_name();
 
 /// The names of every query kind, comma-separated, in the registry's order.

@@ -95,10 +95,11 @@ std::string read_text(const fs::path& path) {
   return text;
 }
 
-// The kind whose unit a file belongs to (*/kinds/<kind>.h or .cpp), if any.
+// The kind whose unit a file belongs to (*/kinds/<kind>.h or .cpp, model/inputs/<kind>.h), if any.
 std::string unit_of(const std::string& rel) {
   const fs::path p(rel);
-  if (p.parent_path().filename() != "kinds") return {};
+  const fs::path folder = p.parent_path().filename();
+  if (folder != "kinds" && folder != "inputs") return {};
   const std::string stem = p.stem().string();
   return harness::query_kind_named(stem) ? stem : std::string();
 }
@@ -142,8 +143,8 @@ bool has_file_in(const fs::path& folder, const std::string& extension) {
 // registry line is what makes it a kind.
 std::vector<std::string> checklist_gaps(const fs::path& root, const std::string& kind) {
   std::vector<std::string> gaps;
-  std::vector<std::string> units = {"src/harness/kinds/" + kind + ".h", "src/harness/kinds/" + kind + ".cpp",
-                                    "oracle/exact/kinds/" + kind + ".cpp"};
+  std::vector<std::string> units = {"src/harness/model/inputs/" + kind + ".h", "src/harness/kinds/" + kind + ".h",
+                                    "src/harness/kinds/" + kind + ".cpp", "oracle/exact/kinds/" + kind + ".cpp"};
   std::error_code ec;
   std::set<std::string> peers;
   for (auto it = fs::directory_iterator(root / "oracle", ec); !ec && it != fs::directory_iterator(); ++it) {
@@ -199,7 +200,7 @@ int run(const KindFilesArgs& args) {
       std::string category;
       if (unit == kind || declares_no_parties(rel, text, kind)) {
         category = "its units";
-      } else if (rel == "src/harness/kinds/registry.h") {
+      } else if (rel == "src/harness/model/registry.h" || rel == "src/harness/kinds/pieces.cpp") {
         category = "the registry";
       } else if (rel == "README.md" || (rel.starts_with("docs/") && rel.ends_with(".md"))) {
         category = "the manual";

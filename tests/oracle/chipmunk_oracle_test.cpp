@@ -11,6 +11,7 @@
 #include <map>
 #include <string>
 
+#include "harness/model/party.h"
 #include "oracle/chipmunk/chipmunk_call.h"
 
 namespace cc::chipmunk_oracle {

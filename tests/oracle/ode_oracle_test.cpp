@@ -11,6 +11,7 @@
 #include <string>
 
 #include "harness/model/mesh_query.h"
+#include "harness/model/party.h"
 #include "oracle/ode/ode_call.h"
 
 namespace cc::ode_oracle {

@@ -1,6 +1,7 @@
 #include "harness/generation/generate.h"
 
 #include "harness/generation/values.h"
+#include "harness/model/kind_pieces.h"
 
 namespace cc::harness {
 
@@ -9,11 +10,11 @@ Input generate(QueryKind kind, Choices& choices, const GenerateOptions& options)
   // seven gets them.
   const bool huge = choices.chance(15);
   ValueSource values(choices, ValueRange{8, true, huge, options.out_of_contract});
-  return with_kind(kind, [&]<class In>() -> Input { return Query<In>::generate(values, options); });
+  return pieces_of(kind).generate(values, options);
 }
 
 bool builds_hierarchies(QueryKind kind) {
-  return with_kind(kind, []<class In>() { return Query<In>::builds_hierarchies; });
+  return pieces_of(kind).builds_hierarchies;
 }
 
 }  // namespace cc::harness

@@ -1,4 +1,5 @@
 #include "harness/generation/touch.h"
+#include "harness/model/kind_pieces.h"
 
 #include <cmath>
 
@@ -66,7 +67,7 @@ void touch_at_vertices(MeshPair& m, Choices& c) {
 }
 
 void make_touching(Input& input, ValueSource& v) {
-  std::visit([&v]<class In>(In& in) { Query<In>::touch(in, v); }, input);
+  pieces_of(kind_of(input)).touch(input, v);
 }
 
 }  // namespace cc::harness

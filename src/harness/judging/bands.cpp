@@ -3,11 +3,12 @@
 #include <algorithm>
 
 #include "harness/model/input.h"
+#include "harness/model/kind_pieces.h"
 
 namespace cc::harness {
 
 Band library_band(QueryKind kind) {
-  return with_kind(kind, []<class In>() { return Query<In>::band; });
+  return pieces_of(kind).band;
 }
 
 std::vector<std::pair<std::string, Band>> all_bands(const SecondOpinion& second) {

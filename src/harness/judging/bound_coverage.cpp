@@ -8,6 +8,7 @@
 #include "collide/bound_records.h"
 #include "harness/formats/input_json.h"
 #include "harness/model/mesh_collide.h"
+#include "harness/model/kind_pieces.h"
 
 namespace cc::harness {
 namespace {
@@ -17,9 +18,7 @@ const std::vector<ExpectedTerm>& all_expected() {
   static const std::vector<ExpectedTerm> terms = [] {
     std::vector<ExpectedTerm> out;
     for (QueryKind kind : kAllQueryKinds) {
-      with_kind(kind, [&]<class In>() {
-        for (const BoundTerm& t : Query<In>::bound_terms()) out.push_back({kind, t.test, t.quantity, t.term});
-      });
+      for (const BoundTerm& t : pieces_of(kind).bound_terms()) out.push_back({kind, t.test, t.quantity, t.term});
     }
     return out;
   }();
@@ -65,7 +64,7 @@ std::string_view test_of(QueryKind kind, std::string_view quantity) {
 
 std::vector<bounds::Records> probe_library(const Input& input) {
   std::vector<bounds::Records> out;
-  std::visit([&out]<class In>(const In& in) { Query<In>::probe(in, out); }, input);
+  pieces_of(kind_of(input)).probe(input, out);
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include "harness/judging/bands.h"
 #include "harness/judging/hull_distance.h"
 #include "harness/model/subject.h"
+#include "harness/model/kind_pieces.h"
 
 namespace cc::harness {
 
@@ -221,7 +222,7 @@ PartyStanding judge_party(std::string party, const Band& band, const Answer& sai
 }  // namespace
 
 Judged judged_of(QueryKind kind) {
-  return with_kind(kind, []<class In>() { return Query<In>::judged; });
+  return pieces_of(kind).judged;
 }
 
 Verdict classify(QueryKind kind, const Answer& library, const ExactVerdict& exact, const std::vector<Opinion>& opinions) {

@@ -9,6 +9,7 @@
 #include "harness/model/answer.h"
 #include "harness/model/case_class.h"
 #include "harness/model/input.h"
+#include "harness/model/kind_pieces.h"
 #include "harness/model/oracle.h"
 
 namespace cc::harness {

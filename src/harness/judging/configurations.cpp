@@ -1,4 +1,5 @@
 #include "harness/judging/configurations.h"
+#include "harness/model/kind_pieces.h"
 
 namespace cc::harness {
 namespace {
@@ -82,12 +83,12 @@ void Configurations::negative_parameters() {
 
 std::vector<std::string_view> configurations_of(const Input& input, const ExactVerdict& exact) {
   Configurations found(exact);
-  std::visit([&found]<class In>(const In& in) { Query<In>::recognise(in, found); }, input);
+  pieces_of(kind_of(input)).recognise(input, found);
   return std::move(found.names);
 }
 
 std::span<const std::string_view> expected_configurations(QueryKind kind) {
-  return with_kind(kind, []<class In>() { return Query<In>::configurations(); });
+  return pieces_of(kind).configurations();
 }
 
 }  // namespace cc::harness

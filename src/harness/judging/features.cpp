@@ -1,15 +1,16 @@
 #include "harness/judging/features.h"
+#include "harness/model/kind_pieces.h"
 
 namespace cc::harness {
 
 Features features_of(const Input& input, const ExactVerdict& exact) {
-  Features f = std::visit([]<class In>(const In& in) { return Query<In>::features(in); }, input);
+  Features f = pieces_of(kind_of(input)).features(input);
   f.touching = exact.contract == Contract::in && exact.decided && exact.answer.hit && exact.margin == 0;
   return f;
 }
 
 bool parallel_applies(QueryKind kind) {
-  return with_kind(kind, []<class In>() { return Query<In>::parallel_applies; });
+  return pieces_of(kind).parallel_applies;
 }
 
 Features obb_pair_features(const Obb& a, const Obb& b) {

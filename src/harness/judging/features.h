@@ -6,6 +6,7 @@
 
 #include "harness/judging/shape_facts.h"
 #include "harness/model/input.h"
+#include "harness/model/kind_pieces.h"
 #include "harness/model/oracle.h"
 
 namespace cc::harness {

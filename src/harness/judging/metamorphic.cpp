@@ -8,6 +8,7 @@
 
 #include "harness/model/parts.h"
 #include "harness/generation/choices.h"
+#include "harness/model/kind_pieces.h"
 
 namespace cc::harness {
 namespace {
@@ -309,16 +310,14 @@ struct Rename {
 }  // namespace
 
 bool relation_applies(QueryKind kind, Relation relation) {
-  return with_kind(kind, [relation]<class In>() { return Query<In>::relations.has(relation); });
+  return pieces_of(kind).relations.has(relation);
 }
 
 std::optional<Input> transform(const Input& input, Relation relation, int parameter) {
-  if (!relation_applies(kind_of(input), relation)) return std::nullopt;
+  const KindPieces& pieces = pieces_of(kind_of(input));
+  if (!pieces.relations.has(relation) || !pieces.admits(input, relation)) return std::nullopt;
   return std::visit(
       [&]<class In>(const In& in) -> std::optional<Input> {
-        if constexpr (requires { Query<In>::admits(in, relation); }) {
-          if (!Query<In>::admits(in, relation)) return std::nullopt;
-        }
         if (relation == Relation::swap_shapes) {
           if constexpr (field_index<In>("b") < std::tuple_size_v<std::decay_t<decltype(Fields<In>::list)>>) return swapped(in);
           return std::nullopt;

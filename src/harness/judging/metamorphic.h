@@ -6,7 +6,7 @@
 #include <optional>
 #include <string_view>
 
-#include "harness/judging/relation.h"
+#include "harness/model/relation.h"
 #include "harness/model/answer.h"
 #include "harness/model/input.h"
 

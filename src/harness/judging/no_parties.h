@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "harness/judging/party.h"
+#include "harness/model/party.h"
 
 /// Declares in one line that a peer has no parties for a kind: `parties_function` (the peer's
 /// template, e.g. chipmunk_parties) for the kind's input (Name##Input) gives none. `kind` (its

@@ -2,19 +2,9 @@
 #pragma once
 
 #include "harness/kinds/query.h"
+#include "harness/model/inputs/aabb_aabb.h"
 
 namespace cc::harness {
-
-struct AabbAabbInput {
-  Aabb a, b;
-  friend bool operator==(const AabbAabbInput&, const AabbAabbInput&) = default;
-};
-
-/// Its fields, in the order of the case file and of the fuzz record.
-template <>
-struct Fields<AabbAabbInput> {
-  static constexpr auto list = std::tuple{field<&AabbAabbInput::a>("a"), field<&AabbAabbInput::b>("b")};
-};
 
 template <>
 struct Query<AabbAabbInput> : QueryDefaults {

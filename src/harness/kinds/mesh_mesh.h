@@ -3,10 +3,9 @@
 #pragma once
 
 #include "harness/kinds/two_meshes.h"
+#include "harness/model/inputs/mesh_mesh.h"
 
 namespace cc::harness {
-
-using MeshMeshInput = TwoMeshesInput<CollisionMode::all_pairs>;
 
 template <>
 struct Query<MeshMeshInput> : TwoMeshes<CollisionMode::all_pairs> {

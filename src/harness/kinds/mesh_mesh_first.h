@@ -2,10 +2,9 @@
 #pragma once
 
 #include "harness/kinds/two_meshes.h"
+#include "harness/model/inputs/mesh_mesh_first.h"
 
 namespace cc::harness {
-
-using MeshMeshFirstInput = TwoMeshesInput<CollisionMode::first_hit>;
 
 template <>
 struct Query<MeshMeshFirstInput> : TwoMeshes<CollisionMode::first_hit> {

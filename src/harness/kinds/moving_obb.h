@@ -3,21 +3,9 @@
 #pragma once
 
 #include "harness/kinds/query.h"
+#include "harness/model/inputs/moving_obb.h"
 
 namespace cc::harness {
-
-/// Two boxes moving with constant velocities over a step: whether they meet, and when first
-/// and last.
-struct MovingObbInput {
-  MovingObb a, b;
-  friend bool operator==(const MovingObbInput&, const MovingObbInput&) = default;
-};
-
-/// Its fields, in the order of the case file and of the fuzz record.
-template <>
-struct Fields<MovingObbInput> {
-  static constexpr auto list = std::tuple{field<&MovingObbInput::a>("a"), field<&MovingObbInput::b>("b")};
-};
 
 template <>
 struct Query<MovingObbInput> : QueryDefaults {

@@ -2,19 +2,9 @@
 #pragma once
 
 #include "harness/kinds/query.h"
+#include "harness/model/inputs/obb_obb.h"
 
 namespace cc::harness {
-
-struct ObbObbInput {
-  Obb a, b;
-  friend bool operator==(const ObbObbInput&, const ObbObbInput&) = default;
-};
-
-/// Its fields, in the order of the case file and of the fuzz record.
-template <>
-struct Fields<ObbObbInput> {
-  static constexpr auto list = std::tuple{field<&ObbObbInput::a>("a"), field<&ObbObbInput::b>("b")};
-};
 
 template <>
 struct Query<ObbObbInput> : QueryDefaults {

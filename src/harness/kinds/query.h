@@ -1,9 +1,9 @@
 // What a query kind's unit provides to the harness: Query<its input type>, declared in
-// src/harness/kinds/<kind>.h with the input and its fields, defined in <kind>.cpp. Everything that
-// lists or dispatches kinds reaches a kind through it (and through the registry), so a kind lives
-// in one place; a unit that lacks a piece does not compile (QueryUnit, checked for every kind in
-// model/input.h). The exact reference's and the second opinions' pieces of a kind are in
-// oracle/exact/kinds/<kind>.cpp and oracle/fcl/kinds/<kind>.cpp.
+// src/harness/kinds/<kind>.h, defined in <kind>.cpp; its input and fields are in
+// model/inputs/<kind>.h. The layers below reach a unit through the table of its pieces
+// (model/kind_pieces.h), which kinds/pieces.cpp fills; a unit that lacks a piece does not compile
+// (QueryUnit, checked there for every kind). The exact reference's and the second opinions'
+// pieces of a kind are in oracle/exact/kinds/<kind>.cpp and oracle/<peer>/kinds/<kind>.cpp.
 #pragma once
 
 #include <concepts>
@@ -11,43 +11,14 @@
 #include <string_view>
 #include <vector>
 
-#include "harness/model/parts.h"
-#include "harness/model/band.h"
-#include "harness/judging/party.h"
-#include "harness/judging/relation.h"
 #include "harness/model/answer.h"
-
-namespace cc::bounds {
-struct Records;  // collide/bound_records.h
-}  // namespace cc::bounds
+#include "harness/model/band.h"
+#include "harness/model/kind_pieces.h"
+#include "harness/model/parts.h"
+#include "harness/model/party.h"
+#include "harness/model/relation.h"
 
 namespace cc::harness {
-
-class ValueSource;        // generation/values.h
-struct GenerateOptions;   // generation/generate.h
-class Configurations;     // judging/configurations.h
-
-/// What kind of configuration a case is, for the properties' statistics (judging/features.h).
-struct Features {
-  bool touching = false;    // in contract, and the exact margin is 0 with a hit
-  bool parallel = false;    // see parallel_applies()
-  bool degenerate = false;  // zero extent, zero radius, zero direction, a degenerate triangle...
-};
-
-/// How a kind's answers are judged against the exact one (judging/classify.h).
-enum class Judged {
-  hit,         // the hit, and its parameters where it gives any (ray t, contact times)
-  all_pairs,   // every pair listed by one and not the other, each at its own margin
-  first_pair,  // the pair named must be an exact one; a miss leaves only pairs within the band
-  frames,      // every pair of every frame
-  corners,     // the hit, then the corners it gives (params: x, y, z of each) against the exact ones
-};
-
-/// One term of a certified error bound that the kind's cases measure (judging/bound_coverage.h):
-/// the library's test, the quantity it certifies, the term ("total": the whole bound).
-struct BoundTerm {
-  std::string_view test, quantity, term;
-};
 
 /// A kind's unit: Query<its input type> specialised in the kind's header.
 template <class In>
@@ -64,7 +35,7 @@ struct QueryDefaults {
 
 /// What every unit provides (Query<In>, for an input type In):
 ///   band                  the library's tolerance band for the kind (model/band.h)
-///   relations             the metamorphic relations that apply (judging/relation.h)
+///   relations             the metamorphic relations that apply (model/relation.h)
 ///   judged                how its answers are judged
 ///   ask(in)               the library's answer
 ///   generate(values, o)   a case drawn toward the decision boundary (generation/generate.h)

@@ -3,20 +3,9 @@
 #pragma once
 
 #include "harness/kinds/query.h"
+#include "harness/model/inputs/ray_aabb.h"
 
 namespace cc::harness {
-
-struct RayAabbInput {
-  Ray ray;
-  Aabb box;
-  friend bool operator==(const RayAabbInput&, const RayAabbInput&) = default;
-};
-
-/// Its fields, in the order of the case file and of the fuzz record: origin, dir, tmin, tmax, box.
-template <>
-struct Fields<RayAabbInput> {
-  static constexpr auto list = std::tuple{field<&RayAabbInput::ray>(""), field<&RayAabbInput::box>("box")};
-};
 
 template <>
 struct Query<RayAabbInput> : QueryDefaults {

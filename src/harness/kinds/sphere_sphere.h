@@ -2,19 +2,9 @@
 #pragma once
 
 #include "harness/kinds/query.h"
+#include "harness/model/inputs/sphere_sphere.h"
 
 namespace cc::harness {
-
-struct SphereSphereInput {
-  Sphere a, b;
-  friend bool operator==(const SphereSphereInput&, const SphereSphereInput&) = default;
-};
-
-/// Its fields, in the order of the case file and of the fuzz record.
-template <>
-struct Fields<SphereSphereInput> {
-  static constexpr auto list = std::tuple{field<&SphereSphereInput::a>("a"), field<&SphereSphereInput::b>("b")};
-};
 
 template <>
 struct Query<SphereSphereInput> : QueryDefaults {

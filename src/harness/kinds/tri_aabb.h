@@ -2,20 +2,9 @@
 #pragma once
 
 #include "harness/kinds/query.h"
+#include "harness/model/inputs/tri_aabb.h"
 
 namespace cc::harness {
-
-struct TriAabbInput {
-  Triangle tri;
-  Aabb box;
-  friend bool operator==(const TriAabbInput&, const TriAabbInput&) = default;
-};
-
-/// Its fields, in the order of the case file and of the fuzz record.
-template <>
-struct Fields<TriAabbInput> {
-  static constexpr auto list = std::tuple{field<&TriAabbInput::tri>("triangle"), field<&TriAabbInput::box>("box")};
-};
 
 template <>
 struct Query<TriAabbInput> : QueryDefaults {

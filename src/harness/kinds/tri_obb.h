@@ -2,20 +2,9 @@
 #pragma once
 
 #include "harness/kinds/query.h"
+#include "harness/model/inputs/tri_obb.h"
 
 namespace cc::harness {
-
-struct TriObbInput {
-  Triangle tri;
-  Obb box;
-  friend bool operator==(const TriObbInput&, const TriObbInput&) = default;
-};
-
-/// Its fields, in the order of the case file and of the fuzz record.
-template <>
-struct Fields<TriObbInput> {
-  static constexpr auto list = std::tuple{field<&TriObbInput::tri>("triangle"), field<&TriObbInput::box>("box")};
-};
 
 template <>
 struct Query<TriObbInput> : QueryDefaults {

@@ -2,19 +2,9 @@
 #pragma once
 
 #include "harness/kinds/query.h"
+#include "harness/model/inputs/tri_tri.h"
 
 namespace cc::harness {
-
-struct TriTriInput {
-  Triangle a, b;
-  friend bool operator==(const TriTriInput&, const TriTriInput&) = default;
-};
-
-/// Its fields, in the order of the case file and of the fuzz record.
-template <>
-struct Fields<TriTriInput> {
-  static constexpr auto list = std::tuple{field<&TriTriInput::a>("a"), field<&TriTriInput::b>("b")};
-};
 
 template <>
 struct Query<TriTriInput> : QueryDefaults {

@@ -3,22 +3,10 @@
 #pragma once
 
 #include "harness/kinds/query.h"
+#include "harness/model/inputs/tri_tri_intersection.h"
 
 namespace cc::harness {
 
-struct TriTriIntersectionInput {
-  Triangle a, b;
-  friend bool operator==(const TriTriIntersectionInput&, const TriTriIntersectionInput&) = default;
-};
-
-/// Its fields, in the order of the case file and of the fuzz record.
-template <>
-struct Fields<TriTriIntersectionInput> {
-  static constexpr auto list =
-      std::tuple{field<&TriTriIntersectionInput::a>("a"), field<&TriTriIntersectionInput::b>("b")};
-};
-
-/// The answer: hit when the triangles meet, and the corners of a n b as params (x, y, z of each).
 template <>
 struct Query<TriTriIntersectionInput> : QueryDefaults {
   static constexpr Band band = {0, BandSides::exact, 0,

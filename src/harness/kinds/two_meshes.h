@@ -1,26 +1,12 @@
 // What the kinds on two placed meshes share (every colliding pair of triangles; the first one
-// found): their input, the same for both but for what is asked, and every piece of their units
-// but the answer's judgement and what only one of them has.
+// found): every piece of their units but the answer's judgement and what only one of them has.
+// Their input, the same for both but for what is asked, is model/inputs/two_meshes.h.
 #pragma once
 
 #include "harness/kinds/query.h"
+#include "harness/model/inputs/two_meshes.h"
 
 namespace cc::harness {
-
-/// Mesh a placed by pose_a against mesh b placed by pose_b, asked for every colliding pair of
-/// triangles (all_pairs) or for one (first_hit).
-template <CollisionMode Mode>
-struct TwoMeshesInput {
-  static constexpr CollisionMode mode = Mode;
-  MeshPair meshes;
-  friend bool operator==(const TwoMeshesInput&, const TwoMeshesInput&) = default;
-};
-
-/// Its fields: the pair's (a, pose_a, b, pose_b, library) at the top of the case.
-template <CollisionMode Mode>
-struct Fields<TwoMeshesInput<Mode>> {
-  static constexpr auto list = std::tuple{field<&TwoMeshesInput<Mode>::meshes>("")};
-};
 
 /// The band of the library's pairs of two placed meshes, whichever is asked.
 inline constexpr Band kTwoMeshesBand = {

@@ -44,7 +44,7 @@ struct Opinion {
   Status status = Status::not_applicable;
   Answer answer;
   std::string detail;  // why not applicable, or what failed
-  /// The party's band, declared with it (judging/party.h); case files do not store it, a party
+  /// The party's band, declared with it (model/party.h); case files do not store it, a party
   /// of today gives it.
   std::optional<Band> band = std::nullopt;
 };

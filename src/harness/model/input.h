@@ -1,5 +1,5 @@
 // The inputs of one query of each kind: a variant over the kinds' input types, in the order of
-// the registry (kinds/registry.h), so that an input's index is its QueryKind.
+// the registry (model/registry.h), so that an input's index is its QueryKind.
 #pragma once
 
 #include <optional>
@@ -33,11 +33,6 @@ using InputOf = std::variant_alternative_t<static_cast<std::size_t>(K), Input>;
 CC_FOR_EACH_QUERY_KIND(CC_QUERY_KIND_CHECK)
 #undef CC_QUERY_KIND_CHECK
 static_assert(std::variant_size_v<Input> == kAllQueryKinds.size(), "every input type is a kind's");
-
-// Every kind's unit has every piece (kinds/query.h).
-#define CC_QUERY_KIND_UNIT(name, Name) static_assert(QueryUnit<Name##Input>, "the unit of " #name " lacks a piece");
-CC_FOR_EACH_QUERY_KIND(CC_QUERY_KIND_UNIT)
-#undef CC_QUERY_KIND_UNIT
 
 inline QueryKind kind_of(const Input& input) { return static_cast<QueryKind>(input.index()); }
 

@@ -1,25 +1,18 @@
 #include "harness/model/library.h"
 
+#include "harness/model/kind_pieces.h"
 #include "harness/model/subject.h"
 
 namespace cc::harness {
 
 Answer ask_library(const Input& input) {
   if (const Subject* subject = subject_under_test()) return subject->ask(input);
-  return std::visit([]<class In>(const In& in) { return Query<In>::ask(in); }, input);
+  return pieces_of(kind_of(input)).ask(input);
 }
 
 std::vector<Opinion> library_alternatives(const Input& input) {
   if (subject_under_test() != nullptr) return {};  // a subject's own ways are its business
-  return std::visit(
-      []<class In>(const In& in) -> std::vector<Opinion> {
-        if constexpr (requires { Query<In>::library_parties(); }) {
-          return ask_parties(Query<In>::library_parties(), in);
-        } else {
-          return {};
-        }
-      },
-      input);
+  return pieces_of(kind_of(input)).library_alternatives(input);
 }
 
 }  // namespace cc::harness

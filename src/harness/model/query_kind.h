@@ -1,4 +1,4 @@
-// The kinds of query the harness checks, from the registry (kinds/registry.h). Their names are
+// The kinds of query the harness checks, from the registry (model/registry.h). Their names are
 // used everywhere: on the command line, in case files and as folder names under corpora/.
 #pragma once
 
@@ -6,7 +6,7 @@
 #include <optional>
 #include <string_view>
 
-#include "harness/kinds/registry.h"
+#include "harness/model/registry.h"
 
 namespace cc::harness {
 

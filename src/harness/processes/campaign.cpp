@@ -17,7 +17,7 @@
 
 #include "harness/formats/case_file.h"
 #include "harness/generation/generate.h"
-#include "harness/judging/party.h"
+#include "harness/model/party.h"
 #include "harness/model/library.h"
 #include "harness/model/subject.h"
 #include "harness/formats/write_all.h"

@@ -11,6 +11,7 @@
 #include "harness/shrinking/shrink_faces.h"
 #include "harness/shrinking/shrink_lists.h"
 #include "harness/shrinking/signature.h"
+#include "harness/model/kind_pieces.h"
 
 namespace cc::harness {
 namespace {
@@ -75,12 +76,8 @@ void collect(const T& value, const std::string& pointer, Targets& out) {
 
 Targets targets_of(const Input& input) {
   Targets t;
-  std::visit(
-      [&t]<class In>(const In& in) {
-        collect<In, Plain>(in, "", t);
-        t.first_hit = Query<In>::judged == Judged::first_pair;
-      },
-      input);
+  std::visit([&t]<class In>(const In& in) { collect<In, Plain>(in, "", t); }, input);
+  t.first_hit = pieces_of(kind_of(input)).judged == Judged::first_pair;
   return t;
 }
 

@@ -1,4 +1,4 @@
-#include "harness/judging/relation.h"
+#include "harness/model/relation.h"
 
 namespace cc::harness {
 

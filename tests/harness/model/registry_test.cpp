@@ -1,6 +1,6 @@
 // The registry of query kinds: the enumeration, the names, the Input variant and CMake's list of
-// kinds (the fuzz targets, the units' sources) all follow it, and every kind's unit has its pieces.
-#include "harness/kinds/registry.h"
+// kinds (the fuzz targets, the units' sources) all follow it.
+#include "harness/model/registry.h"
 
 #include <gtest/gtest.h>
 
@@ -8,7 +8,6 @@
 #include <sstream>
 
 #include "harness/model/input.h"
-#include "harness/model/library.h"
 
 namespace cc::harness {
 namespace {
@@ -36,22 +35,6 @@ TEST(Registry, CMakeReadsTheSameKinds) {
   for (std::string kind; std::getline(cmake, kind, ',');) listed.push_back(kind);
   ASSERT_EQ(listed.size(), kAllQueryKinds.size());
   for (std::size_t i = 0; i < listed.size(); ++i) EXPECT_EQ(listed[i], name(kAllQueryKinds[i]));
-}
-
-TEST(Registry, EveryUnitSaysWhatItIs) {
-  for (QueryKind kind : kAllQueryKinds) {
-    with_kind(kind, [kind]<class In>() {
-      EXPECT_FALSE(Query<In>::band.why.empty()) << name(kind);
-      EXPECT_FALSE(Query<In>::configurations().empty()) << name(kind);
-      if constexpr (requires { Query<In>::library_parties(); }) {
-        for (const Party<In>& p : Query<In>::library_parties()) {
-          EXPECT_TRUE(p.name.starts_with("library.")) << p.name;
-          EXPECT_EQ(p.band.width, Query<In>::band.width) << p.name;
-          EXPECT_EQ(p.band.sides, Query<In>::band.sides) << p.name;
-        }
-      }
-    });
-  }
 }
 
 }  // namespace
