@@ -1,0 +1,130 @@
+#include "oracle/exact/exact_distance.h"
+
+#include <array>
+#include <optional>
+#include <stdexcept>
+
+namespace cc::exact {
+namespace {
+
+using QMat = std::array<std::array<Rational, 3>, 3>;
+
+Rational det3(const QMat& m) {
+  return m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+         m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+}
+
+std::array<QVec3, 3> axes_of(const Obb& box) {
+  return {rational(box.axes.col[0]), rational(box.axes.col[1]), rational(box.axes.col[2])};
+}
+
+// Solves the n x n system m x = r (n <= 3) by Cramer's rule; nothing when it is singular.
+std::optional<std::array<Rational, 3>> solve(int n, QMat m, const std::array<Rational, 3>& r) {
+  for (int i = n; i < 3; ++i) {  // pad to 3 x 3 with the identity
+    for (int j = 0; j < 3; ++j) m[i][j] = m[j][i] = 0;
+    m[i][i] = 1;
+  }
+  const Rational det = det3(m);
+  if (det == 0) return std::nullopt;
+  std::array<Rational, 3> x;
+  for (int k = 0; k < n; ++k) {
+    QMat mk = m;
+    for (int i = 0; i < 3; ++i) mk[i][k] = i < n ? r[i] : Rational(0);
+    x[k] = det3(mk) / det;
+  }
+  return x;
+}
+
+}  // namespace
+
+QVec3 box_coordinates(const QVec3& point, const Obb& box) {
+  const std::array<QVec3, 3> a = axes_of(box);
+  const QVec3 d = point - rational(box.center);
+  QMat m;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) m[i][j] = a[j][i];
+  }
+  const auto q = solve(3, m, {d.x, d.y, d.z});
+  if (!q) throw std::domain_error("box_coordinates: the box's axes are dependent");
+  return {(*q)[0], (*q)[1], (*q)[2]};
+}
+
+bool in_box(const QVec3& point, const Obb& box) {
+  const QVec3 q = box_coordinates(point, box);
+  const QVec3 h = rational(box.half);
+  for (int i = 0; i < 3; ++i) {
+    if (abs(q[i]) > h[i]) return false;
+  }
+  return true;
+}
+
+Rational squared_distance_to_box(const QVec3& point, const Obb& box) {
+  const std::array<QVec3, 3> a = axes_of(box);
+  const QVec3 d = point - rational(box.center);
+  const QVec3 h = rational(box.half);
+  std::optional<Rational> best;
+  for (int code = 0; code < 27; ++code) {
+    // Coordinate i: 0 free, 1 at -half, 2 at +half.
+    std::array<int, 3> hold{code % 3, code / 3 % 3, code / 9};
+    QVec3 q;
+    QVec3 rest = d;  // d minus the held coordinates' part
+    std::array<int, 3> free{};
+    int n = 0;
+    for (int i = 0; i < 3; ++i) {
+      if (hold[i] == 0) {
+        free[n++] = i;
+      } else {
+        q[i] = hold[i] == 1 ? Rational(-h[i]) : h[i];
+        rest = rest - q[i] * a[i];
+      }
+    }
+    if (n > 0) {  // the normal equations of the free coordinates: a_F^T a_F q_F = a_F^T rest
+      QMat m;
+      std::array<Rational, 3> r;
+      for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) m[i][j] = dot(a[free[i]], a[free[j]]);
+        r[i] = dot(a[free[i]], rest);
+      }
+      const auto x = solve(n, m, r);
+      if (!x) throw std::domain_error("squared_distance_to_box: the box's axes are dependent");
+      bool inside = true;
+      for (int i = 0; i < n; ++i) {
+        q[free[i]] = (*x)[i];
+        inside = inside && abs((*x)[i]) <= h[free[i]];
+      }
+      if (!inside) continue;
+    }
+    const QVec3 gap = (q[0] * a[0] + q[1] * a[1]) + q[2] * a[2] - d;
+    const Rational squared = dot(gap, gap);
+    if (!best || squared < *best) best = squared;
+  }
+  return *best;  // the clamp of every coordinate (no coordinate free) is always in the box
+}
+
+Rational squared_depth_in_box(const QVec3& point, const Obb& box) {
+  const std::array<QVec3, 3> a = axes_of(box);
+  const QVec3 q = box_coordinates(point, box);
+  const QVec3 h = rational(box.half);
+  std::optional<Rational> best;
+  for (int i = 0; i < 3; ++i) {
+    // The faces q_i = +-h_i, whose planes are spanned by the other two axes: the distance to
+    // such a plane is (h_i -+ q_i) |a_i . n| / |n|, n the normal of the plane.
+    const QVec3 n = cross(a[(i + 1) % 3], a[(i + 2) % 3]);
+    const Rational along = dot(a[i], n);
+    const Rational scale = along * along / dot(n, n);
+    for (const Rational& room : {Rational(h[i] - q[i]), Rational(h[i] + q[i])}) {
+      const Rational squared = room * room * scale;
+      if (!best || squared < *best) best = squared;
+    }
+  }
+  return *best;
+}
+
+bool root_within(const Rational& square, const Rational& y, const Rational& e) {
+  const Rational lo = y - e, hi = y + e;
+  if (hi < 0) return false;
+  if (square > hi * hi) return false;
+  return lo <= 0 || square >= lo * lo;
+}
+
+}  // namespace cc::exact

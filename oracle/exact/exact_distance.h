@@ -1,0 +1,32 @@
+// Distances in exact rational arithmetic, as squares (no square root is ever rounded): a point to
+// an oriented box (the parallelepiped its axes span, as given), and a point inside one to its
+// boundary. The reference for the library's distance queries (collide/separation.h).
+#pragma once
+
+#include "collide/obb.h"
+#include "oracle/exact/rational.h"
+
+namespace cc::exact {
+
+/// The box's coordinates of a point: q with point = center + axes q (the axes as given, which
+/// need not be orthonormal; they must be independent, or this throws std::domain_error).
+QVec3 box_coordinates(const QVec3& point, const Obb& box);
+
+/// Whether the point lies in the closed box.
+bool in_box(const QVec3& point, const Obb& box);
+
+/// The squared distance from the point to the closed box: 0 inside. The least of |axes q - d|^2
+/// over the 27 ways to hold each coordinate of q at -half, at +half or free, the free ones
+/// solving their normal equations, among those that lie in the box.
+Rational squared_distance_to_box(const QVec3& point, const Obb& box);
+
+/// The squared distance from a point of the closed box to the box's boundary: the least squared
+/// distance to the planes of its six faces (each spanned by two axes). 0 on the boundary, and
+/// for a flat box.
+Rational squared_depth_in_box(const QVec3& point, const Obb& box);
+
+/// Whether |x - y| <= e where x^2 = square (x >= 0) and y, e are rationals: x lies in
+/// [y - e, y + e], decided on squares.
+bool root_within(const Rational& square, const Rational& y, const Rational& e);
+
+}  // namespace cc::exact

@@ -1,0 +1,28 @@
+// The answer of a distance query: how far apart two shapes are, signed, and a pair of points that
+// realises it, each with a certified bound on its error.
+#pragma once
+
+#include "collide/vec3.h"
+
+namespace cc {
+
+/// The signed distance between two closed shapes a and b, and a pair of witness points.
+///  - distance > 0: the shapes are apart by that much (the length of the shortest segment
+///    between them); distance < 0: they overlap, and -distance is the penetration depth (the
+///    length of the shortest translation of b that separates them); 0: they touch.
+///  - on_a, on_b: a closest pair when apart (on_b - on_a is the shortest segment); when they
+///    overlap, a point of a's boundary and a point of b's with on_a - on_b the shortest
+///    separating translation of b. Where such pairs are not unique, any of them.
+///  - |distance - the exact signed distance| <= distance_error, and each witness lies within
+///    point_error of its shape's boundary (Euclidean), so | |on_b - on_a| - |exact| | <=
+///    2 point_error. Both bounds are certified for inputs in the query's domain.
+///  - Outside the domain (NaN or infinite input, a negative radius or half extent): distance
+///    NaN, the points NaN, both errors infinite.
+struct Separation {
+  double distance = 0;
+  Vec3 on_a, on_b;
+  double distance_error = 0;
+  double point_error = 0;
+};
+
+}  // namespace cc

@@ -1,0 +1,41 @@
+// The bounds of distance_sphere_sphere and distance_sphere_obb (sphere_distance.h), term by term.
+#pragma once
+
+#include "collide/fp.h"
+#include "collide/obb.h"
+
+namespace cc::bounds {
+
+/// distance_sphere_sphere, with n the computed |d| (d = b.center - a.center) and reach the
+/// computed a.radius + b.radius.
+struct SphereDistanceBound {
+  double n, reach, center_magnitude, radius;
+  /// d's components round once (u |d|), the sum of squares 3u and the square root u/2 more of
+  /// |d|, the reach u of itself, the difference u of both: about 5.1u |d| + 2.1u reach.
+  double distance() const { return 8 * fp::u * (n + reach) + fp::subnormal_slack; }
+  /// The unit direction d/n within 6u of its length; a witness c + r w rounds u of r w and u of
+  /// the sum per coordinate: within 10u r + 2u |c|_inf of the sphere's boundary.
+  double point() const { return 16 * fp::u * (center_magnitude + radius) + fp::subnormal_slack; }
+};
+
+/// distance_sphere_obb, with offset = |d|_1 (d = a.center - b.center), half = |b.half|_1.
+struct SphereObbDistanceBound {
+  double offset, half, radius, center_magnitude;
+  /// The box's coordinates of d (one rounding of d and a three-term dot: 4u of |d| each), the
+  /// difference from the clamped point or the face (u), its length (2.6u) and the radius' (u):
+  /// within 7.2u |d| + 4.6u (|d| + |half|) + u r.
+  double rounding() const { return 16 * fp::u * (offset + half + radius); }
+  /// Axes orthonormal to within eta: the coordinates d's transpose product gives differ from
+  /// its coordinates in the (skew) frame by 3 eta |d|_inf each, and lengths measured in the
+  /// frame differ from the world's by 1.5 eta: within 7 eta (|d|_1 + |half|_1).
+  double frame() const { return 8 * kObbOrthonormalTolerance * (offset + half); }
+  double distance() const { return rounding() + frame() + fp::subnormal_slack; }
+  /// The box's witness c + A q rounds 3u of |q| and u of the sum per coordinate; the ball's
+  /// s - r w as in the spheres' bound, with w's length within 1.5 eta + 6u of 1.
+  double point() const {
+    return 16 * fp::u * (center_magnitude + offset + half + radius) +
+           4 * kObbOrthonormalTolerance * (radius + offset + half) + fp::subnormal_slack;
+  }
+};
+
+}  // namespace cc::bounds
