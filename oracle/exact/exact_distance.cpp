@@ -120,6 +120,42 @@ Rational squared_depth_in_box(const QVec3& point, const Obb& box) {
   return *best;
 }
 
+Rational squared_distance_to_segment(const QVec3& point, const Segment& segment) {
+  const QVec3 a = rational(segment.a), d = rational(segment.b) - a;
+  const Rational dd = dot(d, d);
+  Rational t = 0;
+  if (dd != 0) {
+    t = dot(point - a, d) / dd;
+    if (t < 0) t = 0;
+    if (t > 1) t = 1;
+  }
+  const QVec3 gap = point - (a + t * d);
+  return dot(gap, gap);
+}
+
+Rational squared_distance_between_segments(const Segment& a, const Segment& b) {
+  Rational best = squared_distance_to_segment(rational(a.a), b);
+  for (const Rational& c : {squared_distance_to_segment(rational(a.b), b), squared_distance_to_segment(rational(b.a), a),
+                            squared_distance_to_segment(rational(b.b), a)}) {
+    if (c < best) best = c;
+  }
+  // The interior pair: a.a + s da - (b.a + t db) perpendicular to da and db.
+  const QVec3 pa = rational(a.a), pb = rational(b.a);
+  const QVec3 da = rational(a.b) - pa, db = rational(b.b) - pb, r = pa - pb;
+  const Rational aa = dot(da, da), bb = dot(db, db), ab = dot(da, db);
+  const Rational denom = aa * bb - ab * ab;
+  if (denom != 0) {
+    const Rational c = dot(da, r), f = dot(db, r);
+    const Rational s = (ab * f - c * bb) / denom, t = (aa * f - ab * c) / denom;
+    if (s >= 0 && s <= 1 && t >= 0 && t <= 1) {
+      const QVec3 gap = (pa + s * da) - (pb + t * db);
+      const Rational g = dot(gap, gap);
+      if (g < best) best = g;
+    }
+  }
+  return best;
+}
+
 bool root_within(const Rational& square, const Rational& y, const Rational& e) {
   const Rational lo = y - e, hi = y + e;
   if (hi < 0) return false;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "collide/obb.h"
+#include "collide/segment.h"
 #include "oracle/exact/rational.h"
 
 namespace cc::exact {
@@ -24,6 +25,14 @@ Rational squared_distance_to_box(const QVec3& point, const Obb& box);
 /// distance to the planes of its six faces (each spanned by two axes). 0 on the boundary, and
 /// for a flat box.
 Rational squared_depth_in_box(const QVec3& point, const Obb& box);
+
+/// The squared distance from a point to a closed segment (a point when its ends coincide).
+Rational squared_distance_to_segment(const QVec3& point, const Segment& segment);
+
+/// The squared distance between two closed segments: the least of the four ends against the
+/// other segment and, when the segments are not parallel, of the pair of interior points whose
+/// difference is perpendicular to both, if that pair lies on both.
+Rational squared_distance_between_segments(const Segment& a, const Segment& b);
 
 /// Whether |x - y| <= e where x^2 = square (x >= 0) and y, e are rationals: x lies in
 /// [y - e, y + e], decided on squares.
