@@ -2,6 +2,7 @@
 
 #include <array>
 #include <optional>
+#include <utility>
 #include <stdexcept>
 
 namespace cc::exact {
@@ -151,6 +152,70 @@ Rational squared_distance_between_segments(const Segment& a, const Segment& b) {
       const QVec3 gap = (pa + s * da) - (pb + t * db);
       const Rational g = dot(gap, gap);
       if (g < best) best = g;
+    }
+  }
+  return best;
+}
+
+namespace {
+
+// The foot of p on t's plane and whether it lies in t (t not degenerate: a nonzero normal).
+bool foot_in_triangle(const QVec3& p, const std::array<QVec3, 3>& t, const QVec3& n, QVec3& foot) {
+  foot = p - (dot(p - t[0], n) / dot(n, n)) * n;
+  for (int i = 0; i < 3; ++i) {
+    if (dot(cross(t[(i + 1) % 3] - t[i], foot - t[i]), n) < 0) return false;
+  }
+  return true;
+}
+
+std::array<QVec3, 3> rational_vertices(const Triangle& t) {
+  return {rational(t.v[0]), rational(t.v[1]), rational(t.v[2])};
+}
+
+}  // namespace
+
+Rational squared_distance_to_triangle(const QVec3& point, const Triangle& triangle) {
+  const std::array<QVec3, 3> t = rational_vertices(triangle);
+  const QVec3 n = cross(t[1] - t[0], t[2] - t[0]);
+  QVec3 foot;
+  if (!is_zero(n) && foot_in_triangle(point, t, n, foot)) {
+    const QVec3 gap = point - foot;
+    return dot(gap, gap);
+  }
+  Rational best = squared_distance_to_segment(point, {triangle.v[0], triangle.v[1]});
+  for (int i = 1; i < 3; ++i) {
+    const Rational d = squared_distance_to_segment(point, {triangle.v[i], triangle.v[(i + 1) % 3]});
+    if (d < best) best = d;
+  }
+  return best;
+}
+
+Rational squared_distance_between_triangles(const Triangle& a, const Triangle& b) {
+  // An edge of one meeting the other (not degenerate) triangle: its endpoints on both sides of
+  // the plane or on it, and the crossing in the triangle. (An edge in the plane meets the
+  // triangle through an edge or a vertex, which the pairs below find at 0.)
+  for (const auto& [from, to] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
+    const std::array<QVec3, 3> t = rational_vertices(*to);
+    const QVec3 n = cross(t[1] - t[0], t[2] - t[0]);
+    if (is_zero(n)) continue;
+    for (int i = 0; i < 3; ++i) {
+      const QVec3 p = rational(from->v[i]), q = rational(from->v[(i + 1) % 3]);
+      const Rational dp = dot(p - t[0], n), dq = dot(q - t[0], n);
+      if ((dp > 0 && dq > 0) || (dp < 0 && dq < 0) || dp == dq) continue;
+      const QVec3 at = p + Rational(dp / (dp - dq)) * (q - p);
+      QVec3 foot;
+      if (foot_in_triangle(at, t, n, foot)) return 0;
+    }
+  }
+  Rational best = squared_distance_to_triangle(rational(a.v[0]), b);
+  for (int i = 0; i < 3; ++i) {
+    for (const Rational& d : {squared_distance_to_triangle(rational(a.v[i]), b),
+                              squared_distance_to_triangle(rational(b.v[i]), a)}) {
+      if (d < best) best = d;
+    }
+    for (int j = 0; j < 3; ++j) {
+      const Rational d = squared_distance_between_segments({a.v[i], a.v[(i + 1) % 3]}, {b.v[j], b.v[(j + 1) % 3]});
+      if (d < best) best = d;
     }
   }
   return best;

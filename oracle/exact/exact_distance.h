@@ -5,6 +5,7 @@
 
 #include "collide/obb.h"
 #include "collide/segment.h"
+#include "collide/triangle.h"
 #include "oracle/exact/rational.h"
 
 namespace cc::exact {
@@ -33,6 +34,15 @@ Rational squared_distance_to_segment(const QVec3& point, const Segment& segment)
 /// other segment and, when the segments are not parallel, of the pair of interior points whose
 /// difference is perpendicular to both, if that pair lies on both.
 Rational squared_distance_between_segments(const Segment& a, const Segment& b);
+
+/// The squared distance from a point to a closed triangle (degenerate: the segment or point it
+/// is): the foot on its plane when that lies in it, else the nearest of its edges.
+Rational squared_distance_to_triangle(const QVec3& point, const Triangle& triangle);
+
+/// The squared distance between two closed triangles: 0 when an edge of either meets the other
+/// (a triangle that is not degenerate), else the least over each vertex against the other
+/// triangle and each pair of edges.
+Rational squared_distance_between_triangles(const Triangle& a, const Triangle& b);
 
 /// Whether |x - y| <= e where x^2 = square (x >= 0) and y, e are rationals: x lies in
 /// [y - e, y + e], decided on squares.

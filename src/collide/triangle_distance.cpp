@@ -1,0 +1,135 @@
+#include "collide/triangle_distance.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "collide/fp.h"
+#include "collide/segment_distance.h"
+
+namespace cc {
+namespace {
+
+constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+Vec3 scaled(const Vec3& v, int e) { return {fp::scale2(v.x, -e), fp::scale2(v.y, -e), fp::scale2(v.z, -e)}; }
+
+// |v|, on v scaled by a power of two: within 2.6u.
+double length(const Vec3& v) {
+  const double m = max_abs(v);
+  if (m == 0) return 0;
+  const int e = fp::exponent_of(m);
+  const Vec3 s = scaled(v, e);
+  return fp::scale2(std::sqrt(fp::sum3(s.x * s.x, s.y * s.y, s.z * s.z)), e);
+}
+
+// A candidate pair: a point of a, a point of b, and their distance as computed.
+struct Pair {
+  Vec3 on_a, on_b;
+  double distance = kInf;
+};
+
+void keep_nearer(Pair& best, const Vec3& on_a, const Vec3& on_b) {
+  const double d = length(on_b - on_a);
+  if (d < best.distance) best = {on_a, on_b, d};
+}
+
+// The foot of p on the plane of t, when it lies in t (t not degenerate): p's nearest point of t
+// is then the foot, else on t's edges. The normal is scaled (a direction only).
+bool foot_in(const Vec3& p, const Triangle& t, Vec3& foot) {
+  const Vec3 n = unit_scaled(cross(t.v[1] - t.v[0], t.v[2] - t.v[0]));
+  const double nn = dot(n, n);
+  if (!(nn > 0)) return false;
+  foot = p - (dot(p - t.v[0], n) / nn) * n;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3& from = t.v[i];
+    const Vec3& to = t.v[(i + 1) % 3];
+    if (dot(cross(to - from, foot - from), n) < 0) return false;
+  }
+  return true;
+}
+
+// Where the segment from p to q crosses the plane of t inside t, if it does (t not degenerate,
+// the segment not in the plane).
+bool crossing(const Vec3& p, const Vec3& q, const Triangle& t, Vec3& at) {
+  const Vec3 n = unit_scaled(cross(t.v[1] - t.v[0], t.v[2] - t.v[0]));
+  if (!(dot(n, n) > 0)) return false;
+  const double dp = dot(p - t.v[0], n), dq = dot(q - t.v[0], n);
+  if ((dp > 0 && dq > 0) || (dp < 0 && dq < 0) || dp == dq) return false;
+  const double s = std::clamp(dp / (dp - dq), 0.0, 1.0);
+  at = p + s * (q - p);
+  for (int i = 0; i < 3; ++i) {
+    const Vec3& from = t.v[i];
+    const Vec3& to = t.v[(i + 1) % 3];
+    if (dot(cross(to - from, at - from), n) < 0) return false;
+  }
+  return true;
+}
+
+// The candidates for a closest pair with a point of `from` taken alone: its vertices' feet on
+// `to` and its edges' crossings of `to`. `swapped`: `from` is b.
+void vertices_and_crossings(const Triangle& from, const Triangle& to, bool swapped, Pair& best) {
+  const auto keep = [&](const Vec3& on_from, const Vec3& on_to) {
+    swapped ? keep_nearer(best, on_to, on_from) : keep_nearer(best, on_from, on_to);
+  };
+  for (int i = 0; i < 3; ++i) {
+    Vec3 foot;
+    if (foot_in(from.v[i], to, foot)) keep(from.v[i], foot);
+    // A crossing is on from's edge, and (nearly) in `to`: paired with its foot there. Where the
+    // edge is nearly parallel to the plane the crossing is ill-conditioned, but the pair is
+    // still a point of each triangle, merely not the closest; the edges' pairs cover that case.
+    Vec3 at, on_to;
+    if (crossing(from.v[i], from.v[(i + 1) % 3], to, at) && foot_in(at, to, on_to)) keep(at, on_to);
+  }
+}
+
+}  // namespace
+
+double triangle_gap_along(const Triangle& a, const Triangle& b, const Vec3& direction) {
+  // As segment_gap_along (segment_distance.cpp), over three vertices a side, measured from
+  // a.v[0]: each side's extreme is one of three dots (4u m R each over the length), the rest as
+  // there: 17.2u R, R the largest offset's 1-norm.
+  const Vec3 unit = unit_scaled(direction);
+  const double scale = length(unit);
+  if (!(scale > 0) || !std::isfinite(scale)) return 0;
+  double reach = 0, high_a = -kInf, low_b = kInf;
+  for (int i = 0; i < 3; ++i) {
+    const Vec3 ea = a.v[i] - a.v[0], eb = b.v[i] - a.v[0];
+    reach = std::max({reach, norm1(ea), norm1(eb)});
+    high_a = std::max(high_a, dot(unit, ea));
+    low_b = std::min(low_b, dot(unit, eb));
+  }
+  return std::max(0.0, (low_b - high_a) / scale - 24 * fp::u * reach - fp::subnormal_slack);
+}
+
+Separation distance_triangle_triangle(const Triangle& a, const Triangle& b) {
+  if (!finite(a) || !finite(b)) {
+    const Vec3 nan{kNan, kNan, kNan};
+    return {kNan, nan, nan, kInf, kInf};
+  }
+  Pair best;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) {
+      const Separation s =
+          distance_segment_segment({a.v[i], a.v[(i + 1) % 3]}, {b.v[j], b.v[(j + 1) % 3]});
+      keep_nearer(best, s.on_a, s.on_b);
+    }
+  }
+  vertices_and_crossings(a, b, false, best);
+  vertices_and_crossings(b, a, true, best);
+  // Each witness: an edge's point (segment_distance.h, 16u of the largest coordinate M), a foot
+  // p - (p - v0).n / n.n n (the difference u of 2M, the dot and quotient 5u, the product and
+  // difference 2u of 2M: within 20uM per coordinate of a point in the plane, and the sign tests
+  // let it stray from t by the rounding of its own edges' products, a few u of M), or a
+  // crossing (as a segment's point): 32u M in length.
+  double magnitude = 0;
+  for (int i = 0; i < 3; ++i) magnitude = std::max({magnitude, max_abs(a.v[i]), max_abs(b.v[i])});
+  const double point_error = 32 * fp::u * magnitude + fp::subnormal_slack;
+  const double d = best.distance;
+  const double upper = d + 2 * point_error + 4 * fp::u * d;
+  const double lower = d > 0 ? triangle_gap_along(a, b, best.on_b - best.on_a) : 0;
+  return {d, best.on_a, best.on_b, std::max(upper - d, d - lower), point_error};
+}
+
+}  // namespace cc

@@ -1,0 +1,26 @@
+// The distance between two triangles, with witness points (separation.h).
+#pragma once
+
+#include "collide/separation.h"
+#include "collide/triangle.h"
+
+namespace cc {
+
+/// The distance between two closed triangles (never negative: triangles have no inside; 0 where
+/// they meet) and a closest pair, on_a on a and on_b on b. Where closest pairs are not unique
+/// (parallel faces or edges), any of them. Degenerate triangles are the segments or points they
+/// are.
+///  - The witnesses are the closest of the candidates a closest pair is among: each vertex
+///    against the other triangle, each pair of edges, and each edge's crossing of the other
+///    triangle. The bound is certified after the fact, as for segments (segment_distance.h): the
+///    witnesses' distance above, the gap between the triangles' projections on the witnesses'
+///    direction below.
+///  - Domain: finite inputs of magnitude at most 2^500; outside it, NaN (separation.h).
+///    point_error: 32u of the largest vertex coordinate, plus the subnormal slack.
+Separation distance_triangle_triangle(const Triangle& a, const Triangle& b);
+
+/// A certified lower bound on the distance between a and b from one direction: the gap between
+/// their projections on it over its length, less its rounding bound; 0 where they overlap on it.
+double triangle_gap_along(const Triangle& a, const Triangle& b, const Vec3& direction);
+
+}  // namespace cc
