@@ -10,6 +10,11 @@
 //   tri_tri        fcl::detail::Intersect<double>::intersect_Triangle
 //   tri_tri_intersection  the same with its contact output (what FCL's mesh traversal calls
 //                  when contacts are asked for): the library's corners against FCL's contacts
+//   distance_sphere_sphere  fcl::detail::sphereSphereDistance, with nearest points
+//   distance_sphere_obb     fcl::detail::sphereBoxDistance, with nearest points (FCL gives -1
+//                  for overlapping shapes; the library their signed distance and witnesses)
+//   distance_tri_tri        fcl::detail::TriangleDistance::triDistance, with nearest points
+// A distance row counts the pairs nearer than 0.1, so that the answers are used.
 #include <benchmark/benchmark.h>
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/sphere.h>
@@ -18,7 +23,9 @@
 #include <fcl/math/bv/kDOP.h>
 #include <fcl/math/bv/utility.h>
 #include <fcl/narrowphase/detail/gjk_solver_libccd.h>
+#include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_box.h>
 #include <fcl/narrowphase/detail/primitive_shape_algorithm/sphere_sphere.h>
+#include <fcl/narrowphase/detail/primitive_shape_algorithm/triangle_distance.h>
 #include <fcl/narrowphase/detail/traversal/collision/intersect.h>
 
 #include <memory>
@@ -27,7 +34,9 @@
 #include "bench/inputs.h"
 #include "bench/suites.h"
 #include "collide/kdop.h"
+#include "collide/sphere_distance.h"
 #include "collide/triangle_box.h"
+#include "collide/triangle_distance.h"
 #include "collide/triangle_intersection.h"
 #include "collide/triangle_triangle.h"
 #include "oracle/fcl/convert.h"
@@ -133,11 +142,60 @@ void register_kdop(Mix mix) {
       [](const FclCloud& c, int) { return fcl_fit<K>(c).dist(K / 2 - 1) < 0; });
 }
 
+// The distance rows: the library's signed distance with witnesses against FCL's routines for
+// the same pairs (sphere_pairs, obb_pairs and triangle_pairs; the ball-box pairs take the balls
+// of one and the boxes of the other).
+void register_distance_benchmarks(Mix mix) {
+  constexpr double kNear = 0.1;
+  // (Names built by append: GCC 12 warns falsely, -Wrestrict, on "literal" + std::string here.)
+  const auto name = [mix](const char* row) { return std::string(row).append("/").append(to_string(mix)); };
+  {
+    auto p = std::make_shared<const Pairs<Sphere, Sphere>>(sphere_pairs(mix));
+    register_pair(
+        name("distance_sphere_sphere"), p,
+        [](const Sphere& a, const Sphere& b) { return distance_sphere_sphere(a, b).distance < kNear; },
+        std::shared_ptr<const Pairs<FclSphere, FclSphere>>(converted(*p, fcl_sphere, fcl_sphere)),
+        [](const FclSphere& a, const FclSphere& b) {
+          double d = 0;
+          fcl::Vector3d pa, pb;
+          fcl::detail::sphereSphereDistance<double>(a.shape, a.tf, b.shape, b.tf, &d, &pa, &pb);
+          return d < kNear;
+        });
+  }
+  {
+    const Pairs<Sphere, Sphere> spheres = sphere_pairs(mix);
+    auto p = std::make_shared<Pairs<Sphere, Obb>>();
+    p->a = spheres.a, p->b = obb_pairs(mix).b;
+    register_pair(
+        name("distance_sphere_obb"), std::shared_ptr<const Pairs<Sphere, Obb>>(p),
+        [](const Sphere& a, const Obb& b) { return distance_sphere_obb(a, b).distance < kNear; },
+        std::shared_ptr<const Pairs<FclSphere, FclBox>>(converted(*p, fcl_sphere, fcl_box)),
+        [](const FclSphere& a, const FclBox& b) {
+          double d = 0;
+          fcl::Vector3d pa, pb;
+          fcl::detail::sphereBoxDistance<double>(a.shape, a.tf, b.box, b.tf, &d, &pa, &pb);
+          return d < kNear;
+        });
+  }
+  {
+    auto p = std::make_shared<const Pairs<Triangle, Triangle>>(triangle_pairs(mix));
+    register_pair(
+        name("distance_tri_tri"), p,
+        [](const Triangle& a, const Triangle& b) { return distance_triangle_triangle(a, b).distance < kNear; },
+        std::shared_ptr<const Pairs<FclTriangle, FclTriangle>>(converted(*p, fcl_triangle, fcl_triangle)),
+        [](const FclTriangle& a, const FclTriangle& b) {
+          fcl::Vector3d pa, pb;
+          return fcl::detail::TriangleDistance<double>::triDistance(a.v[0], a.v[1], a.v[2], b.v[0], b.v[1], b.v[2],
+                                                                    pa, pb) < kNear;
+        });
+  }
+}
+
 }  // namespace
 
 void register_primitive_benchmarks() {
   for (Mix mix : {Mix::mixed, Mix::near}) {
-    const std::string m = "/" + std::string(to_string(mix));
+    const std::string m = std::string("/").append(to_string(mix));
     {
       auto p = std::make_shared<const Pairs<Aabb, Aabb>>(aabb_pairs(mix));
       register_pair("aabb_aabb" + m, p, test_aabb_aabb, std::shared_ptr<const Pairs<fcl::AABBd, fcl::AABBd>>(converted(*p, fcl_aabb, fcl_aabb)),
@@ -185,6 +243,7 @@ void register_primitive_benchmarks() {
                                                                       contacts, &count, &depth, &normal);
           });
     }
+    register_distance_benchmarks(mix);
     register_kdop<16>(mix);
     register_kdop<18>(mix);
     register_kdop<24>(mix);

@@ -24,12 +24,12 @@ double length(const Vec3& v) {
   return fp::scale2(std::sqrt(fp::sum3(s.x * s.x, s.y * s.y, s.z * s.z)), e);
 }
 
-// The parameters (s on a, t on b) of a nearly closest pair: the minimiser of |a(s) - b(t)|^2
-// over [0, 1]^2, as computed in floating point (on a tie or near-parallel, some pair on the
-// flat part of the distance; the bound does not rely on it being the best). The parameters do
-// not change with scale, so the differences are scaled by one power of two that brings the
-// largest coordinate into [1, 2): the products of four of them neither overflow nor underflow.
-std::pair<double, double> closest_parameters(const Segment& a, const Segment& b) {
+}  // namespace
+
+// The parameters do not change with scale, so the differences are scaled by one power of two
+// that brings the largest coordinate into [1, 2): the products of four of them neither overflow
+// nor underflow.
+std::pair<double, double> closest_segment_parameters(const Segment& a, const Segment& b) {
   Vec3 da = a.b - a.a, db = b.b - b.a, r = a.a - b.a;
   const double m = std::max({max_abs(da), max_abs(db), max_abs(r)});
   if (m > 0) {
@@ -58,8 +58,6 @@ std::pair<double, double> closest_parameters(const Segment& a, const Segment& b)
   return {s, t};
 }
 
-}  // namespace
-
 double segment_gap_along(const Segment& a, const Segment& b, const Vec3& direction) {
   // Measured from a.a, with the direction scaled so that its largest component m is in [1, 2)
   // (so its length is at least m), and R the largest offset's 1-norm: each offset rounds u and
@@ -81,7 +79,7 @@ Separation distance_segment_segment(const Segment& a, const Segment& b) {
     const Vec3 nan{kNan, kNan, kNan};
     return {kNan, nan, nan, kInf, kInf};
   }
-  const auto [s, t] = closest_parameters(a, b);
+  const auto [s, t] = closest_segment_parameters(a, b);
   const Vec3 on_a = a.a + s * (a.b - a.a), on_b = b.a + t * (b.b - b.a);
   // Each witness, per coordinate with M the largest endpoint coordinate: the difference of the
   // ends rounds u of 2M, the product u of 2M and carries the difference's error (2uM), the sum u

@@ -1,6 +1,8 @@
 // The distance between two segments, with witness points (separation.h).
 #pragma once
 
+#include <utility>
+
 #include "collide/segment.h"
 #include "collide/separation.h"
 
@@ -16,6 +18,12 @@ namespace cc {
 ///  - Domain: finite inputs of magnitude at most 2^500; outside it, NaN (separation.h).
 ///    point_error: 16u of the largest endpoint coordinate, plus the subnormal slack.
 Separation distance_segment_segment(const Segment& a, const Segment& b);
+
+/// The parameters (s on a, t on b, both in [0, 1]) of a nearly closest pair a.a + s (a.b - a.a),
+/// b.a + t (b.b - b.a): the minimiser of their distance as computed in floating point. Parallel
+/// segments: some pair on the flat part of the distance. A point segment takes 0. Nothing is
+/// certified: distance_segment_segment certifies the pair it takes from here.
+std::pair<double, double> closest_segment_parameters(const Segment& a, const Segment& b);
 
 /// A certified lower bound on the distance between a and b from one direction: the gap between
 /// their projections on it (b's least minus a's greatest) over its length, less its rounding

@@ -24,21 +24,28 @@ double length(const Vec3& v) {
   return fp::scale2(std::sqrt(fp::sum3(s.x * s.x, s.y * s.y, s.z * s.z)), e);
 }
 
-// A candidate pair: a point of a, a point of b, and their distance as computed.
-struct Pair {
+// The best candidate pair so far: a point of a, a point of b, and their squared distance as
+// computed on the differences scaled by 2^-exponent (the pair's extent brought near 1, so the
+// squares neither overflow nor, but for pairs far nearer than the extent, underflow). Only the
+// choice depends on it: the bound is certified for whichever pair is chosen.
+struct Best {
+  int exponent = 0;
   Vec3 on_a, on_b;
-  double distance = kInf;
+  double square = kInf;
+
+  void keep_nearer(const Vec3& a, const Vec3& b) {
+    const Vec3 d = scaled(b - a, exponent);
+    const double sq = dot(d, d);
+    if (sq < square) on_a = a, on_b = b, square = sq;
+  }
 };
 
-void keep_nearer(Pair& best, const Vec3& on_a, const Vec3& on_b) {
-  const double d = length(on_b - on_a);
-  if (d < best.distance) best = {on_a, on_b, d};
-}
+// A triangle's normal, scaled (a direction only); zero for a degenerate triangle.
+Vec3 normal_of(const Triangle& t) { return unit_scaled(cross(t.v[1] - t.v[0], t.v[2] - t.v[0])); }
 
-// The foot of p on the plane of t, when it lies in t (t not degenerate): p's nearest point of t
-// is then the foot, else on t's edges. The normal is scaled (a direction only).
-bool foot_in(const Vec3& p, const Triangle& t, Vec3& foot) {
-  const Vec3 n = unit_scaled(cross(t.v[1] - t.v[0], t.v[2] - t.v[0]));
+// The foot of p on the plane of t (n its normal_of), when it lies in t (t not degenerate): p's
+// nearest point of t is then the foot, else on t's edges.
+bool foot_in(const Vec3& p, const Triangle& t, const Vec3& n, Vec3& foot) {
   const double nn = dot(n, n);
   if (!(nn > 0)) return false;
   foot = p - (dot(p - t.v[0], n) / nn) * n;
@@ -52,8 +59,7 @@ bool foot_in(const Vec3& p, const Triangle& t, Vec3& foot) {
 
 // Where the segment from p to q crosses the plane of t inside t, if it does (t not degenerate,
 // the segment not in the plane).
-bool crossing(const Vec3& p, const Vec3& q, const Triangle& t, Vec3& at) {
-  const Vec3 n = unit_scaled(cross(t.v[1] - t.v[0], t.v[2] - t.v[0]));
+bool crossing(const Vec3& p, const Vec3& q, const Triangle& t, const Vec3& n, Vec3& at) {
   if (!(dot(n, n) > 0)) return false;
   const double dp = dot(p - t.v[0], n), dq = dot(q - t.v[0], n);
   if ((dp > 0 && dq > 0) || (dp < 0 && dq < 0) || dp == dq) return false;
@@ -69,18 +75,20 @@ bool crossing(const Vec3& p, const Vec3& q, const Triangle& t, Vec3& at) {
 
 // The candidates for a closest pair with a point of `from` taken alone: its vertices' feet on
 // `to` and its edges' crossings of `to`. `swapped`: `from` is b.
-void vertices_and_crossings(const Triangle& from, const Triangle& to, bool swapped, Pair& best) {
+void vertices_and_crossings(const Triangle& from, const Triangle& to, bool swapped, Best& best) {
   const auto keep = [&](const Vec3& on_from, const Vec3& on_to) {
-    swapped ? keep_nearer(best, on_to, on_from) : keep_nearer(best, on_from, on_to);
+    swapped ? best.keep_nearer(on_to, on_from) : best.keep_nearer(on_from, on_to);
   };
+  const Vec3 n = normal_of(to);
+  if (!(dot(n, n) > 0)) return;  // degenerate: its edges' pairs are its candidates
   for (int i = 0; i < 3; ++i) {
     Vec3 foot;
-    if (foot_in(from.v[i], to, foot)) keep(from.v[i], foot);
+    if (foot_in(from.v[i], to, n, foot)) keep(from.v[i], foot);
     // A crossing is on from's edge, and (nearly) in `to`: paired with its foot there. Where the
     // edge is nearly parallel to the plane the crossing is ill-conditioned, but the pair is
     // still a point of each triangle, merely not the closest; the edges' pairs cover that case.
     Vec3 at, on_to;
-    if (crossing(from.v[i], from.v[(i + 1) % 3], to, at) && foot_in(at, to, on_to)) keep(at, on_to);
+    if (crossing(from.v[i], from.v[(i + 1) % 3], to, n, at) && foot_in(at, to, n, on_to)) keep(at, on_to);
   }
 }
 
@@ -108,12 +116,16 @@ Separation distance_triangle_triangle(const Triangle& a, const Triangle& b) {
     const Vec3 nan{kNan, kNan, kNan};
     return {kNan, nan, nan, kInf, kInf};
   }
-  Pair best;
+  Best best;
+  double extent = 0;
+  for (int i = 0; i < 3; ++i) extent = std::max({extent, max_abs(a.v[i] - a.v[0]), max_abs(b.v[i] - a.v[0])});
+  best.exponent = extent > 0 ? fp::exponent_of(extent) : 0;
   for (int i = 0; i < 3; ++i) {
+    const Segment ea{a.v[i], a.v[(i + 1) % 3]};
     for (int j = 0; j < 3; ++j) {
-      const Separation s =
-          distance_segment_segment({a.v[i], a.v[(i + 1) % 3]}, {b.v[j], b.v[(j + 1) % 3]});
-      keep_nearer(best, s.on_a, s.on_b);
+      const Segment eb{b.v[j], b.v[(j + 1) % 3]};
+      const auto [s, t] = closest_segment_parameters(ea, eb);
+      best.keep_nearer(ea.a + s * (ea.b - ea.a), eb.a + t * (eb.b - eb.a));
     }
   }
   vertices_and_crossings(a, b, false, best);
@@ -126,7 +138,7 @@ Separation distance_triangle_triangle(const Triangle& a, const Triangle& b) {
   double magnitude = 0;
   for (int i = 0; i < 3; ++i) magnitude = std::max({magnitude, max_abs(a.v[i]), max_abs(b.v[i])});
   const double point_error = 32 * fp::u * magnitude + fp::subnormal_slack;
-  const double d = best.distance;
+  const double d = length(best.on_b - best.on_a);
   const double upper = d + 2 * point_error + 4 * fp::u * d;
   const double lower = d > 0 ? triangle_gap_along(a, b, best.on_b - best.on_a) : 0;
   return {d, best.on_a, best.on_b, std::max(upper - d, d - lower), point_error};
