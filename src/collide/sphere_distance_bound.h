@@ -13,8 +13,9 @@ struct SphereDistanceBound {
   /// d's components round once (u |d|), the sum of squares 3u and the square root u/2 more of
   /// |d|, the reach u of itself, the difference u of both: about 5.1u |d| + 2.1u reach.
   double distance() const { return 8 * fp::u * (n + reach) + fp::subnormal_slack; }
-  /// The unit direction d/n within 6u of its length; a witness c + r w rounds u of r w and u of
-  /// the sum per coordinate: within 10u r + 2u |c|_inf of the sphere's boundary.
+  /// The unit direction d/n within 7u of its length (d's rounding, the length's 2.6u, the
+  /// reciprocal and the product); a witness c + r w rounds u of r w and u of the sum per
+  /// coordinate: within 11u r + 2u |c|_inf of the sphere's boundary.
   double point() const { return 16 * fp::u * (center_magnitude + radius) + fp::subnormal_slack; }
 };
 
