@@ -2,29 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 
 #include "collide/fp.h"
+#include "collide/length.h"
 
 namespace cc {
-namespace {
-
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
-constexpr double kInf = std::numeric_limits<double>::infinity();
-
-// v times 2^-e.
-Vec3 scaled(const Vec3& v, int e) { return {fp::scale2(v.x, -e), fp::scale2(v.y, -e), fp::scale2(v.z, -e)}; }
-
-// |v|, on v scaled by a power of two (no underflow or overflow of the squares): within 2.6u.
-double length(const Vec3& v) {
-  const double m = max_abs(v);
-  if (m == 0) return 0;
-  const int e = fp::exponent_of(m);
-  const Vec3 s = scaled(v, e);
-  return fp::scale2(std::sqrt(fp::sum3(s.x * s.x, s.y * s.y, s.z * s.z)), e);
-}
-
-}  // namespace
 
 // The parameters do not change with scale, so the differences are scaled by one power of two
 // that brings the largest coordinate into [1, 2): the products of four of them neither overflow
@@ -75,10 +57,7 @@ double segment_gap_along(const Segment& a, const Segment& b, const Vec3& directi
 }
 
 Separation distance_segment_segment(const Segment& a, const Segment& b) {
-  if (!finite(a.a) || !finite(a.b) || !finite(b.a) || !finite(b.b)) {
-    const Vec3 nan{kNan, kNan, kNan};
-    return {kNan, nan, nan, kInf, kInf};
-  }
+  if (!finite(a.a) || !finite(a.b) || !finite(b.a) || !finite(b.b)) return Separation::outside_the_domain();
   const auto [s, t] = closest_segment_parameters(a, b);
   const Vec3 on_a = a.a + s * (a.b - a.a), on_b = b.a + t * (b.b - b.a);
   // Each witness, per coordinate with M the largest endpoint coordinate: the difference of the

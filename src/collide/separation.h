@@ -2,6 +2,8 @@
 // realises it, each with a certified bound on its error.
 #pragma once
 
+#include <limits>
+
 #include "collide/vec3.h"
 
 namespace cc {
@@ -23,6 +25,12 @@ struct Separation {
   Vec3 on_a, on_b;
   double distance_error = 0;
   double point_error = 0;
+
+  /// The answer outside a query's domain: NaN distance and points, infinite errors.
+  static Separation outside_the_domain() {
+    constexpr double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+    return {nan, {nan, nan, nan}, {nan, nan, nan}, inf, inf};
+  }
 };
 
 }  // namespace cc

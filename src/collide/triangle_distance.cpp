@@ -5,24 +5,13 @@
 #include <limits>
 
 #include "collide/fp.h"
+#include "collide/length.h"
 #include "collide/segment_distance.h"
 
 namespace cc {
 namespace {
 
-constexpr double kNan = std::numeric_limits<double>::quiet_NaN();
 constexpr double kInf = std::numeric_limits<double>::infinity();
-
-Vec3 scaled(const Vec3& v, int e) { return {fp::scale2(v.x, -e), fp::scale2(v.y, -e), fp::scale2(v.z, -e)}; }
-
-// |v|, on v scaled by a power of two: within 2.6u.
-double length(const Vec3& v) {
-  const double m = max_abs(v);
-  if (m == 0) return 0;
-  const int e = fp::exponent_of(m);
-  const Vec3 s = scaled(v, e);
-  return fp::scale2(std::sqrt(fp::sum3(s.x * s.x, s.y * s.y, s.z * s.z)), e);
-}
 
 // The best candidate pair so far: a point of a, a point of b, and their squared distance as
 // computed on the differences scaled by 2^-exponent (the pair's extent brought near 1, so the
@@ -112,10 +101,7 @@ double triangle_gap_along(const Triangle& a, const Triangle& b, const Vec3& dire
 }
 
 Separation distance_triangle_triangle(const Triangle& a, const Triangle& b) {
-  if (!finite(a) || !finite(b)) {
-    const Vec3 nan{kNan, kNan, kNan};
-    return {kNan, nan, nan, kInf, kInf};
-  }
+  if (!finite(a) || !finite(b)) return Separation::outside_the_domain();
   Best best;
   double extent = 0;
   for (int i = 0; i < 3; ++i) extent = std::max({extent, max_abs(a.v[i] - a.v[0]), max_abs(b.v[i] - a.v[0])});
