@@ -81,6 +81,19 @@ void vertices_and_crossings(const Triangle& from, const Triangle& to, bool swapp
   }
 }
 
+// Whether the direction from on_a to on_b separates the triangles with on_a and on_b at their
+// extremes: every vertex of a no further along it than on_a, every vertex of b no nearer than
+// on_b (as computed). Then the pair is a closest one (the gap along that direction is their
+// distance), and the other candidates need not be tried; the bound is certified either way.
+bool separates(const Triangle& a, const Triangle& b, const Vec3& on_a, const Vec3& on_b) {
+  const Vec3 v = unit_scaled(on_b - on_a);  // a direction only: its products neither overflow nor underflow
+  if (v == Vec3{}) return false;
+  for (int k = 0; k < 3; ++k) {
+    if (dot(v, a.v[k] - on_a) > 0 || dot(v, b.v[k] - on_b) < 0) return false;
+  }
+  return true;
+}
+
 }  // namespace
 
 double triangle_gap_along(const Triangle& a, const Triangle& b, const Vec3& direction) {
@@ -106,16 +119,22 @@ Separation distance_triangle_triangle(const Triangle& a, const Triangle& b) {
   double extent = 0;
   for (int i = 0; i < 3; ++i) extent = std::max({extent, max_abs(a.v[i] - a.v[0]), max_abs(b.v[i] - a.v[0])});
   best.exponent = extent > 0 ? fp::exponent_of(extent) : 0;
-  for (int i = 0; i < 3; ++i) {
+  bool proven = false;  // an edge pair whose direction separates the triangles: closest, done
+  for (int i = 0; i < 3 && !proven; ++i) {
     const Segment ea{a.v[i], a.v[(i + 1) % 3]};
-    for (int j = 0; j < 3; ++j) {
+    for (int j = 0; j < 3 && !proven; ++j) {
       const Segment eb{b.v[j], b.v[(j + 1) % 3]};
       const auto [s, t] = closest_segment_parameters(ea, eb);
-      best.keep_nearer(ea.a + s * (ea.b - ea.a), eb.a + t * (eb.b - eb.a));
+      const Vec3 on_a = ea.a + s * (ea.b - ea.a), on_b = eb.a + t * (eb.b - eb.a);
+      best.keep_nearer(on_a, on_b);
+      proven = separates(a, b, on_a, on_b);
+      if (proven) best.on_a = on_a, best.on_b = on_b;
     }
   }
-  vertices_and_crossings(a, b, false, best);
-  vertices_and_crossings(b, a, true, best);
+  if (!proven) {
+    vertices_and_crossings(a, b, false, best);
+    vertices_and_crossings(b, a, true, best);
+  }
   // Each witness: an edge's point (segment_distance.h, 16u of the largest coordinate M), a foot
   // p - (p - v0).n / n.n n (the difference u of 2M, the dot and quotient 5u, the product and
   // difference 2u of 2M: within 20uM per coordinate of a point in the plane, and the sign tests
