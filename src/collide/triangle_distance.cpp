@@ -22,10 +22,13 @@ struct Best {
   Vec3 on_a, on_b;
   double square = kInf;
 
-  void keep_nearer(const Vec3& a, const Vec3& b) {
+  /// Whether the pair is kept (nearer than every one before it).
+  bool keep_nearer(const Vec3& a, const Vec3& b) {
     const Vec3 d = scaled(b - a, exponent);
     const double sq = dot(d, d);
-    if (sq < square) on_a = a, on_b = b, square = sq;
+    if (!(sq < square)) return false;
+    on_a = a, on_b = b, square = sq;
+    return true;
   }
 };
 
@@ -126,9 +129,8 @@ Separation distance_triangle_triangle(const Triangle& a, const Triangle& b) {
       const Segment eb{b.v[j], b.v[(j + 1) % 3]};
       const auto [s, t] = closest_segment_parameters(ea, eb);
       const Vec3 on_a = ea.a + s * (ea.b - ea.a), on_b = eb.a + t * (eb.b - eb.a);
-      best.keep_nearer(on_a, on_b);
-      proven = separates(a, b, on_a, on_b);
-      if (proven) best.on_a = on_a, best.on_b = on_b;
+      // A proven pair is a closest one, so nearer than any before it: only a kept pair is tried.
+      proven = best.keep_nearer(on_a, on_b) && separates(a, b, on_a, on_b);
     }
   }
   if (!proven) {
