@@ -17,6 +17,10 @@ namespace cc {
 ///    direction below.
 ///  - Domain: finite inputs of magnitude at most 2^500; outside it, NaN (separation.h).
 ///    point_error: 32u of the largest vertex coordinate, plus the subnormal slack.
+///  - Known gap, to be mended: the feet and crossings are projected along the computed normal,
+///    whose direction error grows as a triangle thins (nearly collinear vertices) and whose
+///    products underflow below about 2^-510; there point_error, and with it distance_error, can
+///    be smaller than the true error. Well-shaped triangles above that scale hold their bounds.
 Separation distance_triangle_triangle(const Triangle& a, const Triangle& b);
 
 /// A certified lower bound on the distance between a and b from one direction: the gap between
