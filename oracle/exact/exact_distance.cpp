@@ -207,10 +207,10 @@ Rational squared_distance_between_triangles(const Triangle& a, const Triangle& b
       if (foot_in_triangle(at, t, n, foot)) return 0;
     }
   }
-  Rational best = squared_distance_to_triangle(rational(a.v[0]), b);
+  Rational best = squared_distance_to_triangle(rational(b.v[0]), a);
   for (int i = 0; i < 3; ++i) {
     for (const Rational& d : {squared_distance_to_triangle(rational(a.v[i]), b),
-                              squared_distance_to_triangle(rational(b.v[i]), a)}) {
+                              squared_distance_to_triangle(rational(b.v[(i + 1) % 3]), a)}) {
       if (d < best) best = d;
     }
     for (int j = 0; j < 3; ++j) {

@@ -1,6 +1,7 @@
 // Distances in exact rational arithmetic, as squares (no square root is ever rounded): a point to
-// an oriented box (the parallelepiped its axes span, as given), and a point inside one to its
-// boundary. The reference for the library's distance queries (collide/separation.h).
+// an oriented box (the parallelepiped its axes span, as given) and inside one to its boundary, a
+// point to a segment and to a triangle, segment to segment, triangle to triangle. The reference
+// for the library's distance queries (collide/separation.h).
 #pragma once
 
 #include "collide/obb.h"

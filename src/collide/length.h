@@ -11,41 +11,41 @@ namespace cc {
 /// v times 2^-e, component by component (exact unless a component leaves the normal range).
 inline Vec3 scaled(const Vec3& v, int e) { return {fp::scale2(v.x, -e), fp::scale2(v.y, -e), fp::scale2(v.z, -e)}; }
 
-/// |v| and v / |v|: the length within 2.6u of |v| (three-term sum of squares 3u, square root
-/// u/2 more), each component of the direction within 2u more (a reciprocal and a product).
-/// When the largest component lies in [2^-500, 2^500] the squares are taken as they are: none
-/// overflows, the largest is normal, and those that underflow err by 2^-1074 against a sum of
-/// at least 2^-1000. Otherwise v is first scaled by the power of two that brings its largest
-/// component into [1, 2), exactly, and the length scaled back (exact unless subnormal). A zero
-/// v has length 0 and no direction (zero); a non-finite one, a non-finite length.
+/// v as its length is measured: v itself when its largest component lies in [2^-500, 2^500]
+/// (no square overflows, the largest is normal, and those that underflow err by 2^-1074
+/// against a sum of at least 2^-1000), else v times 2^-exponent with its largest component in
+/// [1, 2) (exact). For finite v; a zero v is itself.
+struct MeasuredVector {
+  Vec3 v;
+  int exponent = 0;
+  explicit MeasuredVector(const Vec3& w) : v(w) {
+    const double m = max_abs(w);
+    if (m > 0 && (m < 0x1p-500 || m > 0x1p500)) exponent = fp::exponent_of(m), v = scaled(w, exponent);
+  }
+  /// The measured vector's length (within 2.6u: a three-term sum of squares 3u, the square root
+  /// u/2 more).
+  double root() const { return std::sqrt(fp::sum3(v.x * v.x, v.y * v.y, v.z * v.z)); }
+};
+
+/// |v| for finite v: within 2.6u, but for the scaling back, exact unless the length is subnormal.
+inline double length(const Vec3& v) {
+  const MeasuredVector m(v);
+  return fp::scale2(m.root(), m.exponent);
+}
+
+/// |v| and v / |v| for finite v: the length as length() gives it, each component of the
+/// direction within 2u more (a reciprocal and a product). A zero v has length 0 and no
+/// direction (zero).
 struct LengthAndDirection {
   double length = 0;
   Vec3 direction;
 };
 inline LengthAndDirection length_and_direction(const Vec3& v) {
-  const double m = max_abs(v);
-  if (m >= 0x1p-500 && m <= 0x1p500) {
-    const double n = std::sqrt(fp::sum3(v.x * v.x, v.y * v.y, v.z * v.z));
-    const double inverse = 1 / n;
-    return {n, {v.x * inverse, v.y * inverse, v.z * inverse}};
-  }
-  if (m == 0) return {};
-  if (!std::isfinite(m)) return {m, {}};
-  const int e = fp::exponent_of(m);
-  const Vec3 s = scaled(v, e);
-  const double n = std::sqrt(fp::sum3(s.x * s.x, s.y * s.y, s.z * s.z));
+  const MeasuredVector m(v);
+  const double n = m.root();
+  if (!(n > 0)) return {};
   const double inverse = 1 / n;
-  return {fp::scale2(n, e), {s.x * inverse, s.y * inverse, s.z * inverse}};
-}
-
-/// |v| alone, as length_and_direction computes it.
-inline double length(const Vec3& v) {
-  const double m = max_abs(v);
-  if (m >= 0x1p-500 && m <= 0x1p500) return std::sqrt(fp::sum3(v.x * v.x, v.y * v.y, v.z * v.z));
-  if (m == 0 || !std::isfinite(m)) return m;
-  const int e = fp::exponent_of(m);
-  const Vec3 s = scaled(v, e);
-  return fp::scale2(std::sqrt(fp::sum3(s.x * s.x, s.y * s.y, s.z * s.z)), e);
+  return {fp::scale2(n, m.exponent), {m.v.x * inverse, m.v.y * inverse, m.v.z * inverse}};
 }
 
 }  // namespace cc

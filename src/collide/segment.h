@@ -11,4 +11,7 @@ struct Segment {
   friend constexpr bool operator==(const Segment&, const Segment&) = default;
 };
 
+/// True when no coordinate is NaN or infinite.
+inline bool finite(const Segment& s) { return finite(s.a) && finite(s.b); }
+
 }  // namespace cc

@@ -5,6 +5,7 @@
 
 #include "collide/fp.h"
 #include "collide/length.h"
+#include "collide/projection_gap.h"
 
 namespace cc {
 
@@ -18,46 +19,35 @@ std::pair<double, double> closest_segment_parameters(const Segment& a, const Seg
     const int e = fp::exponent_of(m);
     da = scaled(da, e), db = scaled(db, e), r = scaled(r, e);
   }
-  const double aa = dot(da, da), bb = dot(db, db), f = dot(db, r);
-  if (aa == 0 && bb == 0) return {0, 0};
-  if (aa == 0) return {0, std::clamp(f / bb, 0.0, 1.0)};
-  const double c = dot(da, r);
-  if (bb == 0) return {std::clamp(-c / aa, 0.0, 1.0), 0};
-  const double ab = dot(da, db);
-  // The unclamped s is ((da.db)(db.r) - (da.r)(db.db)) / (|da|^2 |db|^2 - (da.db)^2), written
-  // with cross products (Lagrange's identity), whose cancellation is far milder where the
-  // segments are nearly parallel: n = da x db errs by u |da| |db| per component, where the
-  // difference of products would err by u |da|^2 |db|^2 against the tiny |n|^2.
+  const double length2_a = dot(da, da), length2_b = dot(db, db);
+  // The parameter of b's point nearest a's point at s, and of a's point nearest b's point at t,
+  // each clamped to its segment (0 on a point segment).
+  const auto on_b_nearest = [&](double s) {
+    return length2_b > 0 ? std::clamp(dot(r + s * da, db) / length2_b, 0.0, 1.0) : 0.0;
+  };
+  const auto on_a_nearest = [&](double t) {
+    return length2_a > 0 ? std::clamp(dot(t * db - r, da) / length2_a, 0.0, 1.0) : 0.0;
+  };
+  // The distance is a convex quadratic in (s, t). Its minimiser on the lines, s0 = ((r x db).n) /
+  // n.n with n = da x db (0 for parallel or point segments, where every s is as good), is
+  // clamped to a; then b's point nearest it, then a's point nearest that: in exact arithmetic,
+  // the minimiser over the two segments. The cross products (Lagrange's identity) keep nearly
+  // parallel segments accurate: n errs by u |da| |db| per component, where
+  // |da|^2 |db|^2 - (da.db)^2 would err by u |da|^2 |db|^2 against the tiny |n|^2.
   const Vec3 n = cross(da, db);
-  const double denom = dot(n, n);
-  double s = denom > 0 ? std::clamp(dot(n, cross(db, r)) / denom, 0.0, 1.0) : 0.0;
-  double t = (ab * s + f) / bb;
-  if (t < 0) {
-    t = 0, s = std::clamp(-c / aa, 0.0, 1.0);
-  } else if (t > 1) {
-    t = 1, s = std::clamp((ab - c) / aa, 0.0, 1.0);
-  }
-  return {s, t};
+  const double n2 = dot(n, n);
+  const double s0 = n2 > 0 ? std::clamp(dot(n, cross(db, r)) / n2, 0.0, 1.0) : 0.0;
+  const double t = on_b_nearest(s0);
+  return {on_a_nearest(t), t};
 }
 
 double segment_gap_along(const Segment& a, const Segment& b, const Vec3& direction) {
-  // Measured from a.a, with the direction scaled so that its largest component m is in [1, 2)
-  // (so its length is at least m), and R the largest offset's 1-norm: each offset rounds u and
-  // its dot 3u, 4u m R each over the length, 8u R for the two sides; their difference u of 2mR,
-  // 2u R; the division and the length 3.6u of the gap (at most 2R): 17.2u R.
-  const Vec3 unit = unit_scaled(direction);  // a direction only: no underflow in its products
-  const double scale = length(unit);
-  if (!(scale > 0) || !std::isfinite(scale)) return 0;
-  const Vec3 ends[4] = {Vec3{}, a.b - a.a, b.a - a.a, b.b - a.a};
-  double reach = 0;
-  for (const Vec3& e : ends) reach = std::max(reach, norm1(e));
-  const double high_a = std::max(dot(unit, ends[0]), dot(unit, ends[1]));
-  const double low_b = std::min(dot(unit, ends[2]), dot(unit, ends[3]));
-  return std::max(0.0, (low_b - high_a) / scale - 24 * fp::u * reach - fp::subnormal_slack);
+  const Vec3 ends_a[2] = {a.a, a.b}, ends_b[2] = {b.a, b.b};
+  return projection_gap(ends_a, ends_b, direction);
 }
 
 Separation distance_segment_segment(const Segment& a, const Segment& b) {
-  if (!finite(a.a) || !finite(a.b) || !finite(b.a) || !finite(b.b)) return Separation::outside_the_domain();
+  if (!finite(a) || !finite(b)) return Separation::outside_the_domain();
   const auto [s, t] = closest_segment_parameters(a, b);
   const Vec3 on_a = a.a + s * (a.b - a.a), on_b = b.a + t * (b.b - b.a);
   // Each witness, per coordinate with M the largest endpoint coordinate: the difference of the
@@ -65,14 +55,17 @@ Separation distance_segment_segment(const Segment& a, const Segment& b) {
   // of 3M: 7uM, 12.2uM in length.
   const double magnitude = std::max({max_abs(a.a), max_abs(a.b), max_abs(b.a), max_abs(b.b)});
   const double point_error = 16 * fp::u * magnitude + fp::subnormal_slack;
-  const Vec3 n = on_b - on_a;
-  const double d = length(n);
-  // Upper end: the exact witnesses are points of the segments, within point_error of these;
-  // their distance is within 2 point_error and the length's rounding (u for n, 2.6u) of d.
-  const double upper = d + 2 * point_error + 4 * fp::u * d;
-  // Lower end: the gap along the witnesses' direction (none when they coincide).
-  const double lower = d > 0 ? segment_gap_along(a, b, n) : 0;
-  return {d, on_a, on_b, std::max(upper - d, d - lower), point_error};
+  // The lower end: the gap along the witnesses' direction, and along the segments' common
+  // normal, which a noisy pair of witnesses (nearly touching segments, where their rounding
+  // turns their direction) does not tilt. Both face from a to b; none when the witnesses meet.
+  const Vec3 along = on_b - on_a;
+  double lower = 0;
+  if (along != Vec3{}) {
+    Vec3 normal = unit_scaled(cross(a.b - a.a, b.b - b.a));
+    if (dot(normal, along) < 0) normal = -1.0 * normal;
+    lower = std::max(segment_gap_along(a, b, along), segment_gap_along(a, b, normal));
+  }
+  return Separation::certified(on_a, on_b, point_error, lower);
 }
 
 }  // namespace cc

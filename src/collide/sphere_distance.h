@@ -21,14 +21,15 @@ Separation distance_sphere_sphere(const Sphere& a, const Sphere& b);
 /// minus the radius, outside; minus the centre's distance to the box's boundary minus the radius,
 /// inside. A centre inside the box (its boundary included) is pushed out through a nearest face
 /// (on a tie, the first axis, the + side). on_b is the centre's nearest point of the box's
-/// boundary; on_a the ball's point farthest along the direction from that point to the centre
-/// (against the face's outward normal inside).
+/// boundary; on_a the ball's point nearest the box outside (the centre less the radius along
+/// the direction from on_b to the centre), and inside the centre less the radius along the
+/// face's outward normal.
 ///  - Domain: finite inputs of magnitude at most 2^500, radius and half extents >= 0, axes
 ///    orthonormal to within kObbOrthonormalTolerance (eta). The box is the parallelepiped its
 ///    axes span; the bounds hold for it.
 ///  - distance_error: 16u (|d|_1 + |half|_1 + radius) + 8 eta (|d|_1 + |half|_1), d the centre
-///    offset, plus the subnormal slack; point_error adds the magnitudes of both centres to the
-///    u term and the radius to the eta term.
+///    offset, plus the subnormal slack; point_error: 16u (both centres' largest coordinate + |d|_1
+///    + |half|_1 + radius) + 4 eta (radius + |d|_1 + |half|_1), plus the slack.
 Separation distance_sphere_obb(const Sphere& a, const Obb& b);
 
 }  // namespace cc

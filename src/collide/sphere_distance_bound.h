@@ -25,17 +25,17 @@ struct SphereObbDistanceBound {
   /// The box's coordinates of d (one rounding of d and a three-term dot: 4u of |d| each), the
   /// difference from the clamped point or the face (u), its length (2.6u) and the radius' (u):
   /// within 7.2u |d| + 4.6u (|d| + |half|) + u r.
-  double rounding() const { return 16 * fp::u * (offset + half + radius); }
+  double rounding() const { return 16 * fp::u * fp::sum3(offset, half, radius); }
   /// Axes orthonormal to within eta: the coordinates d's transpose product gives differ from
   /// its coordinates in the (skew) frame by 3 eta |d|_inf each, and lengths measured in the
   /// frame differ from the world's by 1.5 eta: within 7 eta (|d|_1 + |half|_1).
   double frame() const { return 8 * kObbOrthonormalTolerance * (offset + half); }
-  double distance() const { return rounding() + frame() + fp::subnormal_slack; }
+  double distance() const { return fp::sum3(rounding(), frame(), fp::subnormal_slack); }
   /// The box's witness c + A q rounds 3u of |q| and u of the sum per coordinate; the ball's
   /// s - r w as in the spheres' bound, with w's length within 1.5 eta + 6u of 1.
   double point() const {
-    return 16 * fp::u * (center_magnitude + offset + half + radius) +
-           4 * kObbOrthonormalTolerance * (radius + offset + half) + fp::subnormal_slack;
+    return fp::sum3(16 * fp::u * (center_magnitude + fp::sum3(offset, half, radius)),
+                    4 * kObbOrthonormalTolerance * fp::sum3(radius, offset, half), fp::subnormal_slack);
   }
 };
 

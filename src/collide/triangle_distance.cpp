@@ -6,6 +6,7 @@
 
 #include "collide/fp.h"
 #include "collide/length.h"
+#include "collide/projection_gap.h"
 #include "collide/segment_distance.h"
 
 namespace cc {
@@ -13,21 +14,23 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-// The best candidate pair so far: a point of a, a point of b, and their squared distance as
-// computed on the differences scaled by 2^-exponent (the pair's extent brought near 1, so the
-// squares neither overflow nor, but for pairs far nearer than the extent, underflow). Only the
-// choice depends on it: the bound is certified for whichever pair is chosen.
+// The best candidate pair so far: a point of a, a point of b, the normal of the features they
+// lie on (an edge pair's cross product, a face's normal: the direction a closest pair of those
+// features takes, free of the witnesses' rounding), and their squared distance as computed on
+// the differences scaled by 2^-exponent (the pair's extent brought near 1, so the squares
+// neither overflow nor, but for pairs far nearer than the extent, underflow). Only the choice
+// depends on it: the bound is certified for whichever pair is chosen.
 struct Best {
   int exponent = 0;
-  Vec3 on_a, on_b;
+  Vec3 on_a, on_b, normal;
   double square = kInf;
 
   /// Whether the pair is kept (nearer than every one before it).
-  bool keep_nearer(const Vec3& a, const Vec3& b) {
+  bool keep_nearer(const Vec3& a, const Vec3& b, const Vec3& features_normal) {
     const Vec3 d = scaled(b - a, exponent);
     const double sq = dot(d, d);
     if (!(sq < square)) return false;
-    on_a = a, on_b = b, square = sq;
+    on_a = a, on_b = b, normal = features_normal, square = sq;
     return true;
   }
 };
@@ -35,52 +38,59 @@ struct Best {
 // A triangle's normal, scaled (a direction only); zero for a degenerate triangle.
 Vec3 normal_of(const Triangle& t) { return unit_scaled(cross(t.v[1] - t.v[0], t.v[2] - t.v[0])); }
 
-// The foot of p on the plane of t (n its normal_of), when it lies in t (t not degenerate): p's
-// nearest point of t is then the foot, else on t's edges.
-bool foot_in(const Vec3& p, const Triangle& t, const Vec3& n, Vec3& foot) {
+// The point of t nearest p when that is p's foot on t's plane, as t.v[0] + s e1 + t e2 with the
+// coordinates s, t >= 0, s + t <= 1 as computed: a point of t (but for its own rounding, which
+// point_error counts) however thin or small t is; an ill-conditioned plane only moves it within
+// t, away from the foot. The coordinates come from e1, e2 and p - t.v[0] scaled by one power
+// of two (their products of four neither overflow nor, for the largest, underflow), by cross
+// products: with n = e1 x e2 and f the foot less v0, s = (f x e2).n / n.n, t = (e1 x f).n / n.n.
+// False when the foot lies outside t, or t is degenerate as computed.
+bool foot_in(const Vec3& p, const Triangle& tri, Vec3& foot) {
+  const Vec3 e1 = tri.v[1] - tri.v[0], e2 = tri.v[2] - tri.v[0], w = p - tri.v[0];
+  const double m = std::max({max_abs(e1), max_abs(e2), max_abs(w)});
+  if (!(m > 0)) return false;
+  const int e = fp::exponent_of(m);
+  const Vec3 se1 = scaled(e1, e), se2 = scaled(e2, e), sw = scaled(w, e);
+  const Vec3 n = cross(se1, se2);
   const double nn = dot(n, n);
   if (!(nn > 0)) return false;
-  foot = p - (dot(p - t.v[0], n) / nn) * n;
-  for (int i = 0; i < 3; ++i) {
-    const Vec3& from = t.v[i];
-    const Vec3& to = t.v[(i + 1) % 3];
-    if (dot(cross(to - from, foot - from), n) < 0) return false;
-  }
+  // The coordinates of w's part in the plane (w less its part along n): the far part of w is
+  // taken away along n first, so that the coordinates are measured on the foot, near t.
+  const Vec3 in_plane = sw - (dot(sw, n) / nn) * n;
+  const double s = dot(cross(in_plane, se2), n) / nn, t = dot(cross(se1, in_plane), n) / nn;
+  if (!(s >= 0 && t >= 0 && s + t <= 1)) return false;
+  foot = tri.v[0] + s * e1 + t * e2;
   return true;
 }
 
-// Where the segment from p to q crosses the plane of t inside t, if it does (t not degenerate,
-// the segment not in the plane).
-bool crossing(const Vec3& p, const Vec3& q, const Triangle& t, const Vec3& n, Vec3& at) {
-  if (!(dot(n, n) > 0)) return false;
-  const double dp = dot(p - t.v[0], n), dq = dot(q - t.v[0], n);
+// A point of the segment from p to q near where it crosses the plane of t (n its normal_of),
+// if its ends lie on both sides of the plane or on it (and not both on it).
+bool crossing(const Vec3& p, const Vec3& q, const Vec3& v0, const Vec3& n, Vec3& at) {
+  const double dp = dot(p - v0, n), dq = dot(q - v0, n);
   if ((dp > 0 && dq > 0) || (dp < 0 && dq < 0) || dp == dq) return false;
-  const double s = std::clamp(dp / (dp - dq), 0.0, 1.0);
-  at = p + s * (q - p);
-  for (int i = 0; i < 3; ++i) {
-    const Vec3& from = t.v[i];
-    const Vec3& to = t.v[(i + 1) % 3];
-    if (dot(cross(to - from, at - from), n) < 0) return false;
-  }
+  at = p + std::clamp(dp / (dp - dq), 0.0, 1.0) * (q - p);
   return true;
 }
 
 // The candidates for a closest pair with a point of `from` taken alone: its vertices' feet on
-// `to` and its edges' crossings of `to`. `swapped`: `from` is b.
+// `to` and its edges' crossings of `to`, each crossing paired with its foot there. Where an edge
+// is nearly parallel to the plane its crossing is ill-conditioned, but the pair is still a point
+// of each triangle, merely not the closest; the edges' pairs cover that case. `swapped`: `from`
+// is b.
 void vertices_and_crossings(const Triangle& from, const Triangle& to, bool swapped, Best& best) {
-  const auto keep = [&](const Vec3& on_from, const Vec3& on_to) {
-    swapped ? best.keep_nearer(on_to, on_from) : best.keep_nearer(on_from, on_to);
-  };
   const Vec3 n = normal_of(to);
   if (!(dot(n, n) > 0)) return;  // degenerate: its edges' pairs are its candidates
+  const auto keep = [&](const Vec3& on_from, const Vec3& on_to) {
+    if (swapped) {
+      best.keep_nearer(on_to, on_from, n);
+    } else {
+      best.keep_nearer(on_from, on_to, n);
+    }
+  };
   for (int i = 0; i < 3; ++i) {
-    Vec3 foot;
-    if (foot_in(from.v[i], to, n, foot)) keep(from.v[i], foot);
-    // A crossing is on from's edge, and (nearly) in `to`: paired with its foot there. Where the
-    // edge is nearly parallel to the plane the crossing is ill-conditioned, but the pair is
-    // still a point of each triangle, merely not the closest; the edges' pairs cover that case.
     Vec3 at, on_to;
-    if (crossing(from.v[i], from.v[(i + 1) % 3], to, n, at) && foot_in(at, to, n, on_to)) keep(at, on_to);
+    if (foot_in(from.v[i], to, on_to)) keep(from.v[i], on_to);
+    if (crossing(from.v[i], from.v[(i + 1) % 3], to.v[0], n, at) && foot_in(at, to, on_to)) keep(at, on_to);
   }
 }
 
@@ -100,20 +110,7 @@ bool separates(const Triangle& a, const Triangle& b, const Vec3& on_a, const Vec
 }  // namespace
 
 double triangle_gap_along(const Triangle& a, const Triangle& b, const Vec3& direction) {
-  // As segment_gap_along (segment_distance.cpp), over three vertices a side, measured from
-  // a.v[0]: each side's extreme is one of three dots (4u m R each over the length), the rest as
-  // there: 17.2u R, R the largest offset's 1-norm.
-  const Vec3 unit = unit_scaled(direction);
-  const double scale = length(unit);
-  if (!(scale > 0) || !std::isfinite(scale)) return 0;
-  double reach = 0, high_a = -kInf, low_b = kInf;
-  for (int i = 0; i < 3; ++i) {
-    const Vec3 ea = a.v[i] - a.v[0], eb = b.v[i] - a.v[0];
-    reach = std::max({reach, norm1(ea), norm1(eb)});
-    high_a = std::max(high_a, dot(unit, ea));
-    low_b = std::min(low_b, dot(unit, eb));
-  }
-  return std::max(0.0, (low_b - high_a) / scale - 24 * fp::u * reach - fp::subnormal_slack);
+  return projection_gap(a.v, b.v, direction);
 }
 
 Separation distance_triangle_triangle(const Triangle& a, const Triangle& b) {
@@ -130,25 +127,32 @@ Separation distance_triangle_triangle(const Triangle& a, const Triangle& b) {
       const auto [s, t] = closest_segment_parameters(ea, eb);
       const Vec3 on_a = ea.a + s * (ea.b - ea.a), on_b = eb.a + t * (eb.b - eb.a);
       // A proven pair is a closest one, so nearer than any before it: only a kept pair is tried.
-      proven = best.keep_nearer(on_a, on_b) && separates(a, b, on_a, on_b);
+      proven = best.keep_nearer(on_a, on_b, unit_scaled(cross(ea.b - ea.a, eb.b - eb.a))) &&
+               separates(a, b, on_a, on_b);
     }
   }
   if (!proven) {
     vertices_and_crossings(a, b, false, best);
     vertices_and_crossings(b, a, true, best);
   }
-  // Each witness: an edge's point (segment_distance.h, 16u of the largest coordinate M), a foot
-  // p - (p - v0).n / n.n n (the difference u of 2M, the dot and quotient 5u, the product and
-  // difference 2u of 2M: within 20uM per coordinate of a point in the plane, and the sign tests
-  // let it stray from t by the rounding of its own edges' products, a few u of M), or a
-  // crossing (as a segment's point): 32u M in length.
+  // Each witness is v0 + s (v1 - v0) for an edge (s in [0, 1]) or v0 + s e1 + t e2 for a face
+  // (s, t >= 0, s + t <= 1, as computed): with M the largest vertex coordinate, each edge
+  // vector rounds u of 2M, each product u of 2M and carries its vector's error (2uM in all, as
+  // s + t <= 1), each sum u of at most 3M: within 12uM per coordinate, 20.8uM in length; 32uM
+  // leaves room for s + t exceeding 1 by its own rounding.
   double magnitude = 0;
   for (int i = 0; i < 3; ++i) magnitude = std::max({magnitude, max_abs(a.v[i]), max_abs(b.v[i])});
   const double point_error = 32 * fp::u * magnitude + fp::subnormal_slack;
-  const double d = length(best.on_b - best.on_a);
-  const double upper = d + 2 * point_error + 4 * fp::u * d;
-  const double lower = d > 0 ? triangle_gap_along(a, b, best.on_b - best.on_a) : 0;
-  return {d, best.on_a, best.on_b, std::max(upper - d, d - lower), point_error};
+  // The lower end: the gap along the witnesses' direction, and along their features' normal,
+  // which a noisy pair of witnesses (nearly touching triangles, where their rounding turns
+  // their direction) does not tilt. Both face from a to b; none when the witnesses meet.
+  const Vec3 along = best.on_b - best.on_a;
+  double lower = 0;
+  if (along != Vec3{}) {
+    const Vec3 normal = dot(best.normal, along) < 0 ? -1.0 * best.normal : best.normal;
+    lower = std::max(triangle_gap_along(a, b, along), triangle_gap_along(a, b, normal));
+  }
+  return Separation::certified(best.on_a, best.on_b, point_error, lower);
 }
 
 }  // namespace cc

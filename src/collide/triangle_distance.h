@@ -7,7 +7,7 @@
 namespace cc {
 
 /// The distance between two closed triangles (never negative: triangles have no inside; 0 where
-/// they meet) and a closest pair, on_a on a and on_b on b. Where closest pairs are not unique
+/// they meet) and a nearly closest pair, on_a on a and on_b on b. Where closest pairs are not unique
 /// (parallel faces or edges), any of them. Degenerate triangles are the segments or points they
 /// are.
 ///  - The witnesses are the closest of the candidates a closest pair is among: each vertex
@@ -17,10 +17,10 @@ namespace cc {
 ///    direction below.
 ///  - Domain: finite inputs of magnitude at most 2^500; outside it, NaN (separation.h).
 ///    point_error: 32u of the largest vertex coordinate, plus the subnormal slack.
-///  - Known gap, to be mended: the feet and crossings are projected along the computed normal,
-///    whose direction error grows as a triangle thins (nearly collinear vertices) and whose
-///    products underflow below about 2^-510; there point_error, and with it distance_error, can
-///    be smaller than the true error. Well-shaped triangles above that scale hold their bounds.
+///  - Thin or tiny triangles (nearly collinear vertices; coordinates below about 2^-510, where
+///    products of four underflow): every witness is still a point of its triangle within
+///    point_error (feet are taken in the triangle's own coordinates, clamped to it), and the
+///    bound still holds, but the witnesses may be far from closest and the bound loose.
 Separation distance_triangle_triangle(const Triangle& a, const Triangle& b);
 
 /// A certified lower bound on the distance between a and b from one direction: the gap between

@@ -33,7 +33,7 @@ TEST(DistanceSegmentSegmentExact, WithinItsBounds) {
     const double unit = r.below(3) == 0 ? std::ldexp(1.0, r.in(-300, 300)) : 1.0;
     Segment a{unit * integer_point(r, 8), unit * integer_point(r, 8)};
     Segment b{unit * integer_point(r, 8), unit * integer_point(r, 8)};
-    switch (r.below(7)) {
+    switch (r.below(8)) {
       case 0: {  // crossing at a common point
         const Vec3 common = unit * integer_point(r, 8), da = unit * integer_point(r, 3), db = unit * integer_point(r, 3);
         a = {common - da, common + 2 * da}, b = {common - 2 * db, common + db};
@@ -46,6 +46,16 @@ TEST(DistanceSegmentSegmentExact, WithinItsBounds) {
         b.b.y += std::ldexp(unit, -r.in(20, 50));
         break;
       case 4: a.b = a.a; break;  // a point
+      case 5: {  // nearly touching: b crosses near a's interior, 2^-10 to 2^-30 of their length away
+        const double s = r.between(1, 1e3);
+        a = {s * r.in_cube(1), s * r.in_cube(1)};
+        const Vec3 c = a.a + r.between(0.1, 0.9) * (a.b - a.a), e = s * r.in_cube(1);
+        const Vec3 w = unit_scaled(cross(a.b - a.a, e));
+        const Vec3 off = std::ldexp(s, -r.in(10, 30)) * w;
+        b = {c + off - r.between(0.1, 0.9) * e, c + off + r.between(0.1, 0.9) * e};
+        ++met["nearly touching"];
+        break;
+      }
       default: {  // generic, with real coordinates
         const double s = r.between(1e-3, 1e3);
         a = {s * r.in_cube(1), s * r.in_cube(1)}, b = {s * r.in_cube(1), s * r.in_cube(1)};
@@ -82,7 +92,7 @@ TEST(DistanceSegmentSegmentExact, WithinItsBounds) {
     const double scale = std::max({max_abs(a.a), max_abs(a.b), max_abs(b.a), max_abs(b.b)});
     if (sep.distance_error <= 0x1p-40 * scale) ++met["tight"];
   }
-  for (const char* c : {"touching", "apart", "parallel", "a point", "tiny", "huge", "far from the origin"}) {
+  for (const char* c : {"touching", "apart", "parallel", "a point", "tiny", "huge", "far from the origin", "nearly touching"}) {
     EXPECT_GT(met[c], 50) << c;
   }
   EXPECT_EQ(met["tight"], 6000) << "the bound is loose";

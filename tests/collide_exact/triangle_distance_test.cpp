@@ -40,6 +40,12 @@ std::pair<Triangle, Triangle> draw_pair(test::Random& r, double unit, std::strin
     }
     case 2: kind = "coplanar"; for (Vec3& v : b.v) v.z = 0; for (Vec3& v : a.v) v.z = 0; break;
     case 3: kind = "degenerate"; b.v[2] = r.below(2) ? b.v[0] : 0.5 * (b.v[0] + b.v[1]); break;
+    case 5: {  // thin: b's third vertex 2^-8 to 2^-30 of the scale off its opposite edge
+      kind = "thin";
+      const Vec3 off{std::ldexp(unit, -r.in(8, 30)), std::ldexp(unit, -r.in(8, 30)), 0};
+      b.v[2] = 0.5 * (b.v[0] + b.v[1]) + off;
+      break;
+    }
     case 4: {  // real coordinates
       kind = "generic";
       const double s = r.between(1e-3, 1e3);
@@ -55,9 +61,13 @@ std::pair<Triangle, Triangle> draw_pair(test::Random& r, double unit, std::strin
 TEST(DistanceTriangleTriangleExact, WithinItsBounds) {
   test::Random r(59);
   std::map<std::string, int> met;
-  const int cases = 3000;
+  const int cases = 4000;
   for (int i = 0; i < cases; ++i) {
-    const double unit = r.below(3) == 0 ? std::ldexp(1.0, r.in(-300, 300)) : 1.0;
+    // Mostly 1, else 2^-300..2^300, else tiny: 2^-560..2^-510, where products of four
+    // coordinates underflow.
+    const int draw = r.below(6);
+    const double unit = draw == 0 ? std::ldexp(1.0, r.in(-560, -510))
+                        : draw == 1 ? std::ldexp(1.0, r.in(-300, 300)) : 1.0;
     std::string kind;
     auto [a, b] = draw_pair(r, unit, kind);
     if (r.below(5) == 0) {  // far from the origin, where the witnesses round
@@ -79,14 +89,24 @@ TEST(DistanceTriangleTriangleExact, WithinItsBounds) {
         << i;
     double scale = 0;
     for (int k = 0; k < 3; ++k) scale = std::max({scale, max_abs(a.v[k]), max_abs(b.v[k])});
-    EXPECT_LE(sep.distance_error, 0x1p-40 * scale) << "case " << i << " (" << kind << "): a loose bound";
+    // Tight where the triangles are well shaped and products of their coordinates stay
+    // normal; thin and tiny triangles are only held to their bound (counted, not asserted).
+    const bool loose_allowed = kind == "thin" || unit < 0x1p-500;
+    if (sep.distance_error <= 0x1p-40 * scale) {
+      ++met["tight"];
+    } else {
+      EXPECT_TRUE(loose_allowed) << "case " << i << " (" << kind << "): a loose bound, " << sep.distance_error / scale
+                                 << " of the scale; distance " << sep.distance << ", exact " << std::sqrt(exact.get_d());
+      ++met["loose, thin or tiny"];
+    }
     ++met[kind];
     ++met[exact == 0 ? "touching or meeting" : "apart"];
     if (unit <= 0x1p-200) ++met["tiny"];
+    if (unit < 0x1p-500) ++met["below 2^-500"];
     if (unit >= 0x1p200) ++met["huge"];
   }
-  for (const char* c : {"parallel faces", "vertex on a", "coplanar", "degenerate", "generic", "touching or meeting",
-                        "apart", "tiny", "huge", "far from the origin"}) {
+  for (const char* c : {"parallel faces", "vertex on a", "coplanar", "degenerate", "thin", "generic",
+                        "touching or meeting", "apart", "tiny", "below 2^-500", "huge", "far from the origin"}) {
     EXPECT_GT(met[c], 50) << c;
   }
   for (const auto& [c, n] : met) std::cout << c << ": " << n << "\n";
@@ -111,7 +131,7 @@ TEST(TriangleGapAlongExact, IsALowerBoundAndNearlyTheDistanceAlongTheWitnesses) 
       const double gap = triangle_gap_along(a, b, direction);
       ASSERT_TRUE(gap == 0 || rational(gap) * rational(gap) <= exact) << "case " << i << ": gap " << gap;
     }
-    if (exact == 0) continue;
+    if (exact == 0 || kind == "thin") continue;  // thin: only held to be a lower bound
     ++apart;
     double scale = 0;
     for (int k = 0; k < 3; ++k) scale = std::max({scale, max_abs(a.v[k]), max_abs(b.v[k])});
