@@ -200,9 +200,47 @@ std::optional<std::string> corners_wrong(const Answer& said, const ExactVerdict&
   return s.str();
 }
 
+// A distance and its closest pair, each within the bounds the party certified with them (a
+// distance query of the library gives them after the pair) or else within the party's band of
+// the inputs' scale, decided in exact arithmetic by the reference. The hit follows from the
+// distance (0 or less where the shapes meet) and is not judged apart from it, but for a party
+// that gives no distance where it finds the shapes meeting.
+PartyStanding judge_distance(std::string party, const Band& band, const Answer& said, const ExactVerdict& exact) {
+  PartyStanding p{std::move(party), Standing::right, ""};
+  if (said.params.empty()) {  // "in collision", with no distance (FCL's unsigned distance): the hit alone
+    if (said.hit != exact.answer.hit) {
+      p.standing = within_band(band, said.hit, exact.margin) ? Standing::within_band : Standing::wrong;
+      p.why = describe(said.hit, exact);
+    }
+    return p;
+  }
+  std::ostringstream s;
+  s.precision(17);
+  if (said.params.size() != 7 && said.params.size() != 9) {
+    s << "gives " << said.params.size() << " numbers, not a distance and two points (and two bounds)";
+  } else if (!exact.check_distance) {
+    throw std::invalid_argument("the exact verdict of a distance query has no check_distance");
+  } else {
+    const std::vector<double>& q = said.params;
+    const bool certified = q.size() == 9;
+    const double distance_tolerance = certified ? q[7] : band.param_width * exact.scale;
+    const double point_tolerance = certified ? q[8] : band.param_width * exact.scale;
+    if (auto why = exact.check_distance(q[0], {q[1], q[2], q[3]}, {q[4], q[5], q[6]}, distance_tolerance, point_tolerance)) {
+      s << *why << " (" << (certified ? "its own bounds " : "its band's ") << distance_tolerance << " and " << point_tolerance
+        << ')';
+    }
+  }
+  if (!s.str().empty()) {
+    p.standing = Standing::wrong;
+    p.why = s.str();
+  }
+  return p;
+}
+
 PartyStanding judge_party(std::string party, const Band& band, const Answer& said, const ExactVerdict& exact,
                           Judged judged) {
   if (judged == Judged::frames) return judge_frames(std::move(party), band, said, exact);
+  if (judged == Judged::distance) return judge_distance(std::move(party), band, said, exact);
   PartyStanding p{std::move(party), Standing::right, ""};
   if (judged == Judged::all_pairs || judged == Judged::first_pair) {
     p = judge_pairs(std::move(p.party), band, said, exact, judged == Judged::first_pair);
@@ -253,7 +291,8 @@ Verdict classify(const Band& band_of_library, Judged judged, const Answer& libra
         band.param_width = 0;
         Answer said = o.answer;
         said.params.clear();
-        v.parties.push_back(judge_party(o.party, band, said, exact, judged));
+        // Out of the domain only the hit is heard, a distance's too.
+        v.parties.push_back(judge_party(o.party, band, said, exact, judged == Judged::distance ? Judged::hit : judged));
       } else if (exact.contract == Contract::documented && o.answer.hit != exact.answer.hit) {
         v.parties.push_back({o.party, Standing::differs,
                              std::string("says ") + (o.answer.hit ? "hit" : "miss") + " where the library documents " +
@@ -288,9 +327,11 @@ Verdict classify(const Band& band_of_library, Judged judged, const Answer& libra
     const bool own = is_library_party(o.party);
     if (!own && !o.band) throw std::invalid_argument("the opinion of " + o.party + " carries no band");
     Band band = own ? band_of_library : *o.band;
-    if (!own) band.param_width = 0;  // second opinions give no parameters
     Answer said = o.answer;
-    if (!own) said.params.clear();
+    if (!own && judged != Judged::distance) {  // second opinions give no parameters, but distances
+      band.param_width = 0;
+      said.params.clear();
+    }
     v.parties.push_back(judge_party(o.party, band, said, exact, judged));
     const bool wrong = v.parties.back().standing == Standing::wrong;
     (own ? library_wrong : any_wrong) |= wrong;

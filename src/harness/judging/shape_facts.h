@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "collide/aabb.h"
+#include "collide/length.h"  // length(v), without overflow or underflow
 #include "collide/triangle.h"
 
 namespace cc::harness {
@@ -15,7 +16,6 @@ namespace cc::harness {
 inline constexpr double kNearlyParallel = 0x1p-20;
 
 inline bool is_zero(const Vec3& v) { return v.x == 0 && v.y == 0 && v.z == 0; }
-inline double length(const Vec3& v) { return std::sqrt(dot(v, v)); }
 
 /// Two nonzero vectors with a zero cross product (as computed; exact for the simple values the
 /// generators use to build parallel configurations).

@@ -1,7 +1,9 @@
 // The harness reaches the oracles only through these interfaces; oracle/ implements them.
 #pragma once
 
+#include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -54,6 +56,17 @@ struct ExactVerdict {
   /// of each, rounded to nearest), and the hull of a party's corners must lie within this distance
   /// of theirs, and theirs within it of the hull (Hausdorff distance).
   double corner_tolerance = 0;
+  /// Distances (Judged::distance): answer.params holds the exact distance, rounded to nearest;
+  /// `scale` is the inputs' largest magnitude, which a second opinion's band is relative to; and
+  /// check_distance(distance, on_a, on_b, distance_tolerance, point_tolerance) decides in exact
+  /// arithmetic whether an answer is right: the distance within distance_tolerance of the exact
+  /// one, each point within point_tolerance of its shape, and the points as far apart as the
+  /// distance says, within distance_tolerance + 2 point_tolerance. Nothing when right, else why
+  /// not. Empty for the other kinds.
+  double scale = 0;
+  std::function<std::optional<std::string>(double distance, const Vec3& on_a, const Vec3& on_b,
+                                           double distance_tolerance, double point_tolerance)>
+      check_distance;
 
   /// The margin of a pair of a mesh query.
   double margin_of(const FacePair& pair) const;
