@@ -11,22 +11,21 @@
 namespace cc::bullet_oracle {
 namespace {
 
-// The distance GJK reports (once, for a valid query).
-struct Distance final : btDiscreteCollisionDetectorInterface::Result {
-  bool reported = false;
-  btScalar distance = 0;
+// What GJK reports (once, for a valid query).
+struct Closest final : btDiscreteCollisionDetectorInterface::Result {
+  std::optional<GjkClosest> reported;
   void setShapeIdentifiersA(int, int) override {}
   void setShapeIdentifiersB(int, int) override {}
-  void addContactPoint(const btVector3&, const btVector3&, btScalar depth) override {
-    reported = true;
-    distance = depth;
+  void addContactPoint(const btVector3& normal_on_b, const btVector3& point_on_b, btScalar depth) override {
+    const btVector3 point_on_a = point_on_b + normal_on_b * depth;
+    reported = GjkClosest{depth, {point_on_a.x(), point_on_a.y(), point_on_a.z()}, {point_on_b.x(), point_on_b.y(), point_on_b.z()}};
   }
 };
 
 }  // namespace
 
-std::optional<double> gjk_distance(const btConvexShape& a, const btTransform& place_a, const btConvexShape& b,
-                                   const btTransform& place_b) {
+std::optional<GjkClosest> gjk_closest(const btConvexShape& a, const btTransform& place_a, const btConvexShape& b,
+                                      const btTransform& place_b) {
   btVoronoiSimplexSolver simplex;
   btGjkEpaPenetrationDepthSolver penetration;
   btGjkPairDetector gjk(&a, &b, &simplex, &penetration);
@@ -34,10 +33,16 @@ std::optional<double> gjk_distance(const btConvexShape& a, const btTransform& pl
   input.m_maximumDistanceSquared = BT_LARGE_FLOAT;
   input.m_transformA = place_a;
   input.m_transformB = place_b;
-  Distance result;
+  Closest result;
   gjk.getClosestPoints(input, result, nullptr);
-  if (!result.reported) return std::nullopt;
-  return result.distance;
+  return result.reported;
+}
+
+std::optional<double> gjk_distance(const btConvexShape& a, const btTransform& place_a, const btConvexShape& b,
+                                   const btTransform& place_b) {
+  const std::optional<GjkClosest> closest = gjk_closest(a, place_a, b, place_b);
+  if (!closest) return std::nullopt;
+  return closest->distance;
 }
 
 harness::Opinion gjk_triangle_box(const Triangle& tri, const Vec3& half, const Mat3& axes, const Vec3& center) {

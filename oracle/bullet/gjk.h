@@ -14,8 +14,19 @@
 
 namespace cc::bullet_oracle {
 
-/// The distance GJK (with EPA for penetration) reports between two placed convex shapes (< 0
-/// overlapping), or nothing when it reports none.
+/// What GJK (with EPA for penetration) reports between two placed convex shapes: the distance
+/// (< 0 overlapping), its point on b, and the point on a it gives with it (the point on b plus
+/// the distance along its normal).
+struct GjkClosest {
+  double distance = 0;
+  Vec3 on_a, on_b;
+};
+
+/// GJK's report on two placed convex shapes, or nothing when it reports none.
+std::optional<GjkClosest> gjk_closest(const btConvexShape& a, const btTransform& place_a, const btConvexShape& b,
+                                      const btTransform& place_b);
+
+/// Its distance alone.
 std::optional<double> gjk_distance(const btConvexShape& a, const btTransform& place_a, const btConvexShape& b,
                                    const btTransform& place_b);
 

@@ -19,5 +19,6 @@ CC_NO_PARTIES(chipmunk_parties, tri_aabb, TriAabb, "Chipmunk is 2-D; the triangl
 CC_NO_PARTIES(chipmunk_parties, tri_obb, TriObb, "Chipmunk is 2-D; the triangle and the box are 3-D")
 CC_NO_PARTIES(chipmunk_parties, tri_tri, TriTri, "Chipmunk is 2-D; the triangles are 3-D")
 CC_NO_PARTIES(chipmunk_parties, tri_tri_intersection, TriTriIntersection, "Chipmunk is 2-D; the triangles are 3-D")
+CC_NO_PARTIES(chipmunk_parties, tri_tri_distance, TriTriDistance, "Chipmunk is 2-D; the triangles are 3-D")
 
 }  // namespace cc::chipmunk_oracle

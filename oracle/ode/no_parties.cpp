@@ -11,6 +11,7 @@ CC_NO_PARTIES(ode_parties, mesh_mesh, MeshMesh, "ODE's trimesh collider merges t
 CC_NO_PARTIES(ode_parties, moving_obb, MovingObb, "ODE has no continuous collision test (its steps are discrete)")
 CC_NO_PARTIES(ode_parties, tri_aabb, TriAabb, "not wired yet: a one-triangle dTriMesh against a dBox would be one")
 CC_NO_PARTIES(ode_parties, tri_obb, TriObb, "not wired yet: a one-triangle dTriMesh against a dBox would be one")
+CC_NO_PARTIES(ode_parties, tri_tri_distance, TriTriDistance, "ODE has no distance query (its colliders give contacts)")
 CC_NO_PARTIES(ode_parties, tri_tri_intersection, TriTriIntersection, "ODE's triangle contacts are points for dynamics, not the intersection")
 
 }  // namespace cc::ode_oracle

@@ -25,6 +25,9 @@
 //  - every relation but exchanging the triangles, for tri_tri_intersection: its rounded corners
 //    change with the order of the axes and the vertices (both answers must be right, corners
 //    within their tolerance by the exact reference); exchanging the triangles is exact;
+//  - every relation, for the distance kinds: the witnesses are exchanged with the shapes and
+//    follow the axes, the scale and the vertices' order only within their bounds (both answers
+//    must be right by the exact reference);
 //  - a first hit under reordered faces may be another pair: the same hit, and a pair of all
 //    the pairs of the reordered meshes;
 //  - the closest hit of a ray under reordered faces: the same hit and t, and the face renamed,
@@ -84,6 +87,9 @@ bool another_right_answer(const Input& input, const Input& transformed, const An
   if (judged_of(kind) == Judged::corners && relation != Relation::swap_shapes) {
     return library_right(input, exact) && library_right(transformed, exact);
   }
+  // A distance's witnesses are swapped with the shapes, and follow the axes, the scale and the
+  // vertices' order only up to their bounds: both answers must be right by the exact reference.
+  if (judged_of(kind) == Judged::distance) return library_right(input, exact) && library_right(transformed, exact);
   if ((relation == Relation::permute_vertices && !ends_in_order) ||
       ((relation == Relation::permute_axes || relation == Relation::flip_axis) && ends_in_order) ||
       (relation == Relation::permute_axes && sums_in_order)) {

@@ -27,6 +27,7 @@
 #include "harness/model/inputs/tri_aabb.h"
 #include "harness/model/inputs/tri_obb.h"
 #include "harness/model/inputs/tri_tri.h"
+#include "harness/model/inputs/tri_tri_distance.h"
 #include "harness/model/inputs/tri_tri_intersection.h"
 
 /// X(name, Name) for every kind, one per line, in the order of QueryKind (which numbers the
@@ -47,4 +48,5 @@
   X(ray_mesh, RayMesh)                         \
   X(moving_obb, MovingObb)                     \
   X(disc_walls, DiscWalls)                     \
-  X(tri_tri_intersection, TriTriIntersection)
+  X(tri_tri_intersection, TriTriIntersection)  \
+  X(tri_tri_distance, TriTriDistance)

@@ -102,7 +102,8 @@ void for_each_value(harness::Input& input, F&& f) {
           tri(in.tri), box(in.box);
         } else if constexpr (std::is_same_v<T, TriObbInput>) {
           tri(in.tri), obb(in.box);
-        } else if constexpr (std::is_same_v<T, TriTriInput> || std::is_same_v<T, TriTriIntersectionInput>) {
+        } else if constexpr (std::is_same_v<T, TriTriInput> || std::is_same_v<T, TriTriIntersectionInput> ||
+                             std::is_same_v<T, TriTriDistanceInput>) {
           tri(in.a), tri(in.b);
         } else if constexpr (std::is_same_v<T, MeshMeshInput> || std::is_same_v<T, MeshMeshFirstInput>) {
           meshes(in.meshes);
@@ -203,6 +204,7 @@ inline harness::Input distinct_input(harness::QueryKind kind, DistinctValues& va
     case QueryKind::tri_obb: in = TriObbInput{}; break;
     case QueryKind::tri_tri: in = TriTriInput{}; break;
     case QueryKind::tri_tri_intersection: in = TriTriIntersectionInput{}; break;
+    case QueryKind::tri_tri_distance: in = TriTriDistanceInput{}; break;
     case QueryKind::mesh_mesh: in = MeshMeshInput{mesh_pair()}; break;
     case QueryKind::mesh_mesh_first: in = MeshMeshFirstInput{mesh_pair()}; break;
     case QueryKind::broadphase: {
