@@ -14,6 +14,11 @@
 
 #include <CGAL/Distance_2/Point_2_Point_2.h>
 #include <CGAL/Distance_2/Point_2_Segment_2.h>
+#include <CGAL/Distance_3/Point_3_Point_3.h>
+#include <CGAL/Distance_3/Point_3_Segment_3.h>
+#include <CGAL/Distance_3/Point_3_Triangle_3.h>
+#include <CGAL/Distance_3/Segment_3_Segment_3.h>
+#include <CGAL/Distance_3/Triangle_3_Triangle_3.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Intersections_3/Iso_cuboid_3_Iso_cuboid_3.h>
 #include <CGAL/Intersections_3/Iso_cuboid_3_Point_3.h>
@@ -279,9 +284,37 @@ CgalAnswer cgal_answer(const Aabb& a, const Aabb& b) { return hit_or_miss(CGAL::
 CgalAnswer cgal_answer(const Ray& ray, const Aabb& box) { return hit_or_miss(ray_meets(ray, cuboid(box))); }
 CgalAnswer cgal_answer(const Triangle& tri, const Aabb& box) { return hit_or_miss(meet(pieces(tri), cuboid(box))); }
 CgalAnswer cgal_answer(const Triangle& tri, const Obb& box) { return hit_or_miss(meet(pieces(tri), pieces(box))); }
+/// The squared distance between two pieces of triangles (points, segments, triangles).
+template <class X, class Y>
+FT squared_distance_between(const X& x, const Y& y) {
+  if constexpr (std::is_same_v<X, Tetrahedron> || std::is_same_v<Y, Tetrahedron>) {
+    throw std::logic_error("squared_distance_between: a triangle has no tetrahedron piece");
+  } else if constexpr (std::is_same_v<X, Triangle3> && std::is_same_v<Y, Segment>) {
+    return squared_distance_between(y, x);
+  } else if constexpr (std::is_same_v<X, Segment> && std::is_same_v<Y, Triangle3>) {
+    if (CGAL::do_intersect(x, y)) return 0;
+    FT least = std::min(CGAL::squared_distance(x.source(), y), CGAL::squared_distance(x.target(), y));
+    for (int i = 0; i < 3; ++i) least = std::min(least, CGAL::squared_distance(x, Segment(y.vertex(i), y.vertex((i + 1) % 3))));
+    return least;
+  } else {
+    return CGAL::squared_distance(x, y);
+  }
+}
+
+/// The largest double whose square is at most t >= 0.
+double root_down(const FT& t) {
+  const auto at_most = [&t](double d) { return FT(d) * FT(d) <= t; };
+  double d = std::sqrt(CGAL::to_double(CGAL::exact(t)));
+  if (!(d < INFINITY)) d = std::numeric_limits<double>::max();
+  while (d > 0 && !at_most(d)) d = std::nextafter(d, 0.0);
+  while (d < std::numeric_limits<double>::max() && at_most(std::nextafter(d, INFINITY))) d = std::nextafter(d, INFINITY);
+  return d;
+}
+
 CgalAnswer cgal_answer(const Triangle& a, const Triangle& b) {
   const Piece pa = pieces(a)[0], pb = pieces(b)[0];
   CgalAnswer answer = hit_or_miss(std::visit([](const auto& x, const auto& y) { return meet(x, y); }, pa, pb));
+  answer.distance_down = root_down(std::visit([](const auto& x, const auto& y) { return squared_distance_between(x, y); }, pa, pb));
   if (answer.hit) {
     for (const Point& p : std::visit([](const auto& x, const auto& y) { return corners_of(x, y); }, pa, pb)) {
       answer.corners.push_back({bracket(p.x()), bracket(p.y()), bracket(p.z())});

@@ -51,6 +51,9 @@ struct CgalAnswer {
   /// Two triangles that meet: the corners of their intersection as CGAL constructs it (a point,
   /// a segment's ends, a polygon's corners), each coordinate bracketed by the doubles around it.
   std::vector<std::array<Bracket, 3>> corners;
+  /// Two triangles: their distance rounded down, the largest double whose square is at most
+  /// CGAL's squared distance (0 where they meet).
+  std::optional<double> distance_down;
 };
 
 /// Squared distance of the centres against the squared sum of the radii.
@@ -68,7 +71,9 @@ CgalAnswer cgal_answer(const Triangle& tri, const Aabb& box);
 /// of the six tetrahedra of its Kuhn triangulation (two triangles, a segment or a point when half
 /// extents are 0).
 CgalAnswer cgal_answer(const Triangle& tri, const Obb& box);
-/// Triangle_3 (Segment_3, Point_3) against Triangle_3 (Segment_3, Point_3); when they meet,
+/// Triangle_3 (Segment_3, Point_3) against Triangle_3 (Segment_3, Point_3), and their squared
+/// distance (CGAL's squared_distance; for a segment and a triangle, which CGAL lacks, 0 where
+/// they meet, else the least of its ends against the triangle and it against the edges); when they meet,
 /// the corners of CGAL::intersection.
 CgalAnswer cgal_answer(const Triangle& a, const Triangle& b);
 /// The two parallelepipeds, each as above.

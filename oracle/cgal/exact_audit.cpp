@@ -85,6 +85,16 @@ std::string face_differences(const harness::ExactVerdict& exact, const CgalAnswe
          harness::format_double(exact_upper) + "): " + cgal_t;
 }
 
+// Where CGAL gives a distance (Judged::distance): the exact reference's, rounded down, is CGAL's
+// rounded down.
+std::string distance_differences(const harness::ExactVerdict& exact, const CgalAnswer& cgal) {
+  if (!cgal.distance_down) return "CGAL gives no distance";
+  if (exact.answer.params.size() != 1) return "the exact reference gives no distance";
+  if (exact.answer.params[0] == *cgal.distance_down) return {};
+  return "exact reference's distance " + harness::format_double(exact.answer.params[0]) + ", CGAL's " +
+         harness::format_double(*cgal.distance_down) + " (both rounded down)";
+}
+
 // Where CGAL gives the corners of two triangles' intersection and the exact reference gives them
 // too (Judged::corners): the same corners, each exact corner one of the doubles around CGAL's.
 std::string corner_differences(const harness::ExactVerdict& exact, const CgalAnswer& cgal) {
@@ -180,6 +190,9 @@ Audit audit_case(const harness::Input& input, const harness::ExactReference& exa
     if (a.why.empty()) a.why = face_differences(a.exact, a.cgal);
     if (a.why.empty() && harness::judged_of(harness::kind_of(input)) == harness::Judged::corners) {
       a.why = corner_differences(a.exact, a.cgal);
+    }
+    if (a.why.empty() && harness::judged_of(harness::kind_of(input)) == harness::Judged::distance) {
+      a.why = distance_differences(a.exact, a.cgal);
     }
   }
   a.outcome = a.why.empty() ? AuditOutcome::agree : AuditOutcome::disagree;

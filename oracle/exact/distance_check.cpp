@@ -1,6 +1,7 @@
 #include "oracle/exact/distance_check.h"
 
 #include <cmath>
+#include <limits>
 #include <sstream>
 #include <utility>
 
@@ -46,5 +47,14 @@ decltype(harness::ExactVerdict::check_distance) distance_check(Rational squared,
 }
 
 double root_of(const Rational& squared) { return sqrt(Magnitude::of(squared)).to_double(); }
+
+double root_down(const Rational& squared) {
+  const auto at_most = [&squared](double d) { return rational(d) * rational(d) <= squared; };
+  double d = root_of(squared);
+  if (d == INFINITY) return d;
+  while (d > 0 && !at_most(d)) d = std::nextafter(d, 0.0);
+  while (d < std::numeric_limits<double>::max() && at_most(std::nextafter(d, INFINITY))) d = std::nextafter(d, INFINITY);
+  return d;
+}
 
 }  // namespace cc::exact

@@ -22,4 +22,8 @@ decltype(harness::ExactVerdict::check_distance) distance_check(Rational squared,
 /// The distance of a squared one, rounded (for reports; judging uses the squares).
 double root_of(const Rational& squared);
 
+/// The largest double whose square is at most `squared` (>= 0): the distance rounded down,
+/// exactly. +inf beyond the doubles.
+double root_down(const Rational& squared);
+
 }  // namespace cc::exact

@@ -41,7 +41,7 @@ ExactVerdict judge(const harness::TriTriDistanceInput& in) {
     v.note.clear();
   }
   const Rational squared = squared_distance_between_triangles(in.a, in.b);
-  v.answer.params = {root_of(squared)};
+  v.answer.params = {root_down(squared)};
   v.scale = scale_of(magnitude);
   v.check_distance = distance_check(
       squared, [a = in.a](const QVec3& p) { return squared_distance_to_triangle(p, a); },

@@ -56,7 +56,7 @@ struct ExactVerdict {
   /// of each, rounded to nearest), and the hull of a party's corners must lie within this distance
   /// of theirs, and theirs within it of the hull (Hausdorff distance).
   double corner_tolerance = 0;
-  /// Distances (Judged::distance): answer.params holds the exact distance, rounded to nearest;
+  /// Distances (Judged::distance): answer.params holds the exact distance, rounded down;
   /// `scale` is the inputs' largest magnitude, which a second opinion's band is relative to; and
   /// check_distance(distance, on_a, on_b, distance_tolerance, point_tolerance) decides in exact
   /// arithmetic whether an answer is right: the distance within distance_tolerance of the exact
