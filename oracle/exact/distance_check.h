@@ -23,7 +23,7 @@ decltype(harness::ExactVerdict::check_distance) distance_check(Rational squared,
 double root_of(const Rational& squared);
 
 /// The largest double whose square is at most `squared` (>= 0): the distance rounded down,
-/// exactly. +inf beyond the doubles.
+/// exactly (the largest finite double beyond them).
 double root_down(const Rational& squared);
 
 }  // namespace cc::exact

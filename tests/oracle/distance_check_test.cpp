@@ -57,6 +57,8 @@ TEST(RootDown, IsTheLargestDoubleWhoseSquareIsAtMostTheValue) {
   EXPECT_EQ(root_down(tiny), 0x1p-1000);
   EXPECT_EQ(root_down(huge), 0x1p1000);
   EXPECT_EQ(root_down(tiny * 2), 0x1p-1000 * 1.4142135623730949);
+  // A subnormal root, reached without stepping up from 0 ulp by ulp.
+  EXPECT_EQ(root_down(rational(0x1p-1060) * rational(0x1p-1060)), 0x1p-1060);
 }
 
 }  // namespace
