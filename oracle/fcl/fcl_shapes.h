@@ -1,11 +1,11 @@
-// FCL's collide() on two shapes, for the kinds' units (internal to oracle/fcl).
+// FCL's collide() on two shapes and its GJK solvers' distance, for the kinds' units (internal to
+// oracle/fcl).
 #pragma once
 
 #include <fcl/geometry/collision_geometry.h>
 
 #include "collide/triangle.h"
 #include "harness/model/party.h"
-
 #include "oracle/fcl/convert.h"
 
 namespace cc::fcl_oracle {
