@@ -53,6 +53,7 @@
 
 #include "collide/kdop.h"
 #include "collide/mesh.h"
+#include "oracle/exact/distance_check.h"
 
 namespace cc::cgal {
 namespace {
@@ -301,26 +302,12 @@ FT squared_distance_between(const X& x, const Y& y) {
   }
 }
 
-/// The largest double whose square is at most t >= 0: an estimate from t brought into the
-/// doubles' normal range by powers of 4 (exact), then nudged by ulps.
-double root_down(const FT& t) {
-  if (t <= 0) return 0;
-  FT scaled = t;
-  int half_exponent = 0;
-  for (; scaled < FT(0x1p-600); half_exponent -= 100) scaled = scaled * FT(0x1p200);
-  for (; scaled > FT(0x1p600); half_exponent += 100) scaled = scaled * FT(0x1p-200);
-  double d = std::ldexp(std::sqrt(CGAL::to_double(CGAL::exact(scaled))), half_exponent);
-  if (!(d < INFINITY)) d = std::numeric_limits<double>::max();
-  const auto at_most = [&t](double x) { return FT(x) * FT(x) <= t; };
-  while (d > 0 && !at_most(d)) d = std::nextafter(d, 0.0);
-  while (d < std::numeric_limits<double>::max() && at_most(std::nextafter(d, INFINITY))) d = std::nextafter(d, INFINITY);
-  return d;
-}
-
 CgalAnswer cgal_answer(const Triangle& a, const Triangle& b) {
   const Piece pa = pieces(a)[0], pb = pieces(b)[0];
   CgalAnswer answer = hit_or_miss(std::visit([](const auto& x, const auto& y) { return meet(x, y); }, pa, pb));
-  answer.distance_down = root_down(std::visit([](const auto& x, const auto& y) { return squared_distance_between(x, y); }, pa, pb));
+  answer.distance_down = exact::root_down(
+      std::visit([](const auto& x, const auto& y) { return squared_distance_between(x, y); }, pa, pb),
+      [](const FT& t) { return CGAL::to_double(CGAL::exact(t)); });
   if (answer.hit) {
     for (const Point& p : std::visit([](const auto& x, const auto& y) { return corners_of(x, y); }, pa, pb)) {
       answer.corners.push_back({bracket(p.x()), bracket(p.y()), bracket(p.z())});

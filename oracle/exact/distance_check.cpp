@@ -1,7 +1,6 @@
 #include "oracle/exact/distance_check.h"
 
 #include <cmath>
-#include <limits>
 #include <sstream>
 #include <utility>
 
@@ -47,21 +46,5 @@ decltype(harness::ExactVerdict::check_distance) distance_check(Rational squared,
 }
 
 double root_of(const Rational& squared) { return sqrt(Magnitude::of(squared)).to_double(); }
-
-double root_down(const Rational& squared) {
-  if (squared <= 0) return 0;
-  // An estimate from the square brought into the doubles' normal range by powers of 4 (exact),
-  // then nudged by ulps.
-  Rational scaled = squared;
-  int half_exponent = 0;
-  for (; scaled < rational(0x1p-600); half_exponent -= 100) scaled *= rational(0x1p200);
-  for (; scaled > rational(0x1p600); half_exponent += 100) scaled *= rational(0x1p-200);
-  double d = std::ldexp(std::sqrt(to_double(scaled)), half_exponent);
-  if (!(d < INFINITY)) d = std::numeric_limits<double>::max();
-  const auto at_most = [&squared](double x) { return rational(x) * rational(x) <= squared; };
-  while (d > 0 && !at_most(d)) d = std::nextafter(d, 0.0);
-  while (d < std::numeric_limits<double>::max() && at_most(std::nextafter(d, INFINITY))) d = std::nextafter(d, INFINITY);
-  return d;
-}
 
 }  // namespace cc::exact

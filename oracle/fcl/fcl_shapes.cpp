@@ -1,13 +1,13 @@
-// What several kinds' units share of FCL's narrow phase: collide() on two shapes, the GJK
-// solvers' shapeDistance, and GJKSolver_libccd::shapeTriangleIntersect of a box and a triangle.
+// What several kinds' units share of FCL's narrow phase: collide() on two shapes,
+// GJKSolver_indep::shapeDistance on two triangles, and GJKSolver_libccd::shapeTriangleIntersect of a box and a triangle.
 #include "oracle/fcl/fcl_shapes.h"
 
 #include <fcl/geometry/shape/box.h>
 #include <fcl/narrowphase/collision.h>
 #include <fcl/narrowphase/detail/collision_func_matrix.h>
-#include <fcl/narrowphase/detail/gjk_solver_libccd.h>
 #include <fcl/geometry/shape/triangle_p.h>
 #include <fcl/narrowphase/detail/gjk_solver_indep.h>
+#include <fcl/narrowphase/detail/gjk_solver_libccd.h>
 
 #include "oracle/fcl/convert.h"
 #include "oracle/fcl/parties.h"
@@ -23,35 +23,25 @@ bool fcl_collide(const fcl::CollisionGeometryd& a, const fcl::Transform3d& ta, c
   return result.isCollision();
 }
 
-namespace {
-
-template <class Solver, class Shape>
-Opinion gjk_distance(const Shape& a, const Shape& b) {
-  const Solver solver;
+Opinion fcl_indep_distance(const Triangle& a, const Triangle& b) {
+  for (const Triangle* t : {&a, &b}) {
+    for (const Vec3& p : t->v) {
+      if (!finite(p)) return not_applicable("a NaN or infinite coordinate, not asked as libccd's solver is not");
+    }
+  }
+  const fcl::TriangleP<double> ta(to_fcl(a.v[0]), to_fcl(a.v[1]), to_fcl(a.v[2]));
+  const fcl::TriangleP<double> tb(to_fcl(b.v[0]), to_fcl(b.v[1]), to_fcl(b.v[2]));
+  const fcl::detail::GJKSolver_indep<double> solver;
   const fcl::Transform3d identity = fcl::Transform3d::Identity();
   double distance = 0;
   fcl::Vector3d p, q;
   const bool returned =
-      run_with_time_limit(kLibccdTimeLimit, [&] { solver.shapeDistance(a, identity, b, identity, &distance, &p, &q); });
+      run_with_time_limit(kLibccdTimeLimit, [&] { solver.shapeDistance(ta, identity, tb, identity, &distance, &p, &q); });
   if (!returned) return timed_out("did not return within " + std::to_string(kLibccdTimeLimit) + " s (its GJK loop)");
   if (distance < 0) return answered(true);
   harness::Answer answer = harness::Answer::of(distance <= 0);
   answer.params = {distance, p.x(), p.y(), p.z(), q.x(), q.y(), q.z()};
   return answered(answer);
-}
-
-}  // namespace
-
-Opinion fcl_gjk_distance(const Triangle& a, const Triangle& b, GjkSolver solver) {
-  for (const Triangle* t : {&a, &b}) {
-    for (const Vec3& p : t->v) {
-      if (!finite(p)) return not_applicable("a NaN or infinite coordinate, on which libccd reads memory it never set");
-    }
-  }
-  const fcl::TriangleP<double> ta(to_fcl(a.v[0]), to_fcl(a.v[1]), to_fcl(a.v[2]));
-  const fcl::TriangleP<double> tb(to_fcl(b.v[0]), to_fcl(b.v[1]), to_fcl(b.v[2]));
-  return solver == GjkSolver::libccd ? gjk_distance<fcl::detail::GJKSolver_libccd<double>>(ta, tb)
-                                     : gjk_distance<fcl::detail::GJKSolver_indep<double>>(ta, tb);
 }
 
 Opinion fcl_shape_triangle(const Vec3& half, const Mat3& axes, const Vec3& center, const Triangle& t) {

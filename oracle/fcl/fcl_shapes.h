@@ -14,14 +14,11 @@ namespace cc::fcl_oracle {
 bool fcl_collide(const fcl::CollisionGeometryd& a, const fcl::Transform3d& ta, const fcl::CollisionGeometryd& b,
                  const fcl::Transform3d& tb);
 
-/// A GJK solver of FCL's narrow phase: GJKSolver_libccd or GJKSolver_indep.
-enum class GjkSolver { libccd, indep };
-
-/// The solver's shapeDistance on two triangles at identity placements (its generic GJK: FCL
-/// 0.7's distance() has no function for a pair of TriangleP), under the libccd time limit: the
-/// distance and the two points (params, Judged::distance), or, where the solver finds them in
-/// collision (it then gives -1), a hit with no distance. Not applicable to a NaN or infinite
-/// coordinate.
-harness::Opinion fcl_gjk_distance(const Triangle& a, const Triangle& b, GjkSolver solver);
+/// GJKSolver_indep's shapeDistance on two triangles at identity placements (its generic GJK:
+/// FCL 0.7's distance() has no function for a pair of TriangleP, and GJKSolver_libccd's crashes
+/// on them), under the libccd time limit: the distance and the two points (params,
+/// Judged::distance), or, where it finds them in collision (it then gives -1), a hit with no
+/// distance. Not asked on a NaN or infinite coordinate, as the libccd solver is not.
+harness::Opinion fcl_indep_distance(const Triangle& a, const Triangle& b);
 
 }  // namespace cc::fcl_oracle

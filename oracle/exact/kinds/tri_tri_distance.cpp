@@ -54,8 +54,8 @@ harness::Explanation explain(const harness::TriTriDistanceInput& in) {
   harness::Explanation e = explain(harness::TriTriInput{in.a, in.b});
   if (!all_finite(in.a) || !all_finite(in.b)) return e;
   char text[64];
-  std::snprintf(text, sizeof text, "%.17g", root_of(squared_distance_between_triangles(in.a, in.b)));
-  e.facts.emplace_back("exact distance", text);
+  std::snprintf(text, sizeof text, "%.17g", root_down(squared_distance_between_triangles(in.a, in.b)));
+  e.facts.emplace_back("exact distance (rounded down)", text);
   return e;
 }
 

@@ -37,7 +37,7 @@ const std::vector<Party<harness::TriTriDistanceInput>>& fcl_parties() {
          return answered(answer);
        }},
       {"fcl.GJKSolver_indep::shapeDistance(TriangleP)", kGjkDistanceBand,
-       [](const harness::TriTriDistanceInput& in) { return fcl_gjk_distance(in.a, in.b, GjkSolver::indep); }}};
+       [](const harness::TriTriDistanceInput& in) { return fcl_indep_distance(in.a, in.b); }}};
   return parties;
 }
 

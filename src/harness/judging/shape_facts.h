@@ -34,6 +34,23 @@ inline bool nearly_parallel(const Vec3& a, const Vec3& b) {
 /// Edge i of a triangle, from vertex i to the next, and its normal (edge 0 x edge 1).
 inline Vec3 edge(const Triangle& t, int i) { return t.v[static_cast<std::size_t>((i + 1) % 3)] - t.v[static_cast<std::size_t>(i)]; }
 inline Vec3 normal(const Triangle& t) { return cross(edge(t, 0), edge(t, 1)); }
+
+/// Two triangles in one plane, as computed: parallel normals and b's vertices on a's plane.
+inline bool coplanar(const Triangle& a, const Triangle& b) {
+  const Vec3 na = normal(a);
+  bool in_plane = parallel(na, normal(b));
+  for (const Vec3& p : b.v) in_plane &= dot(na, p - a.v[0]) == 0;
+  return in_plane;
+}
+
+/// An edge of a parallel to an edge of b.
+inline bool parallel_edges(const Triangle& a, const Triangle& b) {
+  bool any = false;
+  for (int i = 0; i < 3; ++i) {
+    for (int j = 0; j < 3; ++j) any |= parallel(edge(a, i), edge(b, j));
+  }
+  return any;
+}
 inline double longest_edge(const Triangle& t) { return std::max({length(edge(t, 0)), length(edge(t, 1)), length(edge(t, 2))}); }
 inline double max_coordinate(const Triangle& t) { return std::max({max_abs(t.v[0]), max_abs(t.v[1]), max_abs(t.v[2])}); }
 

@@ -102,10 +102,7 @@ void Query<TriTriInput>::touch(TriTriInput& in, ValueSource& v) {
 
 Features Query<TriTriInput>::features(const TriTriInput& in) {
   Features f;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) f.parallel |= parallel(edge(in.a, i), edge(in.b, j));
-  }
-  f.parallel |= parallel(normal(in.a), normal(in.b));
+  f.parallel = parallel_edges(in.a, in.b) || parallel(normal(in.a), normal(in.b));
   f.degenerate = degenerate(in.a) || degenerate(in.b);
   return f;
 }
@@ -115,11 +112,8 @@ std::span<const std::string_view> Query<TriTriInput>::configurations() { return 
 void Query<TriTriInput>::recognise(const TriTriInput& in, Configurations& found) {
   found.margins();
   found.triangle(in.a), found.triangle(in.b);
-  const Vec3 na = normal(in.a), nb = normal(in.b);
-  bool coplanar = parallel(na, nb);
-  for (const Vec3& p : in.b.v) coplanar &= dot(na, p - in.a.v[0]) == 0;
-  found.add("coplanar", coplanar);
-  found.add("nearly coplanar", nearly_parallel(na, nb));
+  found.add("coplanar", coplanar(in.a, in.b));
+  found.add("nearly coplanar", nearly_parallel(normal(in.a), normal(in.b)));
   bool par = false, nearly = false;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) par |= parallel(edge(in.a, i), edge(in.b, j)), nearly |= nearly_parallel(edge(in.a, i), edge(in.b, j));

@@ -142,15 +142,8 @@ void Query<TriTriDistanceInput>::recognise(const TriTriDistanceInput& in, Config
   const ExactVerdict& exact = found.exact();
   found.add("apart", exact.contract == Contract::in && exact.decided && exact.margin < -kJust);
   found.triangle(in.a), found.triangle(in.b);
-  const Vec3 na = normal(in.a), nb = normal(in.b);
-  bool coplanar = parallel(na, nb);
-  for (const Vec3& p : in.b.v) coplanar &= dot(na, p - in.a.v[0]) == 0;
-  found.add("parallel faces", parallel(na, nb) && !coplanar);
-  bool edges = false;
-  for (int i = 0; i < 3; ++i) {
-    for (int j = 0; j < 3; ++j) edges |= parallel(edge(in.a, i), edge(in.b, j));
-  }
-  found.add("parallel edges", edges);
+  found.add("parallel faces", parallel(normal(in.a), normal(in.b)) && !coplanar(in.a, in.b));
+  found.add("parallel edges", parallel_edges(in.a, in.b));
   const double largest = std::max(max_coordinate(in.a), max_coordinate(in.b));
   found.add("tiny", largest > 0 && largest < 0x1p-200);
   found.add("huge", largest > 0x1p200);

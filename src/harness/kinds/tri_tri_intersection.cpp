@@ -107,11 +107,8 @@ void Query<TriTriIntersectionInput>::recognise(const TriTriIntersectionInput& in
   found.add("meet at a point", corners == 1);
   found.add("meet along a segment", corners == 2);
   found.add("meet in a polygon", corners >= 3);
-  const Vec3 na = normal(in.a), nb = normal(in.b);
-  bool coplanar = parallel(na, nb);
-  for (const Vec3& p : in.b.v) coplanar &= dot(na, p - in.a.v[0]) == 0;
-  found.add("coplanar", coplanar);
-  found.add("nearly coplanar", nearly_parallel(na, nb));
+  found.add("coplanar", coplanar(in.a, in.b));
+  found.add("nearly coplanar", nearly_parallel(normal(in.a), normal(in.b)));
   const double largest = std::max(max_coordinate(in.a), max_coordinate(in.b));
   // A corner's tolerance over 2^-34 of the scale: a condition number over 2^10.
   found.add("ill-conditioned corner", found.exact().corner_tolerance > 0x1p-34 * largest);

@@ -1,15 +1,12 @@
 // The tri_tri_distance kind's unit: its answer (the distance, the witnesses and their bounds), its
 // exact verdict and how a distance, a witness off its triangle, or witnesses too far apart are
-// judged, for the library and for a peer, its domain, and what its generator makes.
+// judged, for the library and for a peer, and its domain. (That its generator makes every
+// configuration it declares is a property of every kind: tests/properties/property.h.)
 #include "harness/kinds/tri_tri_distance.h"
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
-
-#include "harness/generation/generate.h"
 #include "harness/judging/classify.h"
-#include "harness/judging/configurations.h"
 #include "harness/model/library.h"
 #include "oracle/exact/exact_reference.h"
 
@@ -106,22 +103,6 @@ TEST(TriTriDistanceKind, TheDomainReachesFrom0To2To500) {
   EXPECT_EQ(exact.judge(scaled(0x1p600)).contract, Contract::unspecified);
   const Input tiny = scaled(0x1p-1000);
   EXPECT_EQ(classify(QueryKind::tri_tri_distance, ask_library(tiny), exact.judge(tiny), {}).cls, CaseClass::agree);
-}
-
-TEST(TriTriDistanceKind, TheGeneratorMakesEveryConfiguration) {
-  const exact::ExactRationalReference exact;
-  std::vector<std::string_view> seen;
-  RandomChoices c(11);
-  const GenerateOptions options{.exact = &exact};
-  for (int i = 0; i < 3000; ++i) {
-    const Input in = generate(QueryKind::tri_tri_distance, c, options);
-    for (std::string_view name : configurations_of(in, exact.judge(in))) {
-      if (std::find(seen.begin(), seen.end(), name) == seen.end()) seen.push_back(name);
-    }
-  }
-  for (std::string_view name : Kind::configurations()) {
-    EXPECT_NE(std::find(seen.begin(), seen.end(), name), seen.end()) << name;
-  }
 }
 
 }  // namespace
