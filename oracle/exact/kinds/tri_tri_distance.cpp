@@ -40,12 +40,10 @@ ExactVerdict judge(const harness::TriTriDistanceInput& in) {
     v.contract = harness::Contract::in;
     v.note.clear();
   }
-  const Rational squared = squared_distance_between_triangles(in.a, in.b);
-  v.answer.params = {root_down(squared)};
+  const ExactSignedDistance exact{squared_distance_between_triangles(in.a, in.b)};
+  v.answer.params = {rounded_down(exact)};
   v.scale = scale_of(magnitude);
-  v.check_distance = distance_check(
-      squared, [a = in.a](const QVec3& p) { return squared_distance_to_triangle(p, a); },
-      [b = in.b](const QVec3& p) { return squared_distance_to_triangle(p, b); });
+  v.check_distance = distance_check(exact, boundary_of(in.a), boundary_of(in.b));
   return v;
 }
 

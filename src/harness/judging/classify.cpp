@@ -202,9 +202,10 @@ std::optional<std::string> corners_wrong(const Answer& said, const ExactVerdict&
 
 // A distance and its closest pair, each within the bounds the party certified with them (a
 // distance query of the library gives them after the pair) or else within the party's band of
-// the inputs' scale, decided in exact arithmetic by the reference. The hit follows from the
-// distance (0 or less where the shapes meet) and is not judged apart from it, but for a party
-// that gives no distance where it finds the shapes meeting.
+// the inputs' scale, decided in exact arithmetic by the reference. A party may give the distance
+// alone (its points are not on the shapes, as FCL's signed distance through contacts). The hit
+// follows from the distance (0 or less where the shapes meet) and is not judged apart from it,
+// but for a party that gives no distance where it finds the shapes meeting.
 PartyStanding judge_distance(std::string party, const Band& band, const Answer& said, const ExactVerdict& exact) {
   PartyStanding p{std::move(party), Standing::right, ""};
   if (said.params.empty()) {  // "in collision", with no distance (FCL's unsigned distance): the hit alone
@@ -216,18 +217,19 @@ PartyStanding judge_distance(std::string party, const Band& band, const Answer& 
   }
   std::ostringstream s;
   s.precision(17);
-  if (said.params.size() != 7 && said.params.size() != 9) {
-    s << "gives " << said.params.size() << " numbers, not a distance and two points (and two bounds)";
+  const std::vector<double>& q = said.params;
+  if (q.size() != 1 && q.size() != 7 && q.size() != 9) {
+    s << "gives " << q.size() << " numbers, not a distance (and two points, and two bounds)";
   } else if (!exact.check_distance) {
     throw std::invalid_argument("the exact verdict of a distance query has no check_distance");
   } else {
-    const std::vector<double>& q = said.params;
     const bool certified = q.size() == 9;
-    const double distance_tolerance = certified ? q[7] : band.param_width * exact.scale;
-    const double point_tolerance = certified ? q[8] : band.param_width * exact.scale;
-    if (auto why = exact.check_distance(q[0], {q[1], q[2], q[3]}, {q[4], q[5], q[6]}, distance_tolerance, point_tolerance)) {
-      s << *why << " (" << (certified ? "its own bounds " : "its band's ") << distance_tolerance << " and " << point_tolerance
-        << ')';
+    DistanceClaim claim{q[0], q.size() > 1, {}, {}, certified ? q[7] : band.param_width * exact.scale,
+                        certified ? q[8] : band.param_width * exact.scale};
+    if (claim.witnessed) claim.on_a = {q[1], q[2], q[3]}, claim.on_b = {q[4], q[5], q[6]};
+    if (auto why = exact.check_distance(claim)) {
+      s << *why << " (" << (certified ? "its own bounds " : "its band's ") << claim.distance_tolerance << " and "
+        << claim.point_tolerance << ')';
     }
   }
   if (!s.str().empty()) {

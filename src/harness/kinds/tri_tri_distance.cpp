@@ -11,6 +11,7 @@
 #include <utility>
 
 #include "collide/triangle_distance.h"
+#include "harness/generation/gaps.h"
 #include "harness/generation/regimes.h"
 #include "harness/generation/rotation.h"
 #include "harness/generation/triangles.h"
@@ -31,16 +32,6 @@ Plane draw_plane(ValueSource& v) {
   const double size = draw_size(v);
   const Mat3 frame = draw_rotation(v);
   return {v.point(), size * frame.col[0], size * frame.col[1], size * frame.col[2]};
-}
-
-// The gap between the closest features, in units of the size: 0, 2^-k for k in [0, 60] (from
-// apart by the size down to a few ULPs), or minus that (crossing by as much).
-double draw_gap(Choices& c) {
-  switch (c.draw(3)) {
-    case 0: return 0;
-    case 1: return std::ldexp(1.0, -static_cast<int>(c.draw(61)));
-    default: return -std::ldexp(1.0, -static_cast<int>(c.draw(61)));
-  }
 }
 
 // Two triangles whose closest features are drawn: a in the plane h = 0, b at the gap above it.
@@ -78,26 +69,6 @@ TriTriDistanceInput closest_features(ValueSource& v) {
   return in;
 }
 
-// Every coordinate times 2^e, e in [-300, 300], when no coordinate leaves [2^-1000, 2^500] (so
-// that the scaling is exact and the case stays in the domain).
-void scale_by_a_power_of_two(TriTriDistanceInput& in, Choices& c) {
-  const int e = static_cast<int>(c.draw(601)) - 300;
-  double largest = 0, smallest = INFINITY;
-  for (const Triangle* t : {&in.a, &in.b}) {
-    for (const Vec3& p : t->v) {
-      for (int k = 0; k < 3; ++k) {
-        const double x = std::fabs(p[k]);
-        largest = std::max(largest, x);
-        if (x > 0) smallest = std::min(smallest, x);
-      }
-    }
-  }
-  if (!(std::ldexp(largest, e) <= 0x1p500) || (smallest < INFINITY && std::ldexp(smallest, e) < 0x1p-1000)) return;
-  for (Triangle* t : {&in.a, &in.b}) {
-    for (Vec3& p : t->v) p = std::ldexp(1.0, e) * p;
-  }
-}
-
 constexpr std::string_view kConfigurations[] = {
     "touching", "just apart", "just overlapping", "apart", "segment triangle", "point triangle", "sliver",
     "parallel faces", "parallel edges", "tiny", "huge", "far from the origin"};
@@ -120,7 +91,12 @@ TriTriDistanceInput Query<TriTriDistanceInput>::generate(ValueSource& v, const G
   } else {
     in = closest_features(v);
   }
-  if (!options.out_of_contract && v.choices().chance(30)) scale_by_a_power_of_two(in, v.choices());
+  if (!options.out_of_contract && v.choices().chance(30)) {
+    Triangle &a = in.a, &b = in.b;
+    scale_by_a_power_of_two(v.choices(), {&a.v[0].x, &a.v[0].y, &a.v[0].z, &a.v[1].x, &a.v[1].y, &a.v[1].z, &a.v[2].x,
+                                          &a.v[2].y, &a.v[2].z, &b.v[0].x, &b.v[0].y, &b.v[0].z, &b.v[1].x, &b.v[1].y,
+                                          &b.v[1].z, &b.v[2].x, &b.v[2].y, &b.v[2].z});
+  }
   if (v.choices().chance(50)) std::swap(in.a, in.b);
   return in;
 }

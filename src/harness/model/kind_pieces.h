@@ -37,9 +37,10 @@ enum class Judged {
   first_pair,  // the pair named must be an exact one; a miss leaves only pairs within the band
   frames,      // every pair of every frame
   corners,     // the hit, then the corners it gives (params: x, y, z of each) against the exact ones
-  distance,    // the distance and a closest pair (params: d, then x, y, z of a point of a, of b),
-               // within the bounds the party certifies (params 8 and 9: distance and point
-               // error) or else its band, relative to the inputs' scale (ExactVerdict::check_distance)
+  distance,    // the signed distance and a closest pair (params: d, then x, y, z of a point of a,
+               // of b; or d alone), within the bounds the party certifies (params 8 and 9:
+               // distance and point error) or else its band, relative to the inputs' scale
+               // (ExactVerdict::check_distance)
 };
 
 /// One term of a certified error bound that the kind's cases measure (judging/bound_coverage.h):

@@ -26,6 +26,16 @@ enum class Contract {
   unspecified,  // outside it, and the library only promises not to crash
 };
 
+/// A distance answer to check (ExactVerdict::check_distance): the signed distance (< 0: minus
+/// the penetration depth), a point on each shape where the answer gives them (`witnessed`), and
+/// the tolerances it is judged with.
+struct DistanceClaim {
+  double distance = 0;
+  bool witnessed = false;
+  Vec3 on_a, on_b;
+  double distance_tolerance = 0, point_tolerance = 0;
+};
+
 /// A pair of triangles of two meshes and its exact margin (as ExactVerdict::margin).
 struct PairMargin {
   FacePair pair;
@@ -56,17 +66,16 @@ struct ExactVerdict {
   /// of each, rounded to nearest), and the hull of a party's corners must lie within this distance
   /// of theirs, and theirs within it of the hull (Hausdorff distance).
   double corner_tolerance = 0;
-  /// Distances (Judged::distance): answer.params holds the exact distance, rounded down;
+  /// Distances (Judged::distance): answer.params holds the exact signed distance (the distance
+  /// apart, or minus the penetration depth), rounded (toward zero where it is a bare root);
   /// `scale` is the inputs' largest magnitude, which a second opinion's band is relative to; and
-  /// check_distance(distance, on_a, on_b, distance_tolerance, point_tolerance) decides in exact
-  /// arithmetic whether an answer is right: the distance within distance_tolerance of the exact
-  /// one, each point within point_tolerance of its shape, and the points as far apart as the
-  /// distance says, within distance_tolerance + 2 point_tolerance. Nothing when right, else why
-  /// not. Empty for the other kinds.
+  /// check_distance(claim) decides in exact arithmetic whether an answer is right: the distance
+  /// within distance_tolerance of the exact one and, where the answer gives points, each within
+  /// point_tolerance of its shape's boundary and the two as far apart as the distance says,
+  /// within distance_tolerance + 2 point_tolerance. Nothing when right, else why not. Empty for
+  /// the other kinds.
   double scale = 0;
-  std::function<std::optional<std::string>(double distance, const Vec3& on_a, const Vec3& on_b,
-                                           double distance_tolerance, double point_tolerance)>
-      check_distance;
+  std::function<std::optional<std::string>(const DistanceClaim& claim)> check_distance;
 
   /// The margin of a pair of a mesh query.
   double margin_of(const FacePair& pair) const;
