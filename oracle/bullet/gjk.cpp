@@ -2,6 +2,7 @@
 
 #include <BulletCollision/CollisionShapes/btBoxShape.h>
 #include <BulletCollision/CollisionShapes/btTriangleShape.h>
+#include <BulletCollision/NarrowPhaseCollision/btGjkEpa2.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkEpaPenetrationDepthSolver.h>
 #include <BulletCollision/NarrowPhaseCollision/btGjkPairDetector.h>
 #include <BulletCollision/NarrowPhaseCollision/btVoronoiSimplexSolver.h>
@@ -36,6 +37,14 @@ std::optional<GjkClosest> gjk_closest(const btConvexShape& a, const btTransform&
   Closest result;
   gjk.getClosestPoints(input, result, nullptr);
   return result.reported;
+}
+
+std::optional<double> epa_signed_distance(const Vec3& center, double radius, const btConvexShape& shape,
+                                          const btTransform& place) {
+  btGjkEpaSolver2::sResults results;
+  const btScalar d = btGjkEpaSolver2::SignedDistance(to_bullet(center), radius, &shape, place, results);
+  if (d == SIMD_INFINITY) return std::nullopt;
+  return d;
 }
 
 std::optional<double> gjk_distance(const btConvexShape& a, const btTransform& place_a, const btConvexShape& b,

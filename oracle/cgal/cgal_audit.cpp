@@ -14,8 +14,10 @@
 
 #include <CGAL/Distance_2/Point_2_Point_2.h>
 #include <CGAL/Distance_2/Point_2_Segment_2.h>
+#include <CGAL/Distance_3/Point_3_Plane_3.h>
 #include <CGAL/Distance_3/Point_3_Point_3.h>
 #include <CGAL/Distance_3/Point_3_Segment_3.h>
+#include <CGAL/Distance_3/Point_3_Tetrahedron_3.h>
 #include <CGAL/Distance_3/Point_3_Triangle_3.h>
 #include <CGAL/Distance_3/Segment_3_Segment_3.h>
 #include <CGAL/Distance_3/Triangle_3_Triangle_3.h>
@@ -124,9 +126,13 @@ Pieces pieces(const Obb& b) {
     // Kuhn: one tetrahedron per order of the three edges, along the diagonal corner..far.
     const Point far = corner + edges[0] + edges[1] + edges[2];
     std::array<int, 3> order = {0, 1, 2};
+    // Each positively oriented: CGAL 5.5's squared_distance(Point_3, Tetrahedron_3) takes a
+    // point on the negative side of any face as outside, so on a negatively oriented one it
+    // measures points inside as outside.
     do {
-      const Point p1 = corner + edges[order[0]];
-      out.push_back(Tetrahedron(corner, p1, p1 + edges[order[1]], far));
+      const Point p1 = corner + edges[order[0]], p2 = p1 + edges[order[1]];
+      const Tetrahedron t(corner, p1, p2, far);
+      out.push_back(t.orientation() == CGAL::NEGATIVE ? Tetrahedron(p1, corner, p2, far) : t);
     } while (std::next_permutation(order.begin(), order.end()));
   }
   for (const Piece& piece : out) {
@@ -278,6 +284,46 @@ CgalAnswer cgal_answer(const Sphere& a, const Sphere& b) {
   const int sign = CGAL::sign(reach * reach - CGAL::squared_distance(point(a.center), point(b.center)));
   CgalAnswer answer = hit_or_miss(sign >= 0);
   answer.margin_sign = sign;
+  answer.distance_down = exact::signed_distance_down(1, CGAL::squared_distance(point(a.center), point(b.center)), reach,
+                                                     [](const FT& t) { return CGAL::to_double(CGAL::exact(t)); });
+  return answer;
+}
+
+CgalAnswer cgal_answer(const Sphere& ball, const Obb& box) {
+  require_finite({ball.center, {ball.radius, 0, 0}});
+  require(ball.radius >= 0, "negative radius");
+  const Point c = point(ball.center);
+  // The centre's squared distance to the box: the least over its pieces, 0 in one.
+  std::optional<FT> outside;
+  for (const Piece& piece : pieces(box)) {
+    const FT d = std::visit([&c](const auto& s) { return CGAL::squared_distance(c, s); }, piece);
+    if (!outside || d < *outside) outside = d;
+  }
+  // In the box: its squared distance to the boundary, the least over the planes of the six faces
+  // (each through three corners); 0 for a flat box, which is all boundary.
+  FT depth = 0;
+  bool solid = true;
+  for (int i = 0; i < 3; ++i) solid = solid && box.half[i] > 0;
+  if (*outside == 0 && solid) {
+    std::optional<FT> least;
+    const Vector half_axis[3] = {vector(box.axes.col[0]) * FT(box.half[0]), vector(box.axes.col[1]) * FT(box.half[1]),
+                                 vector(box.axes.col[2]) * FT(box.half[2])};
+    for (int i = 0; i < 3; ++i) {
+      const Vector &u = half_axis[(i + 1) % 3], &w = half_axis[(i + 2) % 3];
+      for (int side : {1, -1}) {
+        const Point face = point(box.center) + half_axis[i] * FT(side);
+        const FT d = CGAL::squared_distance(c, K::Plane_3(face + u + w, face - u + w, face + u - w));
+        if (!least || d < *least) least = d;
+      }
+    }
+    depth = *least;
+  }
+  const bool inside = *outside == 0;
+  const FT squared = inside ? depth : *outside, reach(ball.radius);
+  CgalAnswer answer = hit_or_miss(inside || squared <= reach * reach);
+  answer.margin_sign = inside ? (squared > 0 || reach > 0 ? 1 : 0) : CGAL::sign(reach * reach - squared);
+  answer.distance_down = exact::signed_distance_down(inside ? -1 : 1, squared, reach,
+                                                     [](const FT& t) { return CGAL::to_double(CGAL::exact(t)); });
   return answer;
 }
 

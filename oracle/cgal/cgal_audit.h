@@ -51,13 +51,20 @@ struct CgalAnswer {
   /// Two triangles that meet: the corners of their intersection as CGAL constructs it (a point,
   /// a segment's ends, a polygon's corners), each coordinate bracketed by the doubles around it.
   std::vector<std::array<Bracket, 3>> corners;
-  /// Two triangles: their distance rounded down, the largest double whose square is at most
-  /// CGAL's squared distance (0 where they meet).
+  /// The distance kinds: the signed distance rounded down (two triangles: the largest double whose
+  /// square is at most CGAL's squared distance, 0 where they meet).
   std::optional<double> distance_down;
 };
 
-/// Squared distance of the centres against the squared sum of the radii.
+/// Squared distance of the centres against the squared sum of the radii; the signed distance
+/// |c_b - c_a| - r_a - r_b rounded down.
 CgalAnswer cgal_answer(const Sphere& a, const Sphere& b);
+/// A ball against the parallelepiped the box's axes span: the centre's squared distance to the
+/// box (CGAL's squared_distance to the pieces of the box, as below: 0 in it) and, for a centre in
+/// the box, to its boundary (the least over the planes of its six faces, each through three
+/// corners; 0 for a flat box); the signed distance (minus the depth inside) less the radius,
+/// rounded down.
+CgalAnswer cgal_answer(const Sphere& ball, const Obb& box);
 /// Iso_cuboid_3 against Iso_cuboid_3.
 CgalAnswer cgal_answer(const Aabb& a, const Aabb& b);
 /// The points origin + t dir, tmin <= t <= tmax (a Segment_3, a Ray_3, a line as two Ray_3 from

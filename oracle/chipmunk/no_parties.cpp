@@ -15,6 +15,8 @@ CC_NO_PARTIES(chipmunk_parties, obb_obb, ObbObb, "Chipmunk is 2-D; the boxes are
 CC_NO_PARTIES(chipmunk_parties, ray_aabb, RayAabb, "Chipmunk is 2-D; the rays and boxes are 3-D")
 CC_NO_PARTIES(chipmunk_parties, ray_mesh, RayMesh, "Chipmunk is 2-D and has no triangle meshes")
 CC_NO_PARTIES(chipmunk_parties, sphere_sphere, SphereSphere, "Chipmunk is 2-D; the spheres are 3-D")
+CC_NO_PARTIES(chipmunk_parties, sphere_obb_distance, SphereObbDistance, "Chipmunk is 2-D; the ball and the box are 3-D")
+CC_NO_PARTIES(chipmunk_parties, sphere_sphere_distance, SphereSphereDistance, "Chipmunk is 2-D; the balls are 3-D")
 CC_NO_PARTIES(chipmunk_parties, tri_aabb, TriAabb, "Chipmunk is 2-D; the triangle and the box are 3-D")
 CC_NO_PARTIES(chipmunk_parties, tri_obb, TriObb, "Chipmunk is 2-D; the triangle and the box are 3-D")
 CC_NO_PARTIES(chipmunk_parties, tri_tri, TriTri, "Chipmunk is 2-D; the triangles are 3-D")

@@ -1,9 +1,11 @@
-// What several kinds' units share of FCL's narrow phase: collide() on two shapes,
-// GJKSolver_indep::shapeDistance on two triangles, and GJKSolver_libccd::shapeTriangleIntersect of a box and a triangle.
+// What several kinds' units share of FCL's narrow phase: collide() and distance() on two shapes,
+// GJKSolver_indep::shapeDistance on two triangles, and GJKSolver_libccd::shapeTriangleIntersect of
+// a box and a triangle.
 #include "oracle/fcl/fcl_shapes.h"
 
 #include <fcl/geometry/shape/box.h>
 #include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
 #include <fcl/narrowphase/detail/collision_func_matrix.h>
 #include <fcl/geometry/shape/triangle_p.h>
 #include <fcl/narrowphase/detail/gjk_solver_indep.h>
@@ -41,6 +43,28 @@ Opinion fcl_indep_distance(const Triangle& a, const Triangle& b) {
   if (distance < 0) return answered(true);
   harness::Answer answer = harness::Answer::of(distance <= 0);
   answer.params = {distance, p.x(), p.y(), p.z(), q.x(), q.y(), q.z()};
+  return answered(answer);
+}
+
+Opinion fcl_distance(const fcl::CollisionGeometryd& a, const fcl::Transform3d& ta, const fcl::CollisionGeometryd& b,
+                     const fcl::Transform3d& tb, FclDistanceRequest how) {
+  fcl::DistanceRequestd request;
+  request.enable_nearest_points = true;
+  request.enable_signed_distance = how.signed_distance;
+  request.gjk_solver_type = how.indep_solver ? fcl::GST_INDEP : fcl::GST_LIBCCD;
+  fcl::DistanceResultd result;
+  const Guarded outcome = run_guarded(kLibccdTimeLimit, [&] { fcl::distance(&a, ta, &b, tb, request, result); });
+  if (outcome == Guarded::timed_out) return timed_out("did not return within " + std::to_string(kLibccdTimeLimit) + " s");
+  if (outcome == Guarded::aborted) return failed("aborted (a failed assertion in FCL)");
+  const double d = result.min_distance;
+  if (d < 0 && !how.signed_distance) return answered(true);
+  harness::Answer answer = harness::Answer::of(d <= 0);
+  if (d < 0 && how.indep_solver) {
+    answer.params = {d};
+  } else {
+    const fcl::Vector3d &p = result.nearest_points[0], &q = result.nearest_points[1];
+    answer.params = {d, p.x(), p.y(), p.z(), q.x(), q.y(), q.z()};
+  }
   return answered(answer);
 }
 

@@ -11,6 +11,8 @@ CC_NO_PARTIES(ode_parties, mesh_mesh, MeshMesh, "ODE's trimesh collider merges t
 CC_NO_PARTIES(ode_parties, moving_obb, MovingObb, "ODE has no continuous collision test (its steps are discrete)")
 CC_NO_PARTIES(ode_parties, tri_aabb, TriAabb, "not wired yet: a one-triangle dTriMesh against a dBox would be one")
 CC_NO_PARTIES(ode_parties, tri_obb, TriObb, "not wired yet: a one-triangle dTriMesh against a dBox would be one")
+CC_NO_PARTIES(ode_parties, sphere_obb_distance, SphereObbDistance, "ODE has no distance query (its colliders give contacts; dGeomBoxPointDepth is a point's, not a ball's)")
+CC_NO_PARTIES(ode_parties, sphere_sphere_distance, SphereSphereDistance, "ODE has no distance query (its colliders give contacts; dGeomSpherePointDepth is a point's, not a ball's)")
 CC_NO_PARTIES(ode_parties, tri_tri_distance, TriTriDistance, "ODE has no distance query (its colliders give contacts)")
 CC_NO_PARTIES(ode_parties, tri_tri_intersection, TriTriIntersection, "ODE's triangle contacts are points for dynamics, not the intersection")
 

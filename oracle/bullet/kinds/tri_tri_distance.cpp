@@ -12,10 +12,7 @@ namespace cc::bullet_oracle {
 template <>
 const std::vector<Party<harness::TriTriDistanceInput>>& bullet_parties() {
   static const std::vector<Party<harness::TriTriDistanceInput>> parties = {
-      {"bullet.btGjkPairDetector",
-       {kGjkBand.width, kGjkBand.sides, 0x1p-9,
-        "GJK's absolute tolerances (about 1e-3) and its relative one on the squared distance (1e-6): the band they "
-        "mean at unit scale"},
+      {"bullet.btGjkPairDetector", kGjkDistanceBand,
        [](const harness::TriTriDistanceInput& in) {
          btTriangleShape a(to_bullet(in.a.v[0]), to_bullet(in.a.v[1]), to_bullet(in.a.v[2]));
          btTriangleShape b(to_bullet(in.b.v[0]), to_bullet(in.b.v[1]), to_bullet(in.b.v[2]));

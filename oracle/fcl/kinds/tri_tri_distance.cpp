@@ -11,14 +11,6 @@
 #include "oracle/fcl/parties.h"
 
 namespace cc::fcl_oracle {
-namespace {
-
-// GJK stops when an iteration improves the distance by less than its tolerance (1e-6, not
-// scaled): 2^-19 at unit scale.
-constexpr Band kGjkDistanceBand{0x1p-19, BandSides::two_sided, 0x1p-19,
-                                "GJK's distance tolerance (1e-6, absolute): the band it means at unit scale"};
-
-}  // namespace
 
 template <>
 const std::vector<Party<harness::TriTriDistanceInput>>& fcl_parties() {

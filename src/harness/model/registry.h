@@ -23,7 +23,9 @@
 #include "harness/model/inputs/obb_obb.h"
 #include "harness/model/inputs/ray_aabb.h"
 #include "harness/model/inputs/ray_mesh.h"
+#include "harness/model/inputs/sphere_obb_distance.h"
 #include "harness/model/inputs/sphere_sphere.h"
+#include "harness/model/inputs/sphere_sphere_distance.h"
 #include "harness/model/inputs/tri_aabb.h"
 #include "harness/model/inputs/tri_obb.h"
 #include "harness/model/inputs/tri_tri.h"
@@ -33,20 +35,22 @@
 /// X(name, Name) for every kind, one per line, in the order of QueryKind (which numbers the
 /// kinds in fuzz records: a new kind goes at the end). `name` is the kind's name in case files,
 /// on the command line and under corpora/; Name##Input is its input type.
-#define CC_FOR_EACH_QUERY_KIND(X)              \
-  X(ray_aabb, RayAabb)                         \
-  X(sphere_sphere, SphereSphere)               \
-  X(aabb_aabb, AabbAabb)                       \
-  X(kdop_kdop, KdopKdop)                       \
-  X(obb_obb, ObbObb)                           \
-  X(tri_aabb, TriAabb)                         \
-  X(tri_obb, TriObb)                           \
-  X(tri_tri, TriTri)                           \
-  X(mesh_mesh, MeshMesh)                       \
-  X(mesh_mesh_first, MeshMeshFirst)            \
-  X(broadphase, Broadphase)                    \
-  X(ray_mesh, RayMesh)                         \
-  X(moving_obb, MovingObb)                     \
-  X(disc_walls, DiscWalls)                     \
-  X(tri_tri_intersection, TriTriIntersection)  \
-  X(tri_tri_distance, TriTriDistance)
+#define CC_FOR_EACH_QUERY_KIND(X)                 \
+  X(ray_aabb, RayAabb)                            \
+  X(sphere_sphere, SphereSphere)                  \
+  X(aabb_aabb, AabbAabb)                          \
+  X(kdop_kdop, KdopKdop)                          \
+  X(obb_obb, ObbObb)                              \
+  X(tri_aabb, TriAabb)                            \
+  X(tri_obb, TriObb)                              \
+  X(tri_tri, TriTri)                              \
+  X(mesh_mesh, MeshMesh)                          \
+  X(mesh_mesh_first, MeshMeshFirst)               \
+  X(broadphase, Broadphase)                       \
+  X(ray_mesh, RayMesh)                            \
+  X(moving_obb, MovingObb)                        \
+  X(disc_walls, DiscWalls)                        \
+  X(tri_tri_intersection, TriTriIntersection)     \
+  X(tri_tri_distance, TriTriDistance)             \
+  X(sphere_sphere_distance, SphereSphereDistance) \
+  X(sphere_obb_distance, SphereObbDistance)

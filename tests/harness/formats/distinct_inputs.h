@@ -89,8 +89,10 @@ void for_each_value(harness::Input& input, F&& f) {
         using T = std::decay_t<decltype(in)>;
         if constexpr (std::is_same_v<T, RayAabbInput>) {
           ray(in.ray), box(in.box);
-        } else if constexpr (std::is_same_v<T, SphereSphereInput>) {
+        } else if constexpr (std::is_same_v<T, SphereSphereInput> || std::is_same_v<T, SphereSphereDistanceInput>) {
           vec(in.a.center), f(in.a.radius), vec(in.b.center), f(in.b.radius);
+        } else if constexpr (std::is_same_v<T, SphereObbDistanceInput>) {
+          vec(in.ball.center), f(in.ball.radius), obb(in.box);
         } else if constexpr (std::is_same_v<T, AabbAabbInput>) {
           box(in.a), box(in.b);
         } else if constexpr (std::is_same_v<T, KdopKdopInput>) {
@@ -205,6 +207,8 @@ inline harness::Input distinct_input(harness::QueryKind kind, DistinctValues& va
     case QueryKind::tri_tri: in = TriTriInput{}; break;
     case QueryKind::tri_tri_intersection: in = TriTriIntersectionInput{}; break;
     case QueryKind::tri_tri_distance: in = TriTriDistanceInput{}; break;
+    case QueryKind::sphere_sphere_distance: in = SphereSphereDistanceInput{}; break;
+    case QueryKind::sphere_obb_distance: in = SphereObbDistanceInput{}; break;
     case QueryKind::mesh_mesh: in = MeshMeshInput{mesh_pair()}; break;
     case QueryKind::mesh_mesh_first: in = MeshMeshFirstInput{mesh_pair()}; break;
     case QueryKind::broadphase: {

@@ -1,5 +1,7 @@
 // CGAL's party on cases worked out by hand: touching (a hit), one ulp apart (a miss), parallel
 // and degenerate shapes, and the line in a face's plane that CGAL 5.5's Line_3 test gets wrong;
+// signed distances of balls, a ball's centre in each tetrahedron of a box (CGAL 5.5 measures a
+// point's distance to a tetrahedron rightly only when it is positively oriented);
 // k-DOP slabs one by one; the first point of a ray on a mesh, exact to the double around it.
 #include "oracle/cgal/cgal_audit.h"
 
@@ -44,6 +46,37 @@ TEST(CgalSpheres, SubnormalRadiiOverlapExactly) {
   const CgalAnswer a = cgal_answer(Sphere{{0, 7.5, 8}, 5e-324}, Sphere{{0, 7.5, 8}, 5e-324});
   EXPECT_EQ(a.margin_sign, 1);
   EXPECT_EQ(cgal_answer(Sphere{{1, 1, 1}, 0}, Sphere{{1, 1, 1}, 0}).margin_sign, 0);  // two points, equal
+}
+
+TEST(CgalSpheres, TheSignedDistanceIsRoundedDown) {
+  EXPECT_EQ(cgal_answer(Sphere{{0, 0, 0}, 1}, Sphere{{3, 4, 0}, 2}).distance_down, 2);
+  EXPECT_EQ(cgal_answer(Sphere{{0, 0, 0}, 1}, Sphere{{0.5, 0, 0}, 2}).distance_down, -2.5);
+  // sqrt 2 - 1 rounded down, below the nearest double 0.41421356237309515.
+  EXPECT_EQ(cgal_answer(Sphere{{0, 0, 0}, 0.5}, Sphere{{1, 1, 0}, 0.5}).distance_down, 0.41421356237309503);
+}
+
+TEST(CgalBallBox, OutsideInsideAndOnTheBoundary) {
+  const Obb cube = obb({0, 0, 0}, {1, 1, 1});
+  const CgalAnswer corner = cgal_answer(Sphere{{3, 3, 2}, 1}, cube);  // (2, 2, 1) beyond the corner: 3 - 1
+  EXPECT_FALSE(corner.hit);
+  EXPECT_EQ(corner.distance_down, 2);
+  EXPECT_EQ(corner.margin_sign, -1);
+  const CgalAnswer touching = cgal_answer(Sphere{{0, 0, 2}, 1}, cube);
+  EXPECT_TRUE(touching.hit);
+  EXPECT_EQ(touching.margin_sign, 0);
+  EXPECT_EQ(cgal_answer(Sphere{{1, 1, 1}, 0}, cube).margin_sign, 0);  // a point on a corner
+  // Centres inside: each of the cube's six tetrahedra holds one of these points, half of the
+  // tetrahedra negatively oriented as Kuhn's construction gives them; the depth is the nearest
+  // face's distance.
+  for (const Vec3& c : {Vec3{0.5, 0.25, 0.125}, Vec3{0.25, 0.5, 0.125}, Vec3{0.5, 0.125, 0.25}, Vec3{0.125, 0.5, 0.25},
+                        Vec3{0.25, 0.125, 0.5}, Vec3{0.125, 0.25, 0.5}}) {
+    const CgalAnswer inside = cgal_answer(Sphere{c, 0.25}, cube);
+    EXPECT_TRUE(inside.hit);
+    EXPECT_EQ(inside.margin_sign, 1);
+    EXPECT_EQ(inside.distance_down, -(0.5 + 0.25)) << c.x << ' ' << c.y << ' ' << c.z;
+  }
+  // A flat box is all boundary: a point in it is at depth 0.
+  EXPECT_EQ(cgal_answer(Sphere{{0.5, 0.5, 0}, 0.25}, obb({0, 0, 0}, {1, 1, 0})).distance_down, -0.25);
 }
 
 TEST(CgalBoxes, SharedFaceIsAHitOneUlpApartAMiss) {

@@ -60,7 +60,8 @@ RayMeshInput ray_on_two_faces(Ray ray) {
 TEST(ExactAudit, AnswersTheKindsMadeOfTwoShapesItExpresses) {
   for (QueryKind kind : {QueryKind::ray_aabb, QueryKind::sphere_sphere, QueryKind::aabb_aabb, QueryKind::tri_aabb,
                          QueryKind::tri_obb, QueryKind::tri_tri, QueryKind::obb_obb, QueryKind::kdop_kdop,
-                         QueryKind::ray_mesh, QueryKind::disc_walls}) {
+                         QueryKind::ray_mesh, QueryKind::disc_walls, QueryKind::tri_tri_distance,
+                         QueryKind::sphere_sphere_distance, QueryKind::sphere_obb_distance}) {
     EXPECT_TRUE(answers(kind)) << name(kind);
   }
   for (QueryKind kind : {QueryKind::mesh_mesh, QueryKind::mesh_mesh_first, QueryKind::broadphase,
