@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 
+#include "harness/kinds/sphere_sphere.h"
 #include "oracle/exact/distance_check.h"
 #include "oracle/exact/domain.h"
 #include "oracle/exact/explain.h"
