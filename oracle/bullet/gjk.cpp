@@ -39,12 +39,21 @@ std::optional<GjkClosest> gjk_closest(const btConvexShape& a, const btTransform&
   return result.reported;
 }
 
-std::optional<double> epa_signed_distance(const Vec3& center, double radius, const btConvexShape& shape,
-                                          const btTransform& place) {
+harness::Opinion distance_answer(const std::optional<GjkClosest>& c) {
+  if (!c) return harness::failed("GJK reported no distance");
+  harness::Answer answer = harness::Answer::of(c->distance <= 0);
+  answer.params = {c->distance, c->on_a.x, c->on_a.y, c->on_a.z, c->on_b.x, c->on_b.y, c->on_b.z};
+  return harness::answered(answer);
+}
+
+harness::Opinion epa_signed_distance(const Vec3& center, double radius, const btConvexShape& shape,
+                                     const btTransform& place) {
   btGjkEpaSolver2::sResults results;
   const btScalar d = btGjkEpaSolver2::SignedDistance(to_bullet(center), radius, &shape, place, results);
-  if (d == SIMD_INFINITY) return std::nullopt;
-  return d;
+  if (d == SIMD_INFINITY) return harness::failed("GJK and EPA reported no distance");
+  harness::Answer answer = harness::Answer::of(d <= 0);
+  answer.params = {d};
+  return harness::answered(answer);
 }
 
 std::optional<double> gjk_distance(const btConvexShape& a, const btTransform& place_a, const btConvexShape& b,

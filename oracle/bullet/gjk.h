@@ -26,13 +26,17 @@ struct GjkClosest {
 std::optional<GjkClosest> gjk_closest(const btConvexShape& a, const btTransform& place_a, const btConvexShape& b,
                                       const btTransform& place_b);
 
-/// btGjkEpaSolver2's signed distance from a ball (its centre and radius) to a placed convex shape:
-/// GJK on the shape without its margin and the centre, the margins and the radius subtracted;
-/// EPA with margins where they overlap. The distance alone: the witnesses it gives apart are the
-/// shape's point moved by the margins toward the centre, and the centre, on neither surface.
-/// Nothing where it reports none (it gives infinity).
-std::optional<double> epa_signed_distance(const Vec3& center, double radius, const btConvexShape& shape,
-                                          const btTransform& place);
+/// GJK's report as a distance kind's answer: the signed distance and both points (a hit where it is
+/// <= 0), or a failure where it reports none.
+harness::Opinion distance_answer(const std::optional<GjkClosest>& closest);
+
+/// btGjkEpaSolver2's signed distance from a ball (its centre and radius) to a placed convex shape,
+/// as a distance kind's answer: GJK on the shape without its margin and the centre, the margins
+/// and the radius subtracted; EPA with margins where they overlap. The distance alone (a hit where
+/// it is <= 0): the witnesses it gives apart are the shape's point moved by the margins toward the
+/// centre, and the centre, on neither surface. A failure where it reports none (infinity).
+harness::Opinion epa_signed_distance(const Vec3& center, double radius, const btConvexShape& shape,
+                                     const btTransform& place);
 
 /// Its band: GJK's and EPA's accuracies in double precision (1e-12, on the distance, relative or
 /// absolute) with room for the rounding of the support points: at unit scale, 2^-36.

@@ -19,22 +19,14 @@ const std::vector<Party<SphereObbDistanceInput>>& bullet_parties() {
          const btSphereShape ball(in.ball.radius);
          btBoxShape box({1, 1, 1});
          set_half_extents(box, in.box.half);
-         const std::optional<GjkClosest> c =
-             gjk_closest(ball, placement(Mat3::identity(), in.ball.center), box, placement(in.box.axes, in.box.center));
-         if (!c) return harness::failed("GJK reported no distance");
-         harness::Answer answer = harness::Answer::of(c->distance <= 0);
-         answer.params = {c->distance, c->on_a.x, c->on_a.y, c->on_a.z, c->on_b.x, c->on_b.y, c->on_b.z};
-         return harness::answered(answer);
+         return distance_answer(
+             gjk_closest(ball, placement(Mat3::identity(), in.ball.center), box, placement(in.box.axes, in.box.center)));
        }},
       {"bullet.btGjkEpaSolver2::SignedDistance", kEpaBand,
        [](const SphereObbDistanceInput& in) {
          btBoxShape box({1, 1, 1});
          set_half_extents(box, in.box.half);
-         const std::optional<double> d = epa_signed_distance(in.ball.center, in.ball.radius, box, placement(in.box.axes, in.box.center));
-         if (!d) return harness::failed("GJK and EPA reported no distance");
-         harness::Answer answer = harness::Answer::of(*d <= 0);
-         answer.params = {*d};
-         return harness::answered(answer);
+         return epa_signed_distance(in.ball.center, in.ball.radius, box, placement(in.box.axes, in.box.center));
        }}};
   return parties;
 }

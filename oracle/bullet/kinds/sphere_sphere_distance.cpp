@@ -27,20 +27,12 @@ const std::vector<Party<SphereSphereDistanceInput>>& bullet_parties() {
       {"bullet.btGjkPairDetector", kGjkDistanceBand,
        [](const SphereSphereDistanceInput& in) {
          const btSphereShape a(in.a.radius), b(in.b.radius);
-         const std::optional<GjkClosest> c = gjk_closest(a, at(in.a.center), b, at(in.b.center));
-         if (!c) return harness::failed("GJK reported no distance");
-         harness::Answer answer = harness::Answer::of(c->distance <= 0);
-         answer.params = {c->distance, c->on_a.x, c->on_a.y, c->on_a.z, c->on_b.x, c->on_b.y, c->on_b.z};
-         return harness::answered(answer);
+         return distance_answer(gjk_closest(a, at(in.a.center), b, at(in.b.center)));
        }},
       {"bullet.btGjkEpaSolver2::SignedDistance", kEpaBand,
        [](const SphereSphereDistanceInput& in) {
          const btSphereShape a(in.a.radius);
-         const std::optional<double> d = epa_signed_distance(in.b.center, in.b.radius, a, at(in.a.center));
-         if (!d) return harness::failed("GJK and EPA reported no distance");
-         harness::Answer answer = harness::Answer::of(*d <= 0);
-         answer.params = {*d};
-         return harness::answered(answer);
+         return epa_signed_distance(in.b.center, in.b.radius, a, at(in.a.center));
        }}};
   return parties;
 }
