@@ -8,7 +8,9 @@
 #include <vector>
 
 #include "collide/bound_records.h"
+#include "oracle/exact/distance_check.h"
 #include "oracle/exact/domain.h"
+#include "oracle/exact/exact_distance.h"
 #include "oracle/exact/exact_reference.h"
 #include "oracle/exact/rational.h"
 
@@ -301,7 +303,69 @@ class Measure {
     }
   }
 
+  // A distance answer: its distance's error against the exact signed distance, each witness's
+  // distance from its shape's boundary, each against its rounding term where the rounding is the
+  // only error (balls; boxes with exactly orthonormal axes) and against the whole bound.
+  void operator()(const bounds::SphereSeparation& r) {
+    if (!finite_vec(r.a.center) || !finite_vec(r.b.center) || !all_finite({r.a.radius, r.b.radius})) return;
+    const QVec3 d = rational(r.b.center) - rational(r.a.center);
+    distance(r.answer, {dot(d, d), 1, rational(r.a.radius) + rational(r.b.radius)}, r.bound.rounding());
+    const double off = std::max(off_sphere(r.answer.on_a, r.a), off_sphere(r.answer.on_b, r.b));
+    term("witness", "rounding", off, r.bound.point_rounding());
+    term("witness", "total", off, r.answer.point_error);
+  }
+
+  void operator()(const bounds::SphereObbSeparation& r) {
+    if (!finite_vec(r.a.center) || !all_finite({r.a.radius}) || !all_finite(r.b)) return;
+    const QVec3 c = rational(r.a.center);
+    const bool inside = in_box(c, r.b);
+    const ExactSignedDistance exact{inside ? squared_depth_in_box(c, r.b) : squared_distance_to_box(c, r.b), inside ? -1 : 1,
+                                    rational(r.a.radius)};
+    const bool orthonormal = exactly_orthonormal(r.b.axes);
+    distance(r.answer, exact, orthonormal ? r.bound.rounding() : -1);
+    const double off = std::max(off_sphere(r.answer.on_a, r.a), off_box(r.answer.on_b, r.b));
+    if (orthonormal) term("witness", "rounding", off, r.bound.point_rounding());
+    term("witness", "total", off, r.answer.point_error);
+  }
+
  private:
+  // An upper end of |x - exact| for a double x: exact lies between its rounding down and the next
+  // double up.
+  static double error_of(double x, const ExactSignedDistance& exact) {
+    const double down = rounded_down(exact), up = std::nextafter(down, INFINITY);
+    const Rational q = rational(x);
+    return std::max(magnitude(q - rational(down)), magnitude(q - rational(up)));
+  }
+
+  // The signed distance's error, against the rounding term (when >= 0) and the whole bound.
+  void distance(const Separation& s, const ExactSignedDistance& exact, double rounding) {
+    if (!std::isfinite(s.distance)) return;
+    const double error = error_of(s.distance, exact);
+    if (rounding >= 0) term("signed distance", "rounding", error, rounding);
+    term("signed distance", "total", error, s.distance_error);
+  }
+
+  // How far a point lies from a ball's sphere, and from a box's boundary.
+  static double off_sphere(const Vec3& p, const Sphere& s) {
+    const QVec3 d = rational(p) - rational(s.center);
+    return error_of(0, {dot(d, d), 1, rational(s.radius)});
+  }
+  static double off_box(const Vec3& p, const Obb& b) {
+    const QVec3 q = rational(p);
+    return error_of(0, {in_box(q, b) ? squared_depth_in_box(q, b) : squared_distance_to_box(q, b)});
+  }
+
+  // Whether the axes are orthonormal in exact arithmetic (a permutation of the coordinate axes,
+  // with signs): the frame term covers nothing then.
+  static bool exactly_orthonormal(const Mat3& axes) {
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) {
+        if (dot(rational(axes.col[i]), rational(axes.col[j])) != (i == j ? 1 : 0)) return false;
+      }
+    }
+    return true;
+  }
+
   // How many bounds from its threshold a quantity may be and still be at its decision.
   static constexpr double kNear = 4;
 
@@ -386,6 +450,8 @@ std::vector<TermError> ExactRationalReference::bound_errors(const bounds::Record
   for (const auto& r : records.radius_roots) largest_root = std::max(largest_root, r.root);
   for (const auto& r : records.radius_roots) measure(r, largest_root);
   for (const auto& r : records.cubes) measure(r, records.radius_roots, records.placements);
+  for (const auto& r : records.sphere_separations) measure(r);
+  for (const auto& r : records.sphere_obb_separations) measure(r);
   return out;
 }
 

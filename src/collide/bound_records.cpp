@@ -22,5 +22,7 @@ template void record(Records&, const RayMeshFaceHit&);
 template void record(Records&, const Placement&);
 template void record(Records&, const RadiusRoot&);
 template void record(Records&, const Cube&);
+template void record(Records&, const SphereSeparation&);
+template void record(Records&, const SphereObbSeparation&);
 
 }  // namespace cc::bounds

@@ -22,6 +22,7 @@
 #include "collide/record_sink.h"
 #include "collide/sat_bound.h"
 #include "collide/sphere_bound.h"
+#include "collide/sphere_distance_bound.h"
 #include "collide/sweep_bound.h"
 #include "collide/transform_bound.h"
 #include "collide/widening.h"
@@ -43,6 +44,8 @@ struct Records {
   std::vector<Placement> placements;
   std::vector<RadiusRoot> radius_roots;
   std::vector<Cube> cubes;
+  std::vector<SphereSeparation> sphere_separations;
+  std::vector<SphereObbSeparation> sphere_obb_separations;
 
   void add(const Quotient& r) { quotients.push_back(r); }
   void add(const SphereSquares& r) { spheres.push_back(r); }
@@ -57,6 +60,8 @@ struct Records {
   void add(const Placement& r) { placements.push_back(r); }
   void add(const RadiusRoot& r) { radius_roots.push_back(r); }
   void add(const Cube& r) { cubes.push_back(r); }
+  void add(const SphereSeparation& r) { sphere_separations.push_back(r); }
+  void add(const SphereObbSeparation& r) { sphere_obb_separations.push_back(r); }
 };
 
 }  // namespace cc::bounds

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "collide/length.h"
+#include "collide/record_sink.h"
 #include "collide/sphere_distance_bound.h"
 
 namespace cc {
@@ -11,9 +12,8 @@ namespace {
 
 bool in_domain(const Sphere& s) { return finite(s.center) && fp::finite(s.radius) && s.radius >= 0; }
 
-}  // namespace
-
-Separation distance_sphere_sphere(const Sphere& a, const Sphere& b) {
+template <class Records>
+Separation sphere_sphere(const Sphere& a, const Sphere& b, Records& records) {
   if (!in_domain(a) || !in_domain(b)) return Separation::outside_the_domain();
   const Vec3 d = b.center - a.center;  // swapping a and b negates d exactly
   LengthAndDirection ld = length_and_direction(d);
@@ -21,11 +21,14 @@ Separation distance_sphere_sphere(const Sphere& a, const Sphere& b) {
   const double reach = a.radius + b.radius;
   const bounds::SphereDistanceBound bound{ld.length, reach, std::max(max_abs(a.center), max_abs(b.center)),
                                           std::max(a.radius, b.radius)};
-  return {ld.length - reach, a.center + a.radius * ld.direction, b.center - b.radius * ld.direction,
-          bound.distance(), bound.point()};
+  const Separation s{ld.length - reach, a.center + a.radius * ld.direction, b.center - b.radius * ld.direction,
+                     bound.distance(), bound.point()};
+  records.add(bounds::SphereSeparation{a, b, s, bound});
+  return s;
 }
 
-Separation distance_sphere_obb(const Sphere& a, const Obb& b) {
+template <class Records>
+Separation sphere_obb(const Sphere& a, const Obb& b, Records& records) {
   if (!in_domain(a) || !finite(b.center) || !finite(b.half) || !finite(b.axes) || !(b.half.x >= 0) ||
       !(b.half.y >= 0) || !(b.half.z >= 0)) {
     return Separation::outside_the_domain();
@@ -59,8 +62,32 @@ Separation distance_sphere_obb(const Sphere& a, const Obb& b) {
   const Vec3 world_outward = b.axes * outward;
   const bounds::SphereObbDistanceBound bound{norm1(d), norm1(b.half), a.radius,
                                              std::max(max_abs(a.center), max_abs(b.center))};
-  return {reach - a.radius, a.center - a.radius * world_outward, b.center + b.axes * q, bound.distance(),
-          bound.point()};
+  const Separation s{reach - a.radius, a.center - a.radius * world_outward, b.center + b.axes * q, bound.distance(),
+                     bound.point()};
+  records.add(bounds::SphereObbSeparation{a, b, s, bound});
+  return s;
+}
+
+}  // namespace
+
+Separation distance_sphere_sphere(const Sphere& a, const Sphere& b) {
+  bounds::NoRecords none;
+  return sphere_sphere(a, b, none);
+}
+
+Separation distance_sphere_sphere(const Sphere& a, const Sphere& b, bounds::Records& records) {
+  bounds::RecordsRef into{records};
+  return sphere_sphere(a, b, into);
+}
+
+Separation distance_sphere_obb(const Sphere& a, const Obb& b) {
+  bounds::NoRecords none;
+  return sphere_obb(a, b, none);
+}
+
+Separation distance_sphere_obb(const Sphere& a, const Obb& b, bounds::Records& records) {
+  bounds::RecordsRef into{records};
+  return sphere_obb(a, b, into);
 }
 
 }  // namespace cc

@@ -3,6 +3,8 @@
 
 #include "collide/fp.h"
 #include "collide/obb.h"
+#include "collide/separation.h"
+#include "collide/sphere.h"
 
 namespace cc::bounds {
 
@@ -12,11 +14,13 @@ struct SphereDistanceBound {
   double n, reach, center_magnitude, radius;
   /// d's components round once (u |d|), the sum of squares 3u and the square root u/2 more of
   /// |d|, the reach u of itself, the difference u of both: about 5.1u |d| + 2.1u reach.
-  double distance() const { return 8 * fp::u * (n + reach) + fp::subnormal_slack; }
+  double rounding() const { return 8 * fp::u * (n + reach); }
+  double distance() const { return rounding() + fp::subnormal_slack; }
   /// The unit direction d/n within 7u of its length (d's rounding, the length's 2.6u, the
   /// reciprocal and the product); a witness c + r w rounds u of r w and u of the sum per
   /// coordinate: within 11u r + 2u |c|_inf of the sphere's boundary.
-  double point() const { return 16 * fp::u * (center_magnitude + radius) + fp::subnormal_slack; }
+  double point_rounding() const { return 16 * fp::u * (center_magnitude + radius); }
+  double point() const { return point_rounding() + fp::subnormal_slack; }
 };
 
 /// distance_sphere_obb, with offset = |d|_1 (d = a.center - b.center), half = |b.half|_1.
@@ -33,10 +37,34 @@ struct SphereObbDistanceBound {
   double distance() const { return fp::sum3(rounding(), frame(), fp::subnormal_slack); }
   /// The box's witness c + A q rounds 3u of |q| and u of the sum per coordinate; the ball's
   /// s - r w as in the spheres' bound, with w's length within 1.5 eta + 6u of 1.
+  double point_rounding() const { return 16 * fp::u * (center_magnitude + fp::sum3(offset, half, radius)); }
   double point() const {
-    return fp::sum3(16 * fp::u * (center_magnitude + fp::sum3(offset, half, radius)),
-                    4 * kObbOrthonormalTolerance * fp::sum3(radius, offset, half), fp::subnormal_slack);
+    return fp::sum3(point_rounding(), 4 * kObbOrthonormalTolerance * fp::sum3(radius, offset, half), fp::subnormal_slack);
   }
 };
 
+/// A call of distance_sphere_sphere and its answer, as computed.
+struct SphereSeparation {
+  Sphere a, b;
+  Separation answer;
+  SphereDistanceBound bound;
+};
+
+/// A call of distance_sphere_obb and its answer, as computed.
+struct SphereObbSeparation {
+  Sphere a;
+  Obb b;
+  Separation answer;
+  SphereObbDistanceBound bound;
+};
+
 }  // namespace cc::bounds
+
+namespace cc {
+
+/// The same as their plain versions (sphere_distance.h), recording the call and its bounds into
+/// `records` (bound_records.h); the same answer, bit for bit.
+Separation distance_sphere_sphere(const Sphere& a, const Sphere& b, bounds::Records& records);
+Separation distance_sphere_obb(const Sphere& a, const Obb& b, bounds::Records& records);
+
+}  // namespace cc

@@ -9,7 +9,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "collide/record_sink.h"
 #include "collide/sphere_distance.h"
+#include "collide/sphere_distance_bound.h"
 #include "harness/generation/gaps.h"
 #include "harness/generation/regimes.h"
 #include "harness/generation/rotation.h"
@@ -111,6 +113,13 @@ Vec3 local_centre(const SphereObbDistanceInput& in) {
   return {dot(in.box.axes.col[0], d), dot(in.box.axes.col[1], d), dot(in.box.axes.col[2], d)};
 }
 
+// The bounds of the answer, term by term: the rounding alone (balls; boxes with exactly
+// orthonormal axes) and the whole bound, of the distance and of the witnesses.
+constexpr BoundTerm kBoundTerms[] = {{"distance_sphere_obb", "signed distance", "rounding"},
+                                     {"distance_sphere_obb", "signed distance", "total"},
+                                     {"distance_sphere_obb", "witness", "rounding"},
+                                     {"distance_sphere_obb", "witness", "total"}};
+
 }  // namespace
 
 Answer Query<SphereObbDistanceInput>::ask(const SphereObbDistanceInput& in) {
@@ -170,8 +179,10 @@ void Query<SphereObbDistanceInput>::recognise(const SphereObbDistanceInput& in, 
   found.far(std::max(max_abs(in.ball.center), max_abs(in.box.center)), size);
 }
 
-std::span<const BoundTerm> Query<SphereObbDistanceInput>::bound_terms() { return {}; }
+std::span<const BoundTerm> Query<SphereObbDistanceInput>::bound_terms() { return kBoundTerms; }
 
-void Query<SphereObbDistanceInput>::probe(const SphereObbDistanceInput&, std::vector<bounds::Records>&) {}
+void Query<SphereObbDistanceInput>::probe(const SphereObbDistanceInput& in, std::vector<bounds::Records>& records) {
+  distance_sphere_obb(in.ball, in.box, bounds::next_call(records));
+}
 
 }  // namespace cc::harness

@@ -8,7 +8,9 @@
 #include <cmath>
 #include <utility>
 
+#include "collide/record_sink.h"
 #include "collide/sphere_distance.h"
+#include "collide/sphere_distance_bound.h"
 #include "harness/generation/gaps.h"
 #include "harness/generation/regimes.h"
 #include "harness/judging/configurations.h"
@@ -35,6 +37,13 @@ SphereSphereDistanceInput at_a_gap(ValueSource& v) {
 constexpr std::string_view kConfigurations[] = {"touching",   "just apart", "just overlapping", "apart",
                                                 "nested",     "concentric", "point",            "radii far apart",
                                                 "tiny",       "huge",       "far from the origin"};
+
+// The bounds of the answer, term by term: the rounding alone (balls; boxes with exactly
+// orthonormal axes) and the whole bound, of the distance and of the witnesses.
+constexpr BoundTerm kBoundTerms[] = {{"distance_sphere_sphere", "signed distance", "rounding"},
+                                     {"distance_sphere_sphere", "signed distance", "total"},
+                                     {"distance_sphere_sphere", "witness", "rounding"},
+                                     {"distance_sphere_sphere", "witness", "total"}};
 
 }  // namespace
 
@@ -92,8 +101,10 @@ void Query<SphereSphereDistanceInput>::recognise(const SphereSphereDistanceInput
   found.far(std::max(max_abs(in.a.center), max_abs(in.b.center)), in.a.radius + in.b.radius);
 }
 
-std::span<const BoundTerm> Query<SphereSphereDistanceInput>::bound_terms() { return {}; }
+std::span<const BoundTerm> Query<SphereSphereDistanceInput>::bound_terms() { return kBoundTerms; }
 
-void Query<SphereSphereDistanceInput>::probe(const SphereSphereDistanceInput&, std::vector<bounds::Records>&) {}
+void Query<SphereSphereDistanceInput>::probe(const SphereSphereDistanceInput& in, std::vector<bounds::Records>& records) {
+  distance_sphere_sphere(in.a, in.b, bounds::next_call(records));
+}
 
 }  // namespace cc::harness
