@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "harness/model/fields.h"
+#include "harness/model/kind_pieces.h"
 
 namespace cc::harness {
 namespace {
@@ -216,7 +217,11 @@ SubjectBinding SubjectBinding::open(const std::string& path) {
   bool any = false;
   for (QueryKind kind : kAllQueryKinds) {
     with_kind(kind, [&]<class In>() {
-      if constexpr (expressible<In>() || has_own_signature<In>) {
+      // The interface declares a yes/no function for the kinds of two shapes judged on their
+      // hit, and its own for the mesh kinds and broadphase; a function named for another kind
+      // (the corners of tri_tri_intersection, a distance) is not the interface's, and never called.
+      if constexpr (has_own_signature<In> || expressible<In>()) {
+        if (!has_own_signature<In> && pieces_of(kind).judged != Judged::hit) return;
         void* f = dlsym(handle, ("crosscheck_" + std::string(name(kind))).c_str());
         subject.functions_[static_cast<std::size_t>(kind)] = f;
         any |= f != nullptr;

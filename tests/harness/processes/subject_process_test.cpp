@@ -204,6 +204,9 @@ TEST(SubjectProcess, EachFaultIsThatCallsFailureAndTheNextCallIsAnsweredAgain) {
   EXPECT_TRUE(contains(failure(*misbehaving, SphereSphereInput{{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}), "returned 7"));
   EXPECT_EQ(failure(*misbehaving, kTouching), "(answered)");
   EXPECT_TRUE(misbehaving->ask(kTouching).hit);
+  // Its crosscheck_sphere_sphere_distance is no function of the interface: never looked up.
+  EXPECT_FALSE(misbehaving->answers(QueryKind::sphere_sphere_distance));
+  EXPECT_EQ(misbehaving->identity().kinds, (std::vector<std::string>{"sphere_sphere", "aabb_aabb"}));
 }
 
 TEST(SubjectProcess, AFailureIsTheLibrarysInThatCaseAnImplBug) {
