@@ -158,6 +158,47 @@ struct AnyWorldContact final : btCollisionWorld::ContactResultCallback {
   }
 };
 
+// GJK with EPA on two convex shapes, as a distance: the signed distance it reports, its point on
+// b and the point on a it gives with it (the point on b plus the distance along its normal).
+struct Closest final : btDiscreteCollisionDetectorInterface::Result {
+  bool reported = false;
+  btScalar distance = 0;
+  btVector3 on_a, on_b;
+  void setShapeIdentifiersA(int, int) override {}
+  void setShapeIdentifiersB(int, int) override {}
+  void addContactPoint(const btVector3& normal_on_b, const btVector3& point_on_b, btScalar depth) override {
+    reported = true;
+    distance = depth;
+    on_b = point_on_b;
+    on_a = point_on_b + normal_on_b * depth;
+  }
+};
+
+int gjk_distance(const btConvexShape& a, const btTransform& place_a, const btConvexShape& b, const btTransform& place_b,
+                 double* distance, cc_vec3* on_a, cc_vec3* on_b) {
+  btVoronoiSimplexSolver simplex;
+  btGjkEpaPenetrationDepthSolver penetration;
+  btGjkPairDetector detector(&a, &b, &simplex, &penetration);
+  btDiscreteCollisionDetectorInterface::ClosestPointInput input;
+  input.m_maximumDistanceSquared = BT_LARGE_FLOAT;
+  input.m_transformA = place_a;
+  input.m_transformB = place_b;
+  Closest result;
+  detector.getClosestPoints(input, result, nullptr);
+  if (!result.reported) return 0;
+  *distance = result.distance;
+  *on_a = {result.on_a.x(), result.on_a.y(), result.on_a.z()};
+  *on_b = {result.on_b.x(), result.on_b.y(), result.on_b.z()};
+  return 1;
+}
+
+btTransform at(const cc_vec3& p) {
+  btTransform t;
+  t.setIdentity();
+  t.setOrigin(v(p));
+  return t;
+}
+
 }  // namespace
 
 extern "C" {
@@ -317,6 +358,35 @@ int crosscheck_broadphase(const cc_box_frames* frames, cc_face_pair* pairs, unsi
     if (p != nullptr) trees.destroyProxy(p, nullptr);
   }
   return static_cast<int>(count);
+}
+
+// Distances as Bullet's collision algorithms ask GJK with EPA for closest points: spheres as
+// btSphereShapes (a point with the radius as its margin), boxes and triangles with margin 0. Its
+// tolerances are absolute (about 1e-3 where GJK hands over to EPA), so it says 2^-9 of the scale.
+double crosscheck_distance_tolerance(void) { return 0x1p-9; }
+
+int crosscheck_tri_tri_distance(const cc_triangle* a, const cc_triangle* b, double* distance, cc_vec3* on_a,
+                                cc_vec3* on_b) {
+  btTriangleShape ta(v(a->v[0]), v(a->v[1]), v(a->v[2])), tb(v(b->v[0]), v(b->v[1]), v(b->v[2]));
+  ta.setMargin(0), tb.setMargin(0);
+  btTransform identity;
+  identity.setIdentity();
+  return gjk_distance(ta, identity, tb, identity, distance, on_a, on_b);
+}
+
+int crosscheck_sphere_sphere_distance(const cc_sphere* a, const cc_sphere* b, double* distance, cc_vec3* on_a,
+                                      cc_vec3* on_b) {
+  const btSphereShape sa(a->radius), sb(b->radius);
+  return gjk_distance(sa, at(a->center), sb, at(b->center), distance, on_a, on_b);
+}
+
+int crosscheck_sphere_obb_distance(const cc_sphere* ball, const cc_obb* box, double* distance, cc_vec3* on_a,
+                                   cc_vec3* on_b) {
+  const btSphereShape sphere(ball->radius);
+  btBoxShape shape(v(box->half));
+  shape.setMargin(0);
+  shape.setImplicitShapeDimensions(v(box->half));
+  return gjk_distance(sphere, at(ball->center), shape, place(*box), distance, on_a, on_b);
 }
 
 }  // extern "C"

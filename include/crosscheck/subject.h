@@ -3,7 +3,7 @@
  * A subject is a shared library exporting crosscheck_subject_version() and, for each query kind
  * it answers, a function named crosscheck_<kind> taking the kind's shapes as plain structs of
  * doubles and returning 1 when they meet (touching counts) and 0 when they do not (the mesh
- * kinds also name the faces that meet). Export only
+ * kinds also name the faces that meet, the distance kinds give the distance and two points). Export only
  * the kinds you have; crosscheck skips and lists the others. Then
  *
  *     crosscheck campaign --subject ./libmine.so
@@ -94,6 +94,24 @@ int crosscheck_mesh_mesh_first(const cc_mesh* a, const cc_pose* pose_a, const cc
  * frame_ends[f] the number written up to the end of frame f. Returns how many pairs there are in
  * all (more than capacity: crosscheck counts the answer as failed). */
 int crosscheck_broadphase(const cc_box_frames* frames, cc_face_pair* pairs, unsigned capacity, unsigned* frame_ends);
+
+/* Distances. Each writes the signed distance between the two shapes: > 0 apart (the length of a
+ * shortest segment between them), < 0 overlapping (minus the penetration depth, the length of the
+ * shortest translation of b that separates them; triangles have no inside), 0 touching; and a
+ * point of each realising it: apart, a closest pair (any one where they are not unique);
+ * overlapping, a point of each boundary with on_a - on_b that translation. Returns 1 when it
+ * wrote them (anything else: crosscheck counts the call as failed). A subject that exports one
+ * exports crosscheck_distance_tolerance() too. */
+int crosscheck_tri_tri_distance(const cc_triangle* a, const cc_triangle* b, double* distance, cc_vec3* on_a,
+                                cc_vec3* on_b);
+int crosscheck_sphere_sphere_distance(const cc_sphere* a, const cc_sphere* b, double* distance, cc_vec3* on_a,
+                                      cc_vec3* on_b);
+int crosscheck_sphere_obb_distance(const cc_sphere* ball, const cc_obb* box, double* distance, cc_vec3* on_a,
+                                   cc_vec3* on_b);
+/* How far the subject's distances and points may be from the exact ones, relative to the largest
+ * absolute coordinate, radius or half extent of a case's shapes (e.g. 1e-12): an answer is right
+ * when its distance and each point lie within this of the exact ones. At least 0, below 1. */
+double crosscheck_distance_tolerance(void);
 
 #ifdef __cplusplus
 }

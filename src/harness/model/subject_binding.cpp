@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <concepts>
 #include <cstdint>
 #include <stdexcept>
@@ -57,6 +58,48 @@ int call(void* function, const In& in) {
         return std::apply([&](const auto&... s) { return reinterpret_cast<Fn>(function)(&s...); }, shapes);
       },
       Fields<In>::list);
+}
+
+// The shapes' largest magnitude: coordinates, radii and half extents (not a box's axes); 1 when
+// all are 0, as the exact reference's scale.
+double magnitude(const cc_vec3& v) { return std::max({std::fabs(v.x), std::fabs(v.y), std::fabs(v.z)}); }
+double magnitude(const cc_sphere& s) { return std::max(magnitude(s.center), std::fabs(s.radius)); }
+double magnitude(const cc_obb& b) { return std::max(magnitude(b.center), magnitude(b.half)); }
+double magnitude(const cc_triangle& t) { return std::max({magnitude(t.v[0]), magnitude(t.v[1]), magnitude(t.v[2])}); }
+
+// Whether the input's shapes all have a magnitude (the shapes of the distance kinds).
+template <class In>
+constexpr bool has_magnitudes() {
+  return std::apply([](const auto&... f) { return (requires { magnitude(to_c(f.of(In{}))); } && ...); }, Fields<In>::list);
+}
+
+// A distance kind: the signed distance and both points, with the subject's tolerance of the scale
+// as the bounds of both.
+template <class In>
+Answer ask_distance(void* function, const In& in, QueryKind kind, double tolerance) {
+  double distance = 0;
+  cc_vec3 on_a{}, on_b{};
+  double scale = 0;
+  const int said = std::apply(
+      [&](const auto&... f) {
+        using Fn = int (*)(const decltype(to_c(f.of(in)))*..., double*, cc_vec3*, cc_vec3*);
+        const auto shapes = std::tuple{to_c(f.of(in))...};
+        return std::apply(
+            [&](const auto&... s) {
+              scale = std::max({magnitude(s)...});
+              return reinterpret_cast<Fn>(function)(&s..., &distance, &on_a, &on_b);
+            },
+            shapes);
+      },
+      Fields<In>::list);
+  if (said != 1) {
+    throw std::runtime_error("the subject's crosscheck_" + std::string(name(kind)) + " returned " + std::to_string(said) +
+                             ", not 1 (a distance and two points)");
+  }
+  const double bound = tolerance * (scale > 0 ? scale : 1);
+  Answer answer = Answer::of(distance <= 0);
+  answer.params = {distance, on_a.x, on_a.y, on_a.z, on_b.x, on_b.y, on_b.z, bound, bound};
+  return answer;
 }
 
 // The kinds of a mesh or of many boxes, found by their inputs as the others are: a ray and a
@@ -218,10 +261,12 @@ SubjectBinding SubjectBinding::open(const std::string& path) {
   for (QueryKind kind : kAllQueryKinds) {
     with_kind(kind, [&]<class In>() {
       // The interface declares a yes/no function for the kinds of two shapes judged on their
-      // hit, and its own for the mesh kinds and broadphase; a function named for another kind
-      // (the corners of tri_tri_intersection, a distance) is not the interface's, and never called.
+      // hit, a distance function for those judged on a distance, and its own for the kinds of
+      // meshes and of many boxes; a function named for another kind (one judged on the corners
+      // of an intersection) is not the interface's, and never called.
       if constexpr (has_own_signature<In> || expressible<In>()) {
-        if (!has_own_signature<In> && pieces_of(kind).judged != Judged::hit) return;
+        const Judged judged = pieces_of(kind).judged;
+        if (!has_own_signature<In> && judged != Judged::hit && judged != Judged::distance) return;
         void* f = dlsym(handle, ("crosscheck_" + std::string(name(kind))).c_str());
         subject.functions_[static_cast<std::size_t>(kind)] = f;
         any |= f != nullptr;
@@ -229,6 +274,20 @@ SubjectBinding SubjectBinding::open(const std::string& path) {
     });
   }
   if (!any) throw std::runtime_error(path + ": exports no crosscheck_<kind> function of include/crosscheck/subject.h");
+  for (QueryKind kind : kAllQueryKinds) {
+    if (!subject.answers(kind) || pieces_of(kind).judged != Judged::distance) continue;
+    const auto tolerance = reinterpret_cast<double (*)()>(dlsym(handle, "crosscheck_distance_tolerance"));
+    if (tolerance == nullptr) {
+      throw std::runtime_error(path + ": exports crosscheck_" + std::string(name(kind)) +
+                               " but no crosscheck_distance_tolerance() (include/crosscheck/subject.h)");
+    }
+    subject.distance_tolerance_ = tolerance();
+    if (!(subject.distance_tolerance_ >= 0 && subject.distance_tolerance_ < 1)) {
+      throw std::runtime_error(path + ": crosscheck_distance_tolerance() returned " + std::to_string(subject.distance_tolerance_) +
+                               ", not a number in [0, 1)");
+    }
+    break;
+  }
   return subject;
 }
 
@@ -245,10 +304,14 @@ Answer SubjectBinding::ask(const Input& input) const {
   void* function = functions_[static_cast<std::size_t>(kind)];
   if (function == nullptr) throw std::runtime_error("the subject " + path_ + " does not answer " + std::string(name(kind)));
   return std::visit(
-      [function, kind]<class In>(const In& in) -> Answer {
+      [this, function, kind]<class In>(const In& in) -> Answer {
         if constexpr (has_own_signature<In>) {
           return ask_own_signature(function, in, kind);
         } else if constexpr (expressible<In>()) {
+          if (pieces_of(kind).judged == Judged::distance) {
+            if constexpr (has_magnitudes<In>()) return ask_distance(function, in, kind, distance_tolerance_);
+            throw std::logic_error("a distance kind whose shapes have no magnitude here");
+          }
           return Answer::of(hit_of(call(function, in), kind));
         } else {
           throw std::logic_error("no function for this kind");  // never: answers() is false for it

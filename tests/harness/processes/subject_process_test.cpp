@@ -74,7 +74,8 @@ TEST(SubjectProcess, TheBulletExampleAnswersTheKindsItExportsAndIsNamedByItsHash
   const auto bullet = load_subject(CROSSCHECK_BULLET_SUBJECT, 20);
   for (QueryKind kind : {QueryKind::ray_aabb, QueryKind::sphere_sphere, QueryKind::aabb_aabb, QueryKind::obb_obb,
                          QueryKind::tri_aabb, QueryKind::tri_obb, QueryKind::moving_obb, QueryKind::ray_mesh,
-                         QueryKind::mesh_mesh, QueryKind::mesh_mesh_first, QueryKind::broadphase}) {
+                         QueryKind::mesh_mesh, QueryKind::mesh_mesh_first, QueryKind::broadphase,
+                         QueryKind::tri_tri_distance, QueryKind::sphere_sphere_distance, QueryKind::sphere_obb_distance}) {
     EXPECT_TRUE(bullet->answers(kind)) << name(kind);
   }
   for (QueryKind kind : {QueryKind::tri_tri, QueryKind::kdop_kdop, QueryKind::disc_walls}) {
@@ -83,12 +84,23 @@ TEST(SubjectProcess, TheBulletExampleAnswersTheKindsItExportsAndIsNamedByItsHash
   EXPECT_EQ(bullet->identity().file, "libcrosscheck_bullet_subject.so");
   EXPECT_EQ(bullet->identity().version, 1);
   EXPECT_EQ(bullet->identity().sha256.size(), 64u);
-  EXPECT_EQ(bullet->identity().kinds.size(), 11u);
+  EXPECT_EQ(bullet->identity().kinds.size(), 14u);
   EXPECT_TRUE(bullet->ask(kTouching).hit);
   EXPECT_FALSE(bullet->ask(AabbAabbInput{kUnit, {{1.5, 0, 0}, {2, 1, 1}}}).hit);
   EXPECT_TRUE(bullet->ask(SphereSphereInput{{{0, 0, 0}, 1}, {{1.5, 0, 0}, 1}}).hit);
   EXPECT_FALSE(bullet->ask(RayAabbInput{{{-1, 2.5, 0.5}, {1, 0, 0}, 0, 3}, kUnit}).hit);
   EXPECT_THROW(bullet->ask(TriTriInput{}), std::logic_error);
+  // A distance: balls of radii 1 and 2 with centres 5 apart, 2 apart; the bounds its tolerance
+  // (2^-9) times the largest magnitude, 4.
+  const Answer d = bullet->ask(SphereSphereDistanceInput{{{0, 0, 0}, 1}, {{3, 4, 0}, 2}});
+  ASSERT_EQ(d.params.size(), 9u);
+  EXPECT_FALSE(d.hit);
+  EXPECT_NEAR(d.params[0], 2, 1e-9);
+  EXPECT_NEAR(d.params[1], 0.6, 1e-9);  // on_a: a's point toward b
+  EXPECT_NEAR(d.params[4], 1.8, 1e-9);  // on_b: b's point toward a
+  EXPECT_EQ(d.params[7], 0x1p-9 * 4);
+  EXPECT_EQ(d.params[8], 0x1p-9 * 4);
+  EXPECT_TRUE(bullet->ask(SphereObbDistanceInput{{{0, 0, 0.5}, 1}, {{0, 0, 0}, {1, 1, 1}, Mat3::identity()}}).hit);
 }
 
 TEST(SubjectProcess, TheOdeExampleAnswersTheKindsItExports) {
@@ -162,6 +174,8 @@ TEST(SubjectProcess, ALibraryThatIsNoSubjectIsRefusedWithTheReason) {
   EXPECT_TRUE(contains(refusal(test_subject("no_version")), "exports no crosscheck_subject_version"));
   EXPECT_TRUE(contains(refusal(test_subject("wrong_version")), "interface version 2, this crosscheck takes version 1"));
   EXPECT_TRUE(contains(refusal(test_subject("no_kind")), "exports no crosscheck_<kind>"));
+  EXPECT_TRUE(contains(refusal(test_subject("no_tolerance")),
+                       "exports crosscheck_sphere_sphere_distance but no crosscheck_distance_tolerance()"));
   EXPECT_EQ(refusal(test_subject("misbehaving")), "(loaded)");
 }
 
@@ -204,8 +218,8 @@ TEST(SubjectProcess, EachFaultIsThatCallsFailureAndTheNextCallIsAnsweredAgain) {
   EXPECT_TRUE(contains(failure(*misbehaving, SphereSphereInput{{{0, 0, 0}, 1}, {{1, 0, 0}, 1}}), "returned 7"));
   EXPECT_EQ(failure(*misbehaving, kTouching), "(answered)");
   EXPECT_TRUE(misbehaving->ask(kTouching).hit);
-  // Its crosscheck_sphere_sphere_distance is no function of the interface: never looked up.
-  EXPECT_FALSE(misbehaving->answers(QueryKind::sphere_sphere_distance));
+  // Its crosscheck_tri_tri_intersection is no function of the interface: never looked up.
+  EXPECT_FALSE(misbehaving->answers(QueryKind::tri_tri_intersection));
   EXPECT_EQ(misbehaving->identity().kinds, (std::vector<std::string>{"sphere_sphere", "aabb_aabb"}));
 }
 
