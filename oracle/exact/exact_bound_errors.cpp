@@ -328,13 +328,24 @@ class Measure {
     term("witness", "total", off, r.answer.point_error);
   }
 
+  // Two triangles: the distance against its certified bound (the total alone: it is certified
+  // after the fact), each witness's distance from its triangle against the rounding term.
+  void operator()(const bounds::TriangleSeparation& r) {
+    if (!finite_triangle(r.a) || !finite_triangle(r.b)) return;
+    distance(r.answer, {squared_distance_between_triangles(r.a, r.b)}, -1);
+    const double off = std::max(off_triangle(r.answer.on_a, r.a), off_triangle(r.answer.on_b, r.b));
+    term("witness", "rounding", off, r.bound.point_rounding());
+    term("witness", "total", off, r.answer.point_error);
+  }
+
  private:
-  // An upper end of |x - exact| for a double x: exact lies between its rounding down and the next
-  // double up.
+  // |x - exact| for a double x, rounded up to a double: the least double e with x within e of
+  // the exact signed distance, decided on squares (root_within).
   static double error_of(double x, const ExactSignedDistance& exact) {
-    const double down = rounded_down(exact), up = std::nextafter(down, INFINITY);
-    const Rational q = rational(x);
-    return std::max(magnitude(q - rational(down)), magnitude(q - rational(up)));
+    const Rational y = exact.sign * (rational(x) + exact.reach);
+    const auto short_of = [&](double e) { return e < 0 || !root_within(exact.squared, y, rational(e)); };
+    const double estimate = std::fabs(x - rounded_down(exact));
+    return std::nextafter(largest_double_where(short_of, estimate), INFINITY);
   }
 
   // The signed distance's error, against the rounding term (when >= 0) and the whole bound.
@@ -349,6 +360,9 @@ class Measure {
   static double off_sphere(const Vec3& p, const Sphere& s) {
     const QVec3 d = rational(p) - rational(s.center);
     return error_of(0, {dot(d, d), 1, rational(s.radius)});
+  }
+  static double off_triangle(const Vec3& p, const Triangle& t) {
+    return error_of(0, {squared_distance_to_triangle(rational(p), t)});
   }
   static double off_box(const Vec3& p, const Obb& b) {
     const QVec3 q = rational(p);
@@ -452,6 +466,7 @@ std::vector<TermError> ExactRationalReference::bound_errors(const bounds::Record
   for (const auto& r : records.cubes) measure(r, records.radius_roots, records.placements);
   for (const auto& r : records.sphere_separations) measure(r);
   for (const auto& r : records.sphere_obb_separations) measure(r);
+  for (const auto& r : records.triangle_separations) measure(r);
   return out;
 }
 

@@ -24,5 +24,6 @@ template void record(Records&, const RadiusRoot&);
 template void record(Records&, const Cube&);
 template void record(Records&, const SphereSeparation&);
 template void record(Records&, const SphereObbSeparation&);
+template void record(Records&, const TriangleSeparation&);
 
 }  // namespace cc::bounds

@@ -24,6 +24,7 @@
 #include "collide/sphere_bound.h"
 #include "collide/sphere_distance_bound.h"
 #include "collide/sweep_bound.h"
+#include "collide/triangle_distance_bound.h"
 #include "collide/transform_bound.h"
 #include "collide/widening.h"
 
@@ -46,6 +47,7 @@ struct Records {
   std::vector<Cube> cubes;
   std::vector<SphereSeparation> sphere_separations;
   std::vector<SphereObbSeparation> sphere_obb_separations;
+  std::vector<TriangleSeparation> triangle_separations;
 
   void add(const Quotient& r) { quotients.push_back(r); }
   void add(const SphereSquares& r) { spheres.push_back(r); }
@@ -62,6 +64,7 @@ struct Records {
   void add(const Cube& r) { cubes.push_back(r); }
   void add(const SphereSeparation& r) { sphere_separations.push_back(r); }
   void add(const SphereObbSeparation& r) { sphere_obb_separations.push_back(r); }
+  void add(const TriangleSeparation& r) { triangle_separations.push_back(r); }
 };
 
 }  // namespace cc::bounds

@@ -7,7 +7,9 @@
 #include "collide/fp.h"
 #include "collide/length.h"
 #include "collide/projection_gap.h"
+#include "collide/record_sink.h"
 #include "collide/segment_distance.h"
+#include "collide/triangle_distance_bound.h"
 
 namespace cc {
 namespace {
@@ -113,7 +115,10 @@ double triangle_gap_along(const Triangle& a, const Triangle& b, const Vec3& dire
   return projection_gap(a.v, b.v, direction);
 }
 
-Separation distance_triangle_triangle(const Triangle& a, const Triangle& b) {
+namespace {
+
+template <class Records>
+Separation triangle_triangle(const Triangle& a, const Triangle& b, Records& records) {
   if (!finite(a) || !finite(b)) return Separation::outside_the_domain();
   Best best;
   double extent = 0;
@@ -135,14 +140,10 @@ Separation distance_triangle_triangle(const Triangle& a, const Triangle& b) {
     vertices_and_crossings(a, b, false, best);
     vertices_and_crossings(b, a, true, best);
   }
-  // Each witness is v0 + s (v1 - v0) for an edge (s in [0, 1]) or v0 + s e1 + t e2 for a face
-  // (s, t >= 0, s + t <= 1, as computed): with M the largest vertex coordinate, each edge
-  // vector rounds u of 2M, each product u of 2M and carries its vector's error (2uM in all, as
-  // s + t <= 1), each sum u of at most 3M: within 12uM per coordinate, 20.8uM in length; 32uM
-  // leaves room for s + t exceeding 1 by its own rounding.
+  // The witnesses' bound: triangle_distance_bound.h.
   double magnitude = 0;
   for (int i = 0; i < 3; ++i) magnitude = std::max({magnitude, max_abs(a.v[i]), max_abs(b.v[i])});
-  const double point_error = 32 * fp::u * magnitude + fp::subnormal_slack;
+  const bounds::TriangleDistanceBound bound{magnitude};
   // The lower end: the gap along the witnesses' direction, and along their features' normal,
   // which a noisy pair of witnesses (nearly touching triangles, where their rounding turns
   // their direction) does not tilt. Both face from a to b; none when the witnesses meet.
@@ -152,7 +153,21 @@ Separation distance_triangle_triangle(const Triangle& a, const Triangle& b) {
     const Vec3 normal = dot(best.normal, along) < 0 ? -1.0 * best.normal : best.normal;
     lower = std::max(triangle_gap_along(a, b, along), triangle_gap_along(a, b, normal));
   }
-  return Separation::certified(best.on_a, best.on_b, point_error, lower);
+  const Separation s = Separation::certified(best.on_a, best.on_b, bound.point(), lower);
+  records.add(bounds::TriangleSeparation{a, b, s, bound});
+  return s;
+}
+
+}  // namespace
+
+Separation distance_triangle_triangle(const Triangle& a, const Triangle& b) {
+  bounds::NoRecords none;
+  return triangle_triangle(a, b, none);
+}
+
+Separation distance_triangle_triangle(const Triangle& a, const Triangle& b, bounds::Records& records) {
+  bounds::RecordsRef into{records};
+  return triangle_triangle(a, b, into);
 }
 
 }  // namespace cc

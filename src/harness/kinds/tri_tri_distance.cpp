@@ -10,7 +10,9 @@
 #include <cmath>
 #include <utility>
 
+#include "collide/record_sink.h"
 #include "collide/triangle_distance.h"
+#include "collide/triangle_distance_bound.h"
 #include "harness/generation/gaps.h"
 #include "harness/generation/regimes.h"
 #include "harness/generation/rotation.h"
@@ -69,6 +71,12 @@ TriTriDistanceInput closest_features(ValueSource& v) {
   return in;
 }
 
+// The bounds of the answer: the distance's whole bound (certified after the fact: no term of its
+// own), the witnesses' rounding and whole bound.
+constexpr BoundTerm kBoundTerms[] = {{"distance_triangle_triangle", "signed distance", "total"},
+                                     {"distance_triangle_triangle", "witness", "rounding"},
+                                     {"distance_triangle_triangle", "witness", "total"}};
+
 constexpr std::string_view kConfigurations[] = {
     "touching", "just apart", "just overlapping", "apart", "segment triangle", "point triangle", "sliver",
     "parallel faces", "parallel edges", "tiny", "huge", "far from the origin"};
@@ -126,8 +134,10 @@ void Query<TriTriDistanceInput>::recognise(const TriTriDistanceInput& in, Config
   found.far(largest, std::max(longest_edge(in.a), longest_edge(in.b)));
 }
 
-std::span<const BoundTerm> Query<TriTriDistanceInput>::bound_terms() { return {}; }
+std::span<const BoundTerm> Query<TriTriDistanceInput>::bound_terms() { return kBoundTerms; }
 
-void Query<TriTriDistanceInput>::probe(const TriTriDistanceInput&, std::vector<bounds::Records>&) {}
+void Query<TriTriDistanceInput>::probe(const TriTriDistanceInput& in, std::vector<bounds::Records>& records) {
+  distance_triangle_triangle(in.a, in.b, bounds::next_call(records));
+}
 
 }  // namespace cc::harness
