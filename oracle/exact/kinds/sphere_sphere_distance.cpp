@@ -14,6 +14,8 @@
 namespace cc::exact {
 
 template <>
+ExactVerdict judge(const harness::SphereSphereInput& in);
+template <>
 harness::Explanation explain(const harness::SphereSphereInput& in);
 
 namespace {
@@ -31,11 +33,12 @@ ExactSignedDistance signed_distance(const harness::SphereSphereDistanceInput& in
 template <>
 ExactVerdict judge(const harness::SphereSphereDistanceInput& in) {
   const Sphere &a = in.a, &b = in.b;
-  const std::initializer_list<double> all = {a.center.x, a.center.y, a.center.z, a.radius,
-                                             b.center.x, b.center.y, b.center.z, b.radius};
-  if (!all_finite(all)) return documented(false, "NaN or infinite input");
-  if (a.radius < 0 || b.radius < 0) return documented(false, "negative radius");
-  const double magnitude = max_magnitude(all);
+  // The two-ball test's documented answers (NaN or infinite input, a negative radius) are the
+  // distance's too; its range is not ([2^-500, 2^500]: distances reach down to 0).
+  ExactVerdict balls = judge(harness::SphereSphereInput{a, b});
+  if (balls.contract == harness::Contract::documented) return balls;
+  const double magnitude =
+      max_magnitude({a.center.x, a.center.y, a.center.z, a.radius, b.center.x, b.center.y, b.center.z, b.radius});
   ExactVerdict v = distance_verdict(signed_distance(in), magnitude, boundary_of(a), boundary_of(b));
   if (auto why = scale_outside(magnitude, -1074, kDistanceMaxExponent)) return beyond_range(std::move(v), *why);
   return v;
