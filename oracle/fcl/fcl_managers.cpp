@@ -10,8 +10,23 @@
 #include <fcl/broadphase/detail/hierarchy_tree.h>
 
 #include <stdexcept>
+#include <string>
 
 namespace cc::fcl_oracle {
+namespace {
+
+// SSaP with its three sorted lists in view (they are protected).
+class ListedSSaP final : public fcl::SSaPCollisionManagerd {
+ public:
+  std::string fault() const {
+    if (objs_y.size() <= objs_x.size()) return "";
+    return "its lists are out of step (" + std::to_string(objs_x.size()) + " objects sorted by x, " +
+           std::to_string(objs_y.size()) + " by y, " + std::to_string(objs_z.size()) +
+           " by z: unregisterObject missed one after others moved): collide() would read past the end of objs_x";
+  }
+};
+
+}  // namespace
 
 const std::vector<std::string>& fcl_manager_names() {
   static const std::vector<std::string> names = {"Naive",           "SaP",
@@ -25,7 +40,7 @@ std::unique_ptr<fcl::BroadPhaseCollisionManagerd> make_fcl_manager(const std::st
                                                                    double cell) {
   if (name == "Naive") return std::make_unique<fcl::NaiveCollisionManagerd>();
   if (name == "SaP") return std::make_unique<fcl::SaPCollisionManagerd>();
-  if (name == "SSaP") return std::make_unique<fcl::SSaPCollisionManagerd>();
+  if (name == "SSaP") return std::make_unique<ListedSSaP>();
   if (name == "IntervalTree") return std::make_unique<fcl::IntervalTreeCollisionManagerd>();
   if (name == "DynamicAABBTree") return std::make_unique<fcl::DynamicAABBTreeCollisionManagerd>();
   if (name == "DynamicAABBTree_Array") return std::make_unique<fcl::DynamicAABBTreeCollisionManager_Arrayd>();
@@ -36,6 +51,11 @@ std::unique_ptr<fcl::BroadPhaseCollisionManagerd> make_fcl_manager(const std::st
                                   fcl::Vector3d(world.hi.x, world.hi.y, world.hi.z));
   }
   throw std::invalid_argument("unknown FCL broad-phase manager \"" + name + "\"");
+}
+
+std::string fcl_manager_fault(const fcl::BroadPhaseCollisionManagerd& manager) {
+  const auto* ssap = dynamic_cast<const ListedSSaP*>(&manager);
+  return ssap != nullptr ? ssap->fault() : "";
 }
 
 }  // namespace cc::fcl_oracle

@@ -20,4 +20,11 @@ const std::vector<std::string>& fcl_manager_names();
 std::unique_ptr<fcl::BroadPhaseCollisionManagerd> make_fcl_manager(const std::string& name, const Aabb& world,
                                                                    double cell);
 
+/// Why collide() on `manager` would read memory outside its own lists, or "" when it would not.
+/// FCL 0.7's SSaP reads objs_x at objs_y's last index (selectOptimalAxis): once unregisterObject
+/// has missed the leaving object in objs_y (it searches lists sorted by where the boxes were
+/// before they moved), objs_y is the longer and the read goes past objs_x's end, where what it
+/// finds, and so whether it crashes, differs from process to process.
+std::string fcl_manager_fault(const fcl::BroadPhaseCollisionManagerd& manager);
+
 }  // namespace cc::fcl_oracle

@@ -6,6 +6,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <string>
+#include <vector>
 
 namespace cc::fcl_oracle {
 namespace {
@@ -113,6 +115,30 @@ TEST(FclSecondOpinion, LibccdIsNotAskedAboutNonFiniteCoordinates) {
   EXPECT_EQ(ask(in)[0].status, Opinion::Status::not_applicable);
   in.tri.v[1].z = 10;
   EXPECT_EQ(ask(in)[0].status, Opinion::Status::answered);
+}
+
+// SSaP's unregisterObject misses a box in its list by y when another box has moved since the
+// lists were sorted; its collide() would then read past the end of its list by x, and crashed in
+// one process and answered in another. The adapter reports the fault and never calls collide().
+TEST(FclSecondOpinion, SSaPsListsOutOfStepAreAFaultNotARead) {
+  const Aabb point{{0, 0, 0}, {0, 0, 0}};
+  harness::BroadphaseInput in;
+  in.frames = {{std::nullopt, point, point, point}, {std::nullopt, point, Aabb{{0, 1, 0}, {0, 1, 0}}, std::nullopt}};
+  const auto opinion_of = [](const std::vector<Opinion>& opinions, const std::string& party) {
+    for (const Opinion& o : opinions) {
+      if (o.party == party) return o;
+    }
+    return Opinion{};
+  };
+  const auto opinions = ask(in);
+  const Opinion ssap = opinion_of(opinions, "fcl.SSaPCollisionManager");
+  EXPECT_EQ(ssap.status, Opinion::Status::failed);
+  EXPECT_EQ(ssap.detail.rfind("frame 1: its lists are out of step (2 objects sorted by x, 3 by y, 2 by z", 0), 0u) << ssap.detail;
+  const Opinion naive = opinion_of(opinions, "fcl.NaiveCollisionManager");
+  ASSERT_EQ(naive.status, Opinion::Status::answered);
+  EXPECT_EQ(naive.answer.frames, (std::vector<std::vector<harness::FacePair>>{{{1, 2}, {1, 3}, {2, 3}}, {}}));
+  in.frames[1][3] = point;  // nothing leaves: the lists stay in step
+  EXPECT_EQ(opinion_of(ask(in), "fcl.SSaPCollisionManager").status, Opinion::Status::answered);
 }
 
 }  // namespace

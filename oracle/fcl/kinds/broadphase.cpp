@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "oracle/fcl/fcl_managers.h"
 #include "oracle/fcl/parties.h"
@@ -107,6 +108,9 @@ Opinion run_manager(const std::string& manager, const harness::BroadphaseInput& 
       fcl_manager->setup();  // as FCL's own tests do after the first registration
     } else {
       fcl_manager->update();
+    }
+    if (const std::string fault = fcl_manager_fault(*fcl_manager); !fault.empty()) {
+      return failed("frame " + std::to_string(&frame - in.frames.data()) + ": " + fault);
     }
     std::vector<harness::FacePair> pairs;
     fcl_manager->collide(&pairs, record_pair);
