@@ -11,6 +11,11 @@
 //    contact, seed 1): library collide() (all pairs, approximate update, descent into the larger
 //    volume, the rule FCL's traversal follows) against oracle/fcl's fcl_collide_meshes with the
 //    same volume type (OBBd, AABBd, KDOPd<18>).
+//  - bvh_distance/env_rob/<bv>: env.obj against rob.obj over the same poses, the distance with
+//    a pair of nearest points: library distance() (bvh_distance.h) on Obb and sphere trees
+//    against FCL's distance() with nearest points on BVHModel<OBBRSSd> (the obb row, FCL's
+//    recommended volume for distance) and <RSSd> (the sphere row: FCL has no sphere trees, and
+//    RSS is its volume built for distance). The distances are summed on both sides as a check.
 //  - The library's sphere trees are compared with FCL's kIOSd (its nearest: FCL has no tree of
 //    plain spheres), on rows named sphere, without a target.
 #include <benchmark/benchmark.h>
@@ -21,11 +26,14 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <tuple>
+#include <type_traits>
 
 #include "bench/fcl_models.h"
 #include "bench/inputs.h"
 #include "bench/suites.h"
 #include "collide/bvh_collide.h"
+#include "collide/bvh_distance.h"
 #include "harness/generation/choices.h"
 #include "harness/formats/mesh_files.h"
 #include "harness/generation/mesh_poses.h"
@@ -174,6 +182,55 @@ void register_all_pairs(std::shared_ptr<const Mesh> env, std::shared_ptr<const M
   }
 }
 
+void register_distance(std::shared_ptr<const Mesh> env, std::shared_ptr<const Mesh> rob) {
+  const auto poses = env_rob_poses(env, rob);
+  const double queries = static_cast<double>(poses->size());
+  const auto rows = {std::tuple{harness::BvType::obb, fcl_oracle::Volume::obbrss},
+                     std::tuple{harness::BvType::sphere, fcl_oracle::Volume::rss}};
+  for (const auto& [lib, fcl] : rows) {
+    const std::string name = "bvh_distance/env_rob/" + std::string(harness::to_string(lib));
+    // The distances summed, and the counters summed (bv_tests, primitive_tests).
+    auto trees = std::make_shared<std::function<double(DistanceCounters&)>>();
+    harness::with_bv_type(lib, [&]<class BV>() {
+      if constexpr (std::is_same_v<BV, Obb> || std::is_same_v<BV, Sphere>) {
+        auto a = std::make_shared<const Bvh<BV>>(build_bvh<BV>(*env, BuildOptions{}));
+        auto b = std::make_shared<const Bvh<BV>>(build_bvh<BV>(*rob, BuildOptions{}));
+        *trees = [a, b, poses](DistanceCounters& counters) {
+          double sum = 0;
+          counters = {};
+          for (const harness::MeshPair& m : *poses) {
+            const MeshSeparation d = distance(*a, m.pose_a, *b, m.pose_b);
+            sum += d.separation.distance;
+            counters.bv_tests += d.counters.bv_tests;
+            counters.primitive_tests += d.counters.primitive_tests;
+          }
+          return sum;
+        };
+      }
+    });
+    benchmark::RegisterBenchmark((name + "/lib").c_str(), [=](benchmark::State& state) {
+      double sum = 0;
+      DistanceCounters counters;
+      for (auto _ : state) benchmark::DoNotOptimize(sum = (*trees)(counters));
+      state.counters["items_per_iter"] = queries;
+      state.counters["distance_sum"] = sum;
+      state.counters["bv_tests"] = static_cast<double>(counters.bv_tests) / queries;
+      state.counters["primitive_tests"] = static_cast<double>(counters.primitive_tests) / queries;
+    })->Unit(benchmark::kMillisecond);
+    (void)fcl_oracle::fcl_mesh_distance(fcl, poses->front());  // builds and caches FCL's models
+    benchmark::RegisterBenchmark((name + "/fcl").c_str(), [=, volume = fcl](benchmark::State& state) {
+      double sum = 0;
+      for (auto _ : state) {
+        sum = 0;
+        for (const harness::MeshPair& m : *poses) sum += fcl_oracle::fcl_mesh_distance(volume, m).distance;
+        benchmark::DoNotOptimize(sum);
+      }
+      state.counters["items_per_iter"] = queries;
+      state.counters["distance_sum"] = sum;
+    })->Unit(benchmark::kMillisecond);
+  }
+}
+
 }  // namespace
 
 void register_hierarchy_benchmarks() {
@@ -187,6 +244,7 @@ void register_hierarchy_benchmarks() {
   torus.resolution = 158;  // 99,856 triangles
   register_build("torus100k", std::make_shared<const Mesh>(make_mesh(torus)), 5);
   register_all_pairs(env, rob);
+  register_distance(env, rob);
 }
 
 }  // namespace cc::bench

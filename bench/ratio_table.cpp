@@ -158,6 +158,29 @@ void all_pairs_rows(const Results& r, std::vector<Row>& rows) {
   }
 }
 
+// Mesh distance: at least FCL's speed on the obb row (against OBBRSS); the sphere row is against
+// RSS, FCL's volume built for distance, without a target. The notes give both distance sums.
+void distance_rows(const Results& r, std::vector<Row>& rows) {
+  for (const auto& [name, lib] : r) {
+    if (!starts_with(name, "bvh_distance/") || name.compare(name.size() - 4, 4, "/lib") != 0) continue;
+    const std::string key = name.substr(0, name.size() - 4);
+    Row row = row_of("hierarchy distance", key, "us/query", lib.ns_per_item / 1e3);
+    char text[200];
+    std::snprintf(text, sizeof text, "per query: %.0f volume pairs, %.0f triangle pairs; distances summed over 200 poses: library %.6g",
+                  counter(lib, "bv_tests"), counter(lib, "primitive_tests"), counter(lib, "distance_sum"));
+    row.note = text;
+    if (const auto fcl = find(r, key + "/fcl")) {
+      row.fcl = fcl->ns_per_item / 1e3;
+      row.ratio = row.fcl / row.library;
+      const bool obb = key.find("/obb") != std::string::npos;
+      std::snprintf(text, sizeof text, ", FCL %.6g; FCL: BVHModel<%s>", counter(*fcl, "distance_sum"), obb ? "OBBRSSd" : "RSSd");
+      row.note += text;
+      if (obb) ratio_target(row, 1);
+    }
+    rows.push_back(row);
+  }
+}
+
 void broadphase_rows(const Results& r, std::vector<Row>& rows) {
   const std::size_t sizes[] = {1000, 10000, 100000};
   for (std::size_t n : sizes) {
@@ -242,6 +265,7 @@ std::vector<Row> make_rows(const Results& results, const nlohmann::json& campaig
   ray_rows(results, rows);
   build_rows(results, rows);
   all_pairs_rows(results, rows);
+  distance_rows(results, rows);
   broadphase_rows(results, rows);
   harness_rows(campaign, rows);
   return rows;

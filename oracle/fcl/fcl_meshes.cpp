@@ -1,6 +1,6 @@
 // FCL's mesh-mesh collision, for the mesh kinds' units: BVHModel<OBBd>, <OBBRSSd>, <AABBd>,
-// <KDOPd<18>>, <kIOSd> and <RSSd>, asked for all contacts or for the first; and FCL's contact
-// points, for comparing collision determination.
+// <KDOPd<18>>, <kIOSd> and <RSSd>, asked for all contacts or for the first; FCL's contact
+// points, for comparing collision determination; and its mesh distance.
 #include <fcl/geometry/bvh/BVH_model.h>
 #include <fcl/math/bv/AABB.h>
 #include <fcl/math/bv/OBB.h>
@@ -9,11 +9,13 @@
 #include <fcl/math/bv/kDOP.h>
 #include <fcl/math/bv/kIOS.h>
 #include <fcl/narrowphase/collision.h>
+#include <fcl/narrowphase/distance.h>
 
 #include <algorithm>
 #include <limits>
 #include <map>
 #include <memory>
+#include <stdexcept>
 
 #include "oracle/fcl/convert.h"
 #include "oracle/fcl/parties.h"
@@ -74,7 +76,29 @@ Opinion collide_models(const harness::MeshPair& m, bool first_only) {
   return o;
 }
 
+template <class BV>
+FclMeshDistance distance_models(const harness::MeshPair& m) {
+  const auto a = model_of<BV>(m.a.mesh), b = model_of<BV>(m.b.mesh);
+  fcl::DistanceRequestd request(true);  // with nearest points
+  fcl::DistanceResultd result;
+  fcl::distance(a.get(), to_fcl(m.pose_a), b.get(), to_fcl(m.pose_b), request, result);
+  const auto& p = result.nearest_points;
+  return {result.min_distance,
+          {p[0].x(), p[0].y(), p[0].z()},
+          {p[1].x(), p[1].y(), p[1].z()},
+          static_cast<std::uint32_t>(result.b1),
+          static_cast<std::uint32_t>(result.b2)};
+}
+
 }  // namespace
+
+FclMeshDistance fcl_mesh_distance(Volume volume, const harness::MeshPair& m) {
+  switch (volume) {
+    case Volume::rss: return distance_models<fcl::RSSd>(m);
+    case Volume::obbrss: return distance_models<fcl::OBBRSSd>(m);
+    default: throw std::invalid_argument("FCL's mesh distance takes RSS or OBBRSS models");
+  }
+}
 
 std::vector<FclContact> fcl_mesh_contacts(const harness::MeshPair& m) {
   if (m.a.mesh->size() == 0 || m.b.mesh->size() == 0) return {};

@@ -48,6 +48,16 @@ struct FclContact {
 };
 std::vector<FclContact> fcl_mesh_contacts(const harness::MeshPair& m);
 
+/// FCL's distance between two placed meshes (BVHModel<RSSd> or <OBBRSSd>, fcl_meshes.cpp), with
+/// nearest points as FCL gives them (world coordinates) and the faces they lie on; for the
+/// benchmarks that compare mesh distance. Throws std::invalid_argument for another volume type.
+struct FclMeshDistance {
+  double distance = 0;
+  Vec3 on_a, on_b;
+  std::uint32_t face_a = 0, face_b = 0;
+};
+FclMeshDistance fcl_mesh_distance(Volume volume, const harness::MeshPair& m);
+
 /// FCL's GJKSolver_libccd::shapeTriangleIntersect of a box (half extents, axes, centre) and a
 /// triangle, under the libccd time limit (fcl_shapes.cpp, for the kinds of a triangle and a box).
 Opinion fcl_shape_triangle(const Vec3& half, const Mat3& axes, const Vec3& center, const Triangle& t);
