@@ -121,35 +121,40 @@ Rational squared_depth_in_box(const QVec3& point, const Obb& box) {
   return *best;
 }
 
-Rational squared_distance_to_segment(const QVec3& point, const Segment& segment) {
-  const QVec3 a = rational(segment.a), d = rational(segment.b) - a;
+Rational squared_distance_to_segment(const QVec3& point, const QVec3& from, const QVec3& to) {
+  const QVec3 d = to - from;
   const Rational dd = dot(d, d);
   Rational t = 0;
   if (dd != 0) {
-    t = dot(point - a, d) / dd;
+    t = dot(point - from, d) / dd;
     if (t < 0) t = 0;
     if (t > 1) t = 1;
   }
-  const QVec3 gap = point - (a + t * d);
+  const QVec3 gap = point - (from + t * d);
   return dot(gap, gap);
 }
 
-Rational squared_distance_between_segments(const Segment& a, const Segment& b) {
-  Rational best = squared_distance_to_segment(rational(a.a), b);
-  for (const Rational& c : {squared_distance_to_segment(rational(a.b), b), squared_distance_to_segment(rational(b.a), a),
-                            squared_distance_to_segment(rational(b.b), a)}) {
+Rational squared_distance_to_segment(const QVec3& point, const Segment& segment) {
+  return squared_distance_to_segment(point, rational(segment.a), rational(segment.b));
+}
+
+namespace {
+
+Rational squared_distance_between_segments(const QVec3& a0, const QVec3& a1, const QVec3& b0, const QVec3& b1) {
+  Rational best = squared_distance_to_segment(a0, b0, b1);
+  for (const Rational& c : {squared_distance_to_segment(a1, b0, b1), squared_distance_to_segment(b0, a0, a1),
+                            squared_distance_to_segment(b1, a0, a1)}) {
     if (c < best) best = c;
   }
-  // The interior pair: a.a + s da - (b.a + t db) perpendicular to da and db.
-  const QVec3 pa = rational(a.a), pb = rational(b.a);
-  const QVec3 da = rational(a.b) - pa, db = rational(b.b) - pb, r = pa - pb;
+  // The interior pair: a0 + s da - (b0 + t db) perpendicular to da and db.
+  const QVec3 da = a1 - a0, db = b1 - b0, r = a0 - b0;
   const Rational aa = dot(da, da), bb = dot(db, db), ab = dot(da, db);
   const Rational denom = aa * bb - ab * ab;
   if (denom != 0) {
     const Rational c = dot(da, r), f = dot(db, r);
     const Rational s = (ab * f - c * bb) / denom, t = (aa * f - ab * c) / denom;
     if (s >= 0 && s <= 1 && t >= 0 && t <= 1) {
-      const QVec3 gap = (pa + s * da) - (pb + t * db);
+      const QVec3 gap = (a0 + s * da) - (b0 + t * db);
       const Rational g = dot(gap, gap);
       if (g < best) best = g;
     }
@@ -157,10 +162,8 @@ Rational squared_distance_between_segments(const Segment& a, const Segment& b) {
   return best;
 }
 
-namespace {
-
 // The foot of p on t's plane and whether it lies in t (t not degenerate: a nonzero normal).
-bool foot_in_triangle(const QVec3& p, const std::array<QVec3, 3>& t, const QVec3& n, QVec3& foot) {
+bool foot_in_triangle(const QVec3& p, const QTriangle& t, const QVec3& n, QVec3& foot) {
   foot = p - (dot(p - t[0], n) / dot(n, n)) * n;
   for (int i = 0; i < 3; ++i) {
     if (dot(cross(t[(i + 1) % 3] - t[i], foot - t[i]), n) < 0) return false;
@@ -168,38 +171,44 @@ bool foot_in_triangle(const QVec3& p, const std::array<QVec3, 3>& t, const QVec3
   return true;
 }
 
-std::array<QVec3, 3> rational_vertices(const Triangle& t) {
-  return {rational(t.v[0]), rational(t.v[1]), rational(t.v[2])};
-}
-
 }  // namespace
 
-Rational squared_distance_to_triangle(const QVec3& point, const Triangle& triangle) {
-  const std::array<QVec3, 3> t = rational_vertices(triangle);
+Rational squared_distance_between_segments(const Segment& a, const Segment& b) {
+  return squared_distance_between_segments(rational(a.a), rational(a.b), rational(b.a), rational(b.b));
+}
+
+QTriangle rational_triangle(const Triangle& t) { return {rational(t.v[0]), rational(t.v[1]), rational(t.v[2])}; }
+
+Rational squared_distance_to_triangle(const QVec3& point, const QTriangle& t) {
   const QVec3 n = cross(t[1] - t[0], t[2] - t[0]);
   QVec3 foot;
   if (!is_zero(n) && foot_in_triangle(point, t, n, foot)) {
     const QVec3 gap = point - foot;
     return dot(gap, gap);
   }
-  Rational best = squared_distance_to_segment(point, {triangle.v[0], triangle.v[1]});
+  Rational best = squared_distance_to_segment(point, t[0], t[1]);
   for (int i = 1; i < 3; ++i) {
-    const Rational d = squared_distance_to_segment(point, {triangle.v[i], triangle.v[(i + 1) % 3]});
+    const Rational d = squared_distance_to_segment(point, t[i], t[(i + 1) % 3]);
     if (d < best) best = d;
   }
   return best;
 }
 
-Rational squared_distance_between_triangles(const Triangle& a, const Triangle& b) {
+Rational squared_distance_to_triangle(const QVec3& point, const Triangle& triangle) {
+  return squared_distance_to_triangle(point, rational_triangle(triangle));
+}
+
+Rational squared_distance_between_triangles(const QTriangle& a, const QTriangle& b) {
   // An edge of one meeting the other (not degenerate) triangle: its endpoints on both sides of
   // the plane or on it, and the crossing in the triangle. (An edge in the plane meets the
   // triangle through an edge or a vertex, which the pairs below find at 0.)
   for (const auto& [from, to] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
-    const std::array<QVec3, 3> t = rational_vertices(*to);
+    const QTriangle& t = *to;
     const QVec3 n = cross(t[1] - t[0], t[2] - t[0]);
     if (is_zero(n)) continue;
     for (int i = 0; i < 3; ++i) {
-      const QVec3 p = rational(from->v[i]), q = rational(from->v[(i + 1) % 3]);
+      const QVec3& p = (*from)[i];
+      const QVec3& q = (*from)[(i + 1) % 3];
       const Rational dp = dot(p - t[0], n), dq = dot(q - t[0], n);
       if ((dp > 0 && dq > 0) || (dp < 0 && dq < 0) || dp == dq) continue;
       const QVec3 at = p + Rational(dp / (dp - dq)) * (q - p);
@@ -207,18 +216,21 @@ Rational squared_distance_between_triangles(const Triangle& a, const Triangle& b
       if (foot_in_triangle(at, t, n, foot)) return 0;
     }
   }
-  Rational best = squared_distance_to_triangle(rational(b.v[0]), a);
+  Rational best = squared_distance_to_triangle(b[0], a);
   for (int i = 0; i < 3; ++i) {
-    for (const Rational& d : {squared_distance_to_triangle(rational(a.v[i]), b),
-                              squared_distance_to_triangle(rational(b.v[(i + 1) % 3]), a)}) {
+    for (const Rational& d : {squared_distance_to_triangle(a[i], b), squared_distance_to_triangle(b[(i + 1) % 3], a)}) {
       if (d < best) best = d;
     }
     for (int j = 0; j < 3; ++j) {
-      const Rational d = squared_distance_between_segments({a.v[i], a.v[(i + 1) % 3]}, {b.v[j], b.v[(j + 1) % 3]});
+      const Rational d = squared_distance_between_segments(a[i], a[(i + 1) % 3], b[j], b[(j + 1) % 3]);
       if (d < best) best = d;
     }
   }
   return best;
+}
+
+Rational squared_distance_between_triangles(const Triangle& a, const Triangle& b) {
+  return squared_distance_between_triangles(rational_triangle(a), rational_triangle(b));
 }
 
 bool root_within(const Rational& square, const Rational& y, const Rational& e) {

@@ -4,6 +4,8 @@
 // for the library's distance queries (collide/separation.h).
 #pragma once
 
+#include <array>
+
 #include "collide/obb.h"
 #include "collide/segment.h"
 #include "collide/triangle.h"
@@ -28,8 +30,13 @@ Rational squared_distance_to_box(const QVec3& point, const Obb& box);
 /// for a flat box.
 Rational squared_depth_in_box(const QVec3& point, const Obb& box);
 
+/// A triangle with rational vertices (a triangle placed exactly by a pose, say).
+using QTriangle = std::array<QVec3, 3>;
+QTriangle rational_triangle(const Triangle& t);
+
 /// The squared distance from a point to a closed segment (a point when its ends coincide).
 Rational squared_distance_to_segment(const QVec3& point, const Segment& segment);
+Rational squared_distance_to_segment(const QVec3& point, const QVec3& from, const QVec3& to);
 
 /// The squared distance between two closed segments: the least of the four ends against the
 /// other segment and, when the segments are not parallel, of the pair of interior points whose
@@ -39,11 +46,13 @@ Rational squared_distance_between_segments(const Segment& a, const Segment& b);
 /// The squared distance from a point to a closed triangle (degenerate: the segment or point it
 /// is): the foot on its plane when that lies in it, else the nearest of its edges.
 Rational squared_distance_to_triangle(const QVec3& point, const Triangle& triangle);
+Rational squared_distance_to_triangle(const QVec3& point, const QTriangle& triangle);
 
 /// The squared distance between two closed triangles: 0 when an edge of either meets the other
 /// (a triangle that is not degenerate), else the least over each vertex against the other
 /// triangle and each pair of edges.
 Rational squared_distance_between_triangles(const Triangle& a, const Triangle& b);
+Rational squared_distance_between_triangles(const QTriangle& a, const QTriangle& b);
 
 /// Whether |x - y| <= e where x^2 = square (x >= 0) and y, e are rationals: x lies in
 /// [y - e, y + e], decided on squares.

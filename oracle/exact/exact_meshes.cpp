@@ -1,6 +1,7 @@
 #include "oracle/exact/exact_meshes.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <map>
 
@@ -87,6 +88,10 @@ class PlacedVertices {
   ExactShape triangle(std::uint32_t face, const std::string& name) {
     const auto& f = mesh_.faces[face];
     return rational_triangle_shape((*this)[f[0]], (*this)[f[1]], (*this)[f[2]], name);
+  }
+  QTriangle vertices(std::uint32_t face) {
+    const auto& f = mesh_.faces[face];
+    return {(*this)[f[0]], (*this)[f[1]], (*this)[f[2]]};
   }
 
  private:
@@ -245,6 +250,40 @@ bool certainly_apart(const FloatTriangle& a, const FloatTriangle& b, double thre
     }
   }
   return false;
+}
+
+ExactMeshDistance exact_mesh_distance(const MeshPair& m) {
+  const auto boxes_a = world_boxes(float_triangles(*m.a.mesh, m.pose_a), 0);
+  const auto boxes_b = world_boxes(float_triangles(*m.b.mesh, m.pose_b), 0);
+  // Each pair's lower bound: the distance between the boxes (which hold the exact triangles),
+  // each axis' gap lowered by 2^-50 of the coordinates for the subtraction's rounding, the root
+  // of the sum of squares by 2^-50 of itself.
+  std::vector<std::pair<double, FacePair>> pairs;
+  pairs.reserve(boxes_a.size() * boxes_b.size());
+  for (std::uint32_t i = 0; i < boxes_a.size(); ++i) {
+    const Aabb& p = boxes_a[i];
+    for (std::uint32_t j = 0; j < boxes_b.size(); ++j) {
+      const Aabb& q = boxes_b[j];
+      double squares = 0;
+      for (int k = 0; k < 3; ++k) {
+        const double apart = std::max(p.lo[k] - q.hi[k], q.lo[k] - p.hi[k]);
+        const double size = std::max({std::fabs(p.lo[k]), std::fabs(p.hi[k]), std::fabs(q.lo[k]), std::fabs(q.hi[k])});
+        const double gap = apart - 0x1p-50 * size;
+        if (gap > 0) squares += gap * gap;
+      }
+      pairs.push_back({std::min(std::sqrt(squares) * (1 - 0x1p-50), DBL_MAX), {i, j}});  // finite: a rational
+    }
+  }
+  std::sort(pairs.begin(), pairs.end());
+  PlacedVertices a(*m.a.mesh, m.pose_a), b(*m.b.mesh, m.pose_b);
+  ExactMeshDistance out;
+  for (const auto& [lower, pair] : pairs) {
+    if (out.faces && rational(lower) * rational(lower) > out.squared) break;  // every pair left is farther
+    const Rational d2 = squared_distance_between_triangles(a.vertices(pair.first), b.vertices(pair.second));
+    ++out.pairs_compared;
+    if (!out.faces || d2 < out.squared) out.squared = d2, out.faces = pair;
+  }
+  return out;
 }
 
 std::pair<ExactShape, ExactShape> placed_triangles(const MeshPair& m, const FacePair& pair) {

@@ -10,6 +10,7 @@
 #include "harness/model/input.h"
 #include "harness/model/oracle.h"
 #include "oracle/exact/convex_sat.h"
+#include "oracle/exact/exact_distance.h"
 
 namespace cc::exact {
 
@@ -46,6 +47,19 @@ FloatTriangle float_triangle(const Triangle& triangle, const RigidTransform& pos
 /// when unsure (the directions may not span space, the gap is near the threshold, the rounding
 /// bounds are too wide).
 bool certainly_apart(const FloatTriangle& a, const FloatTriangle& b, double threshold);
+
+/// The distance between the surfaces of the two meshes, each placed exactly by its pose: the
+/// least squared distance over their pairs of triangles (exact_distance.h), and a pair that has
+/// it (nothing for a mesh without triangles). The pairs are taken in the order of a certified
+/// lower bound (the gap between their placed bounding boxes) and those whose bound exceeds the
+/// least found are skipped: every pair's bound is computed, in floating point, and the pairs
+/// near the answer in rationals. Meshes within meshes_outside_domain's domain.
+struct ExactMeshDistance {
+  Rational squared = 0;
+  std::optional<harness::FacePair> faces;
+  std::size_t pairs_compared = 0;  // in rationals
+};
+ExactMeshDistance exact_mesh_distance(const harness::MeshPair& m);
 
 /// The two triangles of a pair, each placed exactly by its pose.
 std::pair<ExactShape, ExactShape> placed_triangles(const harness::MeshPair& m, const harness::FacePair& pair);

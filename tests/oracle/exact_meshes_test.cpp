@@ -121,6 +121,26 @@ TEST(JudgeMeshes, ThePosesPlaceTheMeshesExactly) {
   EXPECT_FALSE(judge_meshes(m).answer.hit);
 }
 
+// The post's foot above the floor's first triangle by `lift`: the distance is the lift, from
+// that pair; a pose that turns the post away leaves its nearest vertex 0.5 + lift away, and an
+// empty mesh has no pair. Only pairs whose boxes come near are compared in rationals.
+TEST(ExactMeshDistance, IsTheLeastOverThePairs) {
+  const ExactMeshDistance touching = exact_mesh_distance(floor_and_post(0));
+  EXPECT_EQ(touching.squared, 0);
+  EXPECT_EQ(touching.faces, (FacePair{0, 0}));
+  const ExactMeshDistance lifted = exact_mesh_distance(floor_and_post(0x1p-40));
+  EXPECT_EQ(lifted.squared, rational(0x1p-40) * rational(0x1p-40));
+  EXPECT_EQ(lifted.faces, (FacePair{0, 0}));
+  EXPECT_EQ(lifted.pairs_compared, 1u);  // the far triangle's box is farther than the answer
+  MeshPair turned = floor_and_post(0.25);
+  turned.pose_b.rotation = Mat3::from_columns({1, 0, 0}, {0, -1, 0}, {0, 0, -1});  // upside down about x
+  turned.pose_b.translation = {0, 1, 1.75};  // the foot at (0.5, 0.5, 1.5), the top at z = 0.5
+  EXPECT_EQ(exact_mesh_distance(turned).squared, rational(0.25));
+  MeshPair empty = floor_and_post(0);
+  empty.b = harness::triangles_mesh(Mesh{});
+  EXPECT_FALSE(exact_mesh_distance(empty).faces);
+}
+
 TEST(JudgeMeshes, AgreesWithBruteForceFarFromContact) {
   MeshPair m;
   m.a = harness::procedural_mesh({ProceduralMesh::Shape::sphere, 1, 8, 1.0});
