@@ -9,5 +9,6 @@ CC_NO_PARTIES(bullet_parties, disc_walls, DiscWalls, "Bullet is 3-D: a stand-in 
 CC_NO_PARTIES(bullet_parties, kdop_kdop, KdopKdop, "Bullet has no k-DOPs")
 CC_NO_PARTIES(bullet_parties, tri_tri, TriTri, "Bullet has no exact triangle-triangle test (GImpact's work with a collision margin)")
 CC_NO_PARTIES(bullet_parties, tri_tri_intersection, TriTriIntersection, "Bullet has no exact triangle-triangle test (GImpact's contacts work with a collision margin)")
+CC_NO_PARTIES(bullet_parties, mesh_mesh_distance, MeshMeshDistance, "Bullet has no distance between triangle meshes (GImpact and its triangle-mesh shapes give contacts; GJK takes convex shapes)")
 
 }  // namespace cc::bullet_oracle

@@ -4,6 +4,8 @@
 #include <cfloat>
 #include <cmath>
 #include <map>
+#include <memory>
+#include <utility>
 
 #include "oracle/exact/domain.h"
 #include "oracle/exact/judges.h"
@@ -252,38 +254,110 @@ bool certainly_apart(const FloatTriangle& a, const FloatTriangle& b, double thre
   return false;
 }
 
-ExactMeshDistance exact_mesh_distance(const MeshPair& m) {
-  const auto boxes_a = world_boxes(float_triangles(*m.a.mesh, m.pose_a), 0);
-  const auto boxes_b = world_boxes(float_triangles(*m.b.mesh, m.pose_b), 0);
-  // Each pair's lower bound: the distance between the boxes (which hold the exact triangles),
-  // each axis' gap lowered by 2^-50 of the coordinates for the subtraction's rounding, the root
-  // of the sum of squares by 2^-50 of itself.
+ExactMeshDistance exact_mesh_distance(const MeshPair& m, std::size_t max_compared) {
+  const std::vector<FloatTriangle> float_a = float_triangles(*m.a.mesh, m.pose_a), float_b = float_triangles(*m.b.mesh, m.pose_b);
+  const auto boxes_a = world_boxes(float_a, 0), boxes_b = world_boxes(float_b, 0);
+  // A pair's lower bound: the distance between the boxes (which hold the exact triangles), each
+  // axis' gap lowered by 2^-50 of the coordinates for the subtraction's rounding, the root of the
+  // sum of squares by 2^-50 of itself; finite, as a rational.
+  const auto lower = [&](const Aabb& p, const Aabb& q) {
+    double squares = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double apart = std::max(p.lo[k] - q.hi[k], q.lo[k] - p.hi[k]);
+      const double size = std::max({std::fabs(p.lo[k]), std::fabs(p.hi[k]), std::fabs(q.lo[k]), std::fabs(q.hi[k])});
+      const double gap = apart - 0x1p-50 * size;
+      if (gap > 0) squares += gap * gap;
+    }
+    return std::min(std::sqrt(squares) * (1 - 0x1p-50), DBL_MAX);
+  };
+  // An upper bound on the answer: the least distance between the pairs' first vertices as placed
+  // in floating point, plus their placement errors (sqrt(3) e each, 2 e taken) and 2^-50 of
+  // itself for its rounding.
+  double upper = INFINITY;
+  for (const FloatTriangle& p : float_a) {
+    for (const FloatTriangle& q : float_b) {
+      const Vec3 d = q.v[0] - p.v[0];
+      upper = std::min(upper, std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z) * (1 + 0x1p-50) + 2 * (p.error + q.error));
+    }
+  }
+  // The pairs that may hold the answer, nearest bound first.
   std::vector<std::pair<double, FacePair>> pairs;
-  pairs.reserve(boxes_a.size() * boxes_b.size());
   for (std::uint32_t i = 0; i < boxes_a.size(); ++i) {
-    const Aabb& p = boxes_a[i];
     for (std::uint32_t j = 0; j < boxes_b.size(); ++j) {
-      const Aabb& q = boxes_b[j];
-      double squares = 0;
-      for (int k = 0; k < 3; ++k) {
-        const double apart = std::max(p.lo[k] - q.hi[k], q.lo[k] - p.hi[k]);
-        const double size = std::max({std::fabs(p.lo[k]), std::fabs(p.hi[k]), std::fabs(q.lo[k]), std::fabs(q.hi[k])});
-        const double gap = apart - 0x1p-50 * size;
-        if (gap > 0) squares += gap * gap;
-      }
-      pairs.push_back({std::min(std::sqrt(squares) * (1 - 0x1p-50), DBL_MAX), {i, j}});  // finite: a rational
+      const double bound = lower(boxes_a[i], boxes_b[j]);
+      if (!(bound > upper)) pairs.push_back({bound, {i, j}});
     }
   }
   std::sort(pairs.begin(), pairs.end());
   PlacedVertices a(*m.a.mesh, m.pose_a), b(*m.b.mesh, m.pose_b);
   ExactMeshDistance out;
-  for (const auto& [lower, pair] : pairs) {
-    if (out.faces && rational(lower) * rational(lower) > out.squared) break;  // every pair left is farther
+  double beyond = INFINITY;  // a distance beyond the least found so far
+  for (const auto& [bound, pair] : pairs) {
+    if (out.faces && (out.squared == 0 || rational(bound) * rational(bound) > out.squared)) break;  // the rest are farther
+    // Pairs the float separating-axis filter finds apart by more than the least so far.
+    if (certainly_apart(float_a[pair.first], float_b[pair.second], beyond)) continue;
+    if (out.pairs_compared == max_compared) {
+      out.complete = false;
+      return out;
+    }
     const Rational d2 = squared_distance_between_triangles(a.vertices(pair.first), b.vertices(pair.second));
     ++out.pairs_compared;
-    if (!out.faces || d2 < out.squared) out.squared = d2, out.faces = pair;
+    if (!out.faces || d2 < out.squared) {
+      out.squared = d2, out.faces = pair;
+      // certainly_apart claims a separation above beyond (1 - 2^-40), and separations are at
+      // most distances: beyond is the least distance found, rounded, lifted by 2^-38.
+      beyond = root_of(d2) * (1 + 0x1p-38);
+    }
   }
   return out;
+}
+
+namespace {
+
+// The surface of a mesh placed exactly: a point lies within a tolerance of it when it does of
+// one of its faces, those whose placed boxes come near the point tried in rationals.
+// It keeps the mesh and the pose: the check outlives the input it was made from.
+NearBoundary surface_of(const std::shared_ptr<const Mesh>& mesh, const RigidTransform& pose) {
+  struct Surface {
+    std::shared_ptr<const Mesh> mesh;
+    RigidTransform pose;
+    std::vector<Aabb> boxes;
+    PlacedVertices placed;
+    Surface(std::shared_ptr<const Mesh> m, const RigidTransform& p)
+        : mesh(std::move(m)), pose(p), boxes(world_boxes(float_triangles(*mesh, pose), 0)), placed(*mesh, pose) {}
+  };
+  auto surface = std::make_shared<Surface>(mesh, pose);
+  return [surface](const QVec3& point, const Rational& tolerance) {
+    const Vec3 p = to_double(point);
+    // Boxes farther from p than the tolerance by more than the roundings of p and of the
+    // tolerance (2^-50 of their magnitudes) cannot hold a face within it.
+    const double reach = to_double(tolerance) * (1 + 0x1p-50) + 0x1p-50 * max_abs(p) + DBL_MIN;
+    for (std::uint32_t f = 0; f < surface->boxes.size(); ++f) {
+      const Aabb& box = surface->boxes[f];
+      bool near = true;
+      for (int k = 0; k < 3 && near; ++k) near = p[k] >= box.lo[k] - reach && p[k] <= box.hi[k] + reach;
+      if (near && squared_distance_to_triangle(point, surface->placed.vertices(f)) <= tolerance * tolerance) return true;
+    }
+    return false;
+  };
+}
+
+}  // namespace
+
+harness::ExactVerdict judge_mesh_distance(const MeshPair& m) {
+  if (auto why = meshes_outside_domain(m)) return unspecified(*why);
+  const ExactMeshDistance d = exact_mesh_distance(m, kMaxDistancePairs);
+  if (!d.complete) {
+    harness::ExactVerdict v;
+    v.decided = false;
+    v.margin = NAN;
+    v.note = "more than " + std::to_string(kMaxDistancePairs) +
+             " pairs of triangles may hold the distance (the placement's rounding, at this scale, blurs which): too "
+             "many to compare exactly";
+    return v;
+  }
+  return distance_verdict(ExactSignedDistance{d.squared}, magnitude_of(m), surface_of(m.a.mesh, m.pose_a),
+                          surface_of(m.b.mesh, m.pose_b));
 }
 
 std::pair<ExactShape, ExactShape> placed_triangles(const MeshPair& m, const FacePair& pair) {

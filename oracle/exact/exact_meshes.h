@@ -3,6 +3,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <utility>
@@ -10,6 +11,7 @@
 #include "harness/model/input.h"
 #include "harness/model/oracle.h"
 #include "oracle/exact/convex_sat.h"
+#include "oracle/exact/distance_check.h"
 #include "oracle/exact/exact_distance.h"
 
 namespace cc::exact {
@@ -52,14 +54,28 @@ bool certainly_apart(const FloatTriangle& a, const FloatTriangle& b, double thre
 /// least squared distance over their pairs of triangles (exact_distance.h), and a pair that has
 /// it (nothing for a mesh without triangles). The pairs are taken in the order of a certified
 /// lower bound (the gap between their placed bounding boxes) and those whose bound exceeds the
-/// least found are skipped: every pair's bound is computed, in floating point, and the pairs
-/// near the answer in rationals. Meshes within meshes_outside_domain's domain.
+/// least found are skipped, as are those certainly_apart finds farther than it: every pair's
+/// bound is computed, in floating point, and the pairs near the answer in rationals; meshes that
+/// meet stop at the first pair that does. Meshes within meshes_outside_domain's domain.
+/// At most max_compared pairs are compared in rationals: past them the answer is not complete
+/// (and its squared distance and faces the least found so far).
 struct ExactMeshDistance {
   Rational squared = 0;
   std::optional<harness::FacePair> faces;
   std::size_t pairs_compared = 0;  // in rationals
+  bool complete = true;
 };
-ExactMeshDistance exact_mesh_distance(const harness::MeshPair& m);
+ExactMeshDistance exact_mesh_distance(const harness::MeshPair& m, std::size_t max_compared = SIZE_MAX);
+
+/// More pairs of triangles than this compared in rationals (each some tenths of a millisecond
+/// with placed vertices) and the distance's verdict is undecided instead of slow: the scale, set
+/// by a far placement, then dwarfs the meshes, and the rounding of the placement every pair.
+inline constexpr std::size_t kMaxDistancePairs = 2000;
+
+/// The verdict on the distance between two placed meshes: outside the
+/// domain (meshes_outside_domain) unspecified; else distance_verdict on exact_mesh_distance, each
+/// witness checked against its mesh's placed surface.
+harness::ExactVerdict judge_mesh_distance(const harness::MeshPair& m);
 
 /// The two triangles of a pair, each placed exactly by its pose.
 std::pair<ExactShape, ExactShape> placed_triangles(const harness::MeshPair& m, const harness::FacePair& pair);

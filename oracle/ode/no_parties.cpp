@@ -15,5 +15,6 @@ CC_NO_PARTIES(ode_parties, sphere_obb_distance, SphereObbDistance, "ODE has no d
 CC_NO_PARTIES(ode_parties, sphere_sphere_distance, SphereSphereDistance, "ODE has no distance query (its colliders give contacts; dGeomSpherePointDepth is a point's, not a ball's)")
 CC_NO_PARTIES(ode_parties, tri_tri_distance, TriTriDistance, "ODE has no distance query (its colliders give contacts)")
 CC_NO_PARTIES(ode_parties, tri_tri_intersection, TriTriIntersection, "ODE's triangle contacts are points for dynamics, not the intersection")
+CC_NO_PARTIES(ode_parties, mesh_mesh_distance, MeshMeshDistance, "ODE has no distance query (its trimesh colliders give contacts)")
 
 }  // namespace cc::ode_oracle

@@ -9,6 +9,7 @@
 #include "harness/kinds/disc_walls.h"
 #include "harness/kinds/kdop_kdop.h"
 #include "harness/kinds/mesh_mesh.h"
+#include "harness/kinds/mesh_mesh_distance.h"
 #include "harness/kinds/mesh_mesh_first.h"
 #include "harness/kinds/moving_obb.h"
 #include "harness/kinds/obb_obb.h"

@@ -54,6 +54,14 @@ CollisionResult library_collide(const MeshPair& m, CollisionMode mode) {
   });
 }
 
+MeshSeparation library_distance(const MeshPair& m) {
+  const auto walk = [&]<class BV>() {
+    const auto a = cached_bvh<BV>(m.a.mesh, m.library.build), b = cached_bvh<BV>(m.b.mesh, m.library.build);
+    return distance(*a, m.pose_a, *b, m.pose_b);
+  };
+  return m.library.bv == BvType::sphere ? walk.operator()<Sphere>() : walk.operator()<Obb>();
+}
+
 RayMeshHit library_ray_mesh(const std::shared_ptr<const Mesh>& mesh, const LibraryBvh& library, const Ray& ray,
                             bool any_hit) {
   return with_bv_type(library.bv, [&]<class BV>() {

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "collide/bvh_collide.h"
+#include "collide/bvh_distance.h"
 #include "collide/ray_mesh.h"
 #include "harness/model/mesh_query.h"
 
@@ -22,6 +23,11 @@ BuildOptions build_options(const LibraryBvh& library);
 /// case's type and build, walked with its update and descent options (lazy_top_down: two lazy
 /// trees made anew, so the counters are those of a first query).
 CollisionResult library_collide(const MeshPair& meshes, CollisionMode mode);
+/// The library's distance between two placed meshes (bvh_distance.h) through both meshes'
+/// hierarchies of the case's build: sphere trees for a case of sphere trees, Obb trees for every
+/// other volume type (the distance walks those two); the update and descent do not apply, and a
+/// lazy build is walked whole.
+MeshSeparation library_distance(const MeshPair& meshes);
 /// The library's answer to a ray against a mesh through the mesh's hierarchy of the given type and
 /// build: the closest hit, or (any_hit) the first one found (lazy_top_down: through the whole
 /// top-down tree, which the rays take eager).

@@ -18,6 +18,7 @@
 #include "harness/model/inputs/disc_walls.h"
 #include "harness/model/inputs/kdop_kdop.h"
 #include "harness/model/inputs/mesh_mesh.h"
+#include "harness/model/inputs/mesh_mesh_distance.h"
 #include "harness/model/inputs/mesh_mesh_first.h"
 #include "harness/model/inputs/moving_obb.h"
 #include "harness/model/inputs/obb_obb.h"
@@ -53,4 +54,5 @@
   X(tri_tri_intersection, TriTriIntersection)     \
   X(tri_tri_distance, TriTriDistance)             \
   X(sphere_sphere_distance, SphereSphereDistance) \
-  X(sphere_obb_distance, SphereObbDistance)
+  X(sphere_obb_distance, SphereObbDistance)       \
+  X(mesh_mesh_distance, MeshMeshDistance)

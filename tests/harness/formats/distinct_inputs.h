@@ -107,7 +107,8 @@ void for_each_value(harness::Input& input, F&& f) {
         } else if constexpr (std::is_same_v<T, TriTriInput> || std::is_same_v<T, TriTriIntersectionInput> ||
                              std::is_same_v<T, TriTriDistanceInput>) {
           tri(in.a), tri(in.b);
-        } else if constexpr (std::is_same_v<T, MeshMeshInput> || std::is_same_v<T, MeshMeshFirstInput>) {
+        } else if constexpr (std::is_same_v<T, MeshMeshInput> || std::is_same_v<T, MeshMeshFirstInput> ||
+                             std::is_same_v<T, MeshMeshDistanceInput>) {
           meshes(in.meshes);
         } else if constexpr (std::is_same_v<T, BroadphaseInput>) {
           for (auto& frame : in.frames) {
@@ -211,6 +212,7 @@ inline harness::Input distinct_input(harness::QueryKind kind, DistinctValues& va
     case QueryKind::sphere_obb_distance: in = SphereObbDistanceInput{}; break;
     case QueryKind::mesh_mesh: in = MeshMeshInput{mesh_pair()}; break;
     case QueryKind::mesh_mesh_first: in = MeshMeshFirstInput{mesh_pair()}; break;
+    case QueryKind::mesh_mesh_distance: in = MeshMeshDistanceInput{mesh_pair()}; break;
     case QueryKind::broadphase: {
       BroadphaseInput b;
       const std::size_t frames = count(record ? 4 : 6), boxes = count(record ? 8 : 10);
