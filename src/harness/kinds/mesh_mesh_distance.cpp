@@ -5,6 +5,7 @@
 
 #include "harness/kinds/mesh_mesh.h"
 #include "harness/model/mesh_collide.h"
+#include "harness/kinds/separation_answer.h"
 
 namespace cc::harness {
 namespace {
@@ -14,10 +15,7 @@ using Collision = Query<MeshMeshInput>;
 }  // namespace
 
 Answer Query<MeshMeshDistanceInput>::ask(const MeshMeshDistanceInput& in) {
-  const Separation s = library_distance(in.meshes).separation;
-  Answer answer = Answer::of(s.distance <= 0);
-  answer.params = {s.distance, s.on_a.x, s.on_a.y, s.on_a.z, s.on_b.x, s.on_b.y, s.on_b.z, s.distance_error, s.point_error};
-  return answer;
+  return separation_answer(library_distance(in.meshes).separation);
 }
 
 MeshMeshDistanceInput Query<MeshMeshDistanceInput>::generate(ValueSource& v, const GenerateOptions& options) {

@@ -17,6 +17,7 @@
 #include "harness/generation/rotation.h"
 #include "harness/generation/shapes.h"
 #include "harness/judging/configurations.h"
+#include "harness/kinds/separation_answer.h"
 
 namespace cc::harness {
 namespace {
@@ -123,10 +124,7 @@ constexpr BoundTerm kBoundTerms[] = {{"distance_sphere_obb", "signed distance", 
 }  // namespace
 
 Answer Query<SphereObbDistanceInput>::ask(const SphereObbDistanceInput& in) {
-  const Separation s = distance_sphere_obb(in.ball, in.box);
-  Answer answer = Answer::of(s.distance <= 0);
-  answer.params = {s.distance, s.on_a.x, s.on_a.y, s.on_a.z, s.on_b.x, s.on_b.y, s.on_b.z, s.distance_error, s.point_error};
-  return answer;
+  return separation_answer(distance_sphere_obb(in.ball, in.box));
 }
 
 SphereObbDistanceInput Query<SphereObbDistanceInput>::generate(ValueSource& v, const GenerateOptions& options) {

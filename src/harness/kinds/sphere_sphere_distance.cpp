@@ -15,6 +15,7 @@
 #include "harness/generation/regimes.h"
 #include "harness/judging/configurations.h"
 #include "harness/kinds/sphere_sphere.h"
+#include "harness/kinds/separation_answer.h"
 
 namespace cc::harness {
 namespace {
@@ -48,10 +49,7 @@ constexpr BoundTerm kBoundTerms[] = {{"distance_sphere_sphere", "signed distance
 }  // namespace
 
 Answer Query<SphereSphereDistanceInput>::ask(const SphereSphereDistanceInput& in) {
-  const Separation s = distance_sphere_sphere(in.a, in.b);
-  Answer answer = Answer::of(s.distance <= 0);
-  answer.params = {s.distance, s.on_a.x, s.on_a.y, s.on_a.z, s.on_b.x, s.on_b.y, s.on_b.z, s.distance_error, s.point_error};
-  return answer;
+  return separation_answer(distance_sphere_sphere(in.a, in.b));
 }
 
 SphereSphereDistanceInput Query<SphereSphereDistanceInput>::generate(ValueSource& v, const GenerateOptions& options) {

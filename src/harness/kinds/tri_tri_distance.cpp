@@ -19,6 +19,7 @@
 #include "harness/generation/triangles.h"
 #include "harness/judging/configurations.h"
 #include "harness/kinds/tri_tri.h"
+#include "harness/kinds/separation_answer.h"
 
 namespace cc::harness {
 namespace {
@@ -84,10 +85,7 @@ constexpr std::string_view kConfigurations[] = {
 }  // namespace
 
 Answer Query<TriTriDistanceInput>::ask(const TriTriDistanceInput& in) {
-  const Separation s = distance_triangle_triangle(in.a, in.b);
-  Answer answer = Answer::of(s.distance <= 0);
-  answer.params = {s.distance, s.on_a.x, s.on_a.y, s.on_a.z, s.on_b.x, s.on_b.y, s.on_b.z, s.distance_error, s.point_error};
-  return answer;
+  return separation_answer(distance_triangle_triangle(in.a, in.b));
 }
 
 TriTriDistanceInput Query<TriTriDistanceInput>::generate(ValueSource& v, const GenerateOptions& options) {
