@@ -159,5 +159,28 @@ TEST(SubjectCli, TheSubjectsFindingsComeFirstAndItsCasesAreNeverAnsweredByAnothe
   EXPECT_NE(other.err.find("asking libtest_subject_hostile_exits.so"), std::string::npos) << other.err;
 }
 
+// A worker answers in a process with a history, replay in a fresh one: a subject whose answers
+// depend on what its process did before (right on its first 100 calls, touching boxes a miss
+// after) is wrong in the workers, right in a fresh process. Its findings are stored with the
+// fresh process's answers, the worker's in the note, so each replays unchanged.
+TEST(SubjectCli, AFindingIsStoredWithTheAnswersOfAFreshProcess) {
+  const TempFolder folder("crosscheck_subject_history");
+  const std::string later = subject("wrong_later");
+  const Outcome r = campaign(later, folder.path(), {"--seconds", "4", "--max-new", "2"});
+  ASSERT_EQ(r.status, 1) << r.out << r.err;
+  const auto files = case_files(folder.path() / "found");
+  ASSERT_FALSE(files.empty()) << r.out << r.err;
+  for (const fs::path& file : files) {
+    const harness::Case c = harness::read_case_file(file);
+    EXPECT_NE(c.note.find("its worker saw aabb_aabb impl_bug"), std::string::npos) << c.note;
+    EXPECT_NE(c.note.find("(a party answers differently in a fresh process)"), std::string::npos) << c.note;
+    EXPECT_NE(c.cls, harness::CaseClass::impl_bug) << file;  // right in a fresh process
+  }
+  const Outcome replay = crosscheck({"replay", "--subject", later, (folder.path() / "found").string()}, folder.path());
+  EXPECT_EQ(replay.status, 0) << replay.out << replay.err;
+  const std::string n = std::to_string(files.size());
+  EXPECT_NE(replay.out.find(n + " cases replayed: " + n + " unchanged, 0 changed"), std::string::npos) << replay.out;
+}
+
 }  // namespace
 }  // namespace cc::test

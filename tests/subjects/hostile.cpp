@@ -9,6 +9,8 @@
 //   CLOSES_FDS    closes descriptors 3..1023     WRITES_FDS     writes a byte to descriptors 3..63
 //   WRONG         touching boxes are a miss      LOAD_ABORTS    abort() in a constructor
 //   LOAD_EXITS    _exit(0) in a constructor      LOAD_HANGS     crosscheck_subject_version hangs
+//   WRONG_LATER   right on its first 100 calls in a process, touching boxes a miss after (an answer
+//                 that depends on what the process did before)
 #include <crosscheck/subject.h>
 #include <unistd.h>
 
@@ -17,9 +19,15 @@
 
 namespace {
 
+#if defined(HOSTILE_WRONG_LATER)
+int calls = 0;
+#endif
+
 bool overlap(double a_lo, double a_hi, double b_lo, double b_hi) {
 #if defined(HOSTILE_WRONG)
   return a_lo < b_hi && b_lo < a_hi;
+#elif defined(HOSTILE_WRONG_LATER)
+  return calls > 100 ? a_lo < b_hi && b_lo < a_hi : a_lo <= b_hi && b_lo <= a_hi;
 #else
   return a_lo <= b_hi && b_lo <= a_hi;
 #endif
@@ -43,6 +51,9 @@ int crosscheck_subject_version(void) {
 }
 
 int crosscheck_aabb_aabb(const cc_aabb* a, const cc_aabb* b) {
+#if defined(HOSTILE_WRONG_LATER)
+  ++calls;
+#endif
 #if defined(HOSTILE_EXITS)
   std::exit(0);
 #elif defined(HOSTILE_EXITS_NONZERO)
