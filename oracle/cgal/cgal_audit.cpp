@@ -22,6 +22,8 @@
 #include <CGAL/Distance_3/Segment_3_Segment_3.h>
 #include <CGAL/Distance_3/Triangle_3_Triangle_3.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/convex_hull_3.h>
 #include <CGAL/Intersections_3/Iso_cuboid_3_Iso_cuboid_3.h>
 #include <CGAL/Intersections_3/Iso_cuboid_3_Point_3.h>
 #include <CGAL/Intersections_3/Iso_cuboid_3_Ray_3.h>
@@ -361,7 +363,88 @@ CgalAnswer cgal_answer(const Triangle& a, const Triangle& b) {
   }
   return answer;
 }
-CgalAnswer cgal_answer(const Obb& a, const Obb& b) { return hit_or_miss(meet(pieces(a), pieces(b))); }
+namespace {
+
+/// A box's boundary as pieces: its six faces, two triangles each; a flat box, a segment or a point
+/// is all boundary, its pieces themselves.
+Pieces boundary(const Obb& b) {
+  Pieces solid = pieces(b);
+  if (!std::holds_alternative<Tetrahedron>(solid.front())) return solid;
+  const Point c = point(b.center);
+  Vector e[3];
+  for (int i = 0; i < 3; ++i) e[i] = vector(b.axes.col[i]) * FT(b.half[i]);
+  Pieces faces;
+  for (int i = 0; i < 3; ++i) {
+    const Vector &u = e[(i + 1) % 3], &w = e[(i + 2) % 3];
+    for (const FT& side : {FT(1), FT(-1)}) {
+      const Point f = c + e[i] * side;
+      faces.push_back(Triangle3(f - u - w, f + u - w, f + u + w));
+      faces.push_back(Triangle3(f - u - w, f + u + w, f - u + w));
+    }
+  }
+  return faces;
+}
+
+/// The eight corners of a box (repeated where half extents are 0).
+std::vector<Point> box_corners(const Obb& b) {
+  std::vector<Point> out;
+  for (int bits = 0; bits < 8; ++bits) {
+    Point p = point(b.center);
+    for (int i = 0; i < 3; ++i) p = p + vector(b.axes.col[i]) * FT((bits >> i & 1) ? b.half[i] : -b.half[i]);
+    out.push_back(p);
+  }
+  return out;
+}
+
+/// The squared penetration depth of two boxes that meet: the least squared distance from the
+/// origin to the planes of the faces of CGAL's convex hull (convex_hull_3) of their Minkowski
+/// difference; 0 where that difference is flat (no translation is needed to leave a set with no
+/// inside).
+FT squared_depth(const Obb& a, const Obb& b) {
+  std::vector<Point> m;
+  for (const Point& p : box_corners(a)) {
+    for (const Point& q : box_corners(b)) m.push_back(CGAL::ORIGIN + (p - q));
+  }
+  std::size_t i1 = 1, i2 = 0, i3 = 0;
+  while (i1 < m.size() && m[i1] == m[0]) ++i1;
+  for (i2 = i1 + 1; i1 < m.size() && i2 < m.size() && CGAL::collinear(m[0], m[i1], m[i2]); ++i2) {
+  }
+  for (i3 = i2 + 1; i2 < m.size() && i3 < m.size() && CGAL::coplanar(m[0], m[i1], m[i2], m[i3]); ++i3) {
+  }
+  if (i3 >= m.size()) return 0;
+  CGAL::Polyhedron_3<K> hull;
+  CGAL::convex_hull_3(m.begin(), m.end(), hull);
+  std::optional<FT> least;
+  for (auto f = hull.facets_begin(); f != hull.facets_end(); ++f) {
+    const auto h = f->halfedge();
+    const K::Plane_3 plane(h->vertex()->point(), h->next()->vertex()->point(), h->next()->next()->vertex()->point());
+    const FT d = CGAL::squared_distance(Point(CGAL::ORIGIN), plane);
+    if (!least || d < *least) least = d;
+  }
+  return *least;
+}
+
+}  // namespace
+
+CgalAnswer cgal_answer(const Obb& a, const Obb& b) {
+  CgalAnswer answer = hit_or_miss(meet(pieces(a), pieces(b)));
+  const auto to_double = [](const FT& t) { return CGAL::to_double(CGAL::exact(t)); };
+  if (answer.hit) {
+    answer.distance_down = exact::signed_distance_down(-1, squared_depth(a, b), FT(0), to_double);
+    return answer;
+  }
+  // Apart: the least squared distance between the pieces of their boundaries.
+  const Pieces pa = boundary(a), pb = boundary(b);
+  std::optional<FT> least;
+  for (const Piece& x : pa) {
+    for (const Piece& y : pb) {
+      const FT d = std::visit([](const auto& p, const auto& q) { return squared_distance_between(p, q); }, x, y);
+      if (!least || d < *least) least = d;
+    }
+  }
+  answer.distance_down = exact::signed_distance_down(1, *least, FT(0), to_double);
+  return answer;
+}
 
 CgalAnswer cgal_answer(int k, const std::vector<Vec3>& a_points, const std::vector<Vec3>& b_points) {
   const std::span<const KdopDirection> directions = kdop_directions(k);

@@ -83,7 +83,10 @@ CgalAnswer cgal_answer(const Triangle& tri, const Obb& box);
 /// they meet, else the least of its ends against the triangle and it against the edges); when they meet,
 /// the corners of CGAL::intersection.
 CgalAnswer cgal_answer(const Triangle& a, const Triangle& b);
-/// The two parallelepipeds, each as above.
+/// The two parallelepipeds, each as above, and their signed distance: apart, the least
+/// squared_distance between the triangles of their faces (the pieces of a flat box); meeting,
+/// minus the penetration depth: the least squared distance from the origin to the planes of the
+/// faces of CGAL's convex hull (convex_hull_3) of their Minkowski difference, 0 where it is flat.
 CgalAnswer cgal_answer(const Obb& a, const Obb& b);
 /// The exact k-DOPs of the two point sets: for each direction n of kdop_directions(k), the
 /// smallest and largest n . p of each set (in FT) and the sign of the slabs' overlap; a hit iff

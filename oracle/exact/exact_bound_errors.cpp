@@ -11,6 +11,7 @@
 #include "oracle/exact/distance_check.h"
 #include "oracle/exact/domain.h"
 #include "oracle/exact/exact_distance.h"
+#include "oracle/exact/exact_polytope_distance.h"
 #include "oracle/exact/exact_reference.h"
 #include "oracle/exact/rational.h"
 
@@ -338,6 +339,16 @@ class Measure {
     term("witness", "total", off, r.answer.point_error);
   }
 
+  // Two boxes: the signed distance against its whole bound (certified after the fact apart; the
+  // depth's terms overlapping), each witness's distance from its box's boundary.
+  void operator()(const bounds::ObbSeparation& r) {
+    if (!all_finite(r.a) || !all_finite(r.b)) return;
+    const auto ca = box_corners(r.a), cb = box_corners(r.b);
+    distance(r.answer, exact_polytope_distance(ca, cb), -1);
+    const double off = std::max(off_box(r.answer.on_a, r.a), off_box(r.answer.on_b, r.b));
+    term("witness", "total", off, r.answer.point_error);
+  }
+
  private:
   // |x - exact| for a double x, rounded up to a double: the least double e with x within e of
   // the exact signed distance, decided on squares (root_within).
@@ -467,6 +478,7 @@ std::vector<TermError> ExactRationalReference::bound_errors(const bounds::Record
   for (const auto& r : records.sphere_separations) measure(r);
   for (const auto& r : records.sphere_obb_separations) measure(r);
   for (const auto& r : records.triangle_separations) measure(r);
+  for (const auto& r : records.obb_separations) measure(r);
   return out;
 }
 

@@ -16,5 +16,6 @@ CC_NO_PARTIES(ode_parties, sphere_sphere_distance, SphereSphereDistance, "ODE ha
 CC_NO_PARTIES(ode_parties, tri_tri_distance, TriTriDistance, "ODE has no distance query (its colliders give contacts)")
 CC_NO_PARTIES(ode_parties, tri_tri_intersection, TriTriIntersection, "ODE's triangle contacts are points for dynamics, not the intersection")
 CC_NO_PARTIES(ode_parties, mesh_mesh_distance, MeshMeshDistance, "ODE has no distance query (its trimesh colliders give contacts)")
+CC_NO_PARTIES(ode_parties, obb_obb_distance, ObbObbDistance, "ODE has no distance query (dBoxBox gives contacts with a depth for dynamics, not the penetration depth)")
 
 }  // namespace cc::ode_oracle

@@ -25,5 +25,6 @@ template void record(Records&, const Cube&);
 template void record(Records&, const SphereSeparation&);
 template void record(Records&, const SphereObbSeparation&);
 template void record(Records&, const TriangleSeparation&);
+template void record(Records&, const ObbSeparation&);
 
 }  // namespace cc::bounds

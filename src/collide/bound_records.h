@@ -16,6 +16,7 @@
 #include "collide/independence_bound.h"
 #include "collide/kdop_bound.h"
 #include "collide/obb_bound.h"
+#include "collide/obb_distance_bound.h"
 #include "collide/ray_mesh_bound.h"
 #include "collide/ray_slab_bound.h"
 #include "collide/ray_triangle_bound.h"
@@ -48,6 +49,7 @@ struct Records {
   std::vector<SphereSeparation> sphere_separations;
   std::vector<SphereObbSeparation> sphere_obb_separations;
   std::vector<TriangleSeparation> triangle_separations;
+  std::vector<ObbSeparation> obb_separations;
 
   void add(const Quotient& r) { quotients.push_back(r); }
   void add(const SphereSquares& r) { spheres.push_back(r); }
@@ -65,6 +67,7 @@ struct Records {
   void add(const SphereSeparation& r) { sphere_separations.push_back(r); }
   void add(const SphereObbSeparation& r) { sphere_obb_separations.push_back(r); }
   void add(const TriangleSeparation& r) { triangle_separations.push_back(r); }
+  void add(const ObbSeparation& r) { obb_separations.push_back(r); }
 };
 
 }  // namespace cc::bounds

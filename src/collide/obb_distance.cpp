@@ -7,6 +7,7 @@
 
 #include "collide/length.h"
 #include "collide/obb_distance_bound.h"
+#include "collide/record_sink.h"
 #include "collide/segment.h"
 #include "collide/segment_distance.h"
 #include "collide/triangle.h"
@@ -62,6 +63,17 @@ struct Axes {
   int least = -1;  // the axis of least depth
 };
 
+// The overlap on each axis from `first` on, and the least so far.
+void measure(const Obb& a, const Obb& b, const Vec3& d, int first, Axes& axes) {
+  for (int k = first; k < axes.count; ++k) {
+    Axis& x = axes.axis[k];
+    x.depth = overlap_along(a, b, d, x.n);
+    if (axes.least < 0 || x.depth < axes.axis[axes.least].depth) axes.least = k;
+  }
+}
+
+// The faces' axes, then, unless one of them shows the boxes apart for certain (then the closest
+// pair needs no more), the edge pairs'.
 Axes measure_axes(const Obb& a, const Obb& b, const Vec3& d, const bounds::ObbDistanceBound& bound) {
   Axes axes;
   const double face_angle = 8 * kObbOrthonormalTolerance;
@@ -69,6 +81,9 @@ Axes measure_axes(const Obb& a, const Obb& b, const Vec3& d, const bounds::ObbDi
     axes.axis[axes.count++] = {a.axes.col[k], 0, bound.face_direction(), face_angle};
     axes.axis[axes.count++] = {b.axes.col[k], 0, bound.face_direction(), face_angle};
   }
+  measure(a, b, d, 0, axes);
+  if (axes.axis[axes.least].depth + bound.evaluation() < 0) return axes;
+  const int faces = axes.count;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
       const Vec3 c = cross(a.axes.col[i], b.axes.col[j]);
@@ -83,11 +98,7 @@ Axes measure_axes(const Obb& a, const Obb& b, const Vec3& d, const bounds::ObbDi
       axes.axis[axes.count++] = {c, 0, bound.cross_direction(c_length), 10 * fp::u / c_length};
     }
   }
-  for (int k = 0; k < axes.count; ++k) {
-    Axis& x = axes.axis[k];
-    x.depth = overlap_along(a, b, d, x.n);
-    if (axes.least < 0 || x.depth < axes.axis[axes.least].depth) axes.least = k;
-  }
+  measure(a, b, d, faces, axes);
   return axes;
 }
 
@@ -248,9 +259,8 @@ Separation closest(const Obb& a, const Obb& b, const Vec3& d, const Axes& axes, 
   return {distance, best.on_a, best.on_b, std::max(upper - distance, distance - lower), point_error};
 }
 
-}  // namespace
-
-Separation distance_obb_obb(const Obb& a, const Obb& b) {
+template <class Records>
+Separation obb_obb(const Obb& a, const Obb& b, Records& records) {
   if (!in_domain(a) || !in_domain(b)) return Separation::outside_the_domain();
   const Vec3 d = b.center - a.center;
   const bounds::ObbDistanceBound bound{fp::sum3(norm1(d), norm1(a.half), norm1(b.half)) * (1 + 8 * fp::u),
@@ -264,8 +274,21 @@ Separation distance_obb_obb(const Obb& a, const Obb& b) {
     lower = std::min(lower, x.depth - bound.evaluation() - x.direction_error);
   }
   lower -= axes.sliver;
-  if (lower > 0) return depth(a, b, d, axes, lower, bound);
-  return closest(a, b, d, axes, bound);
+  const Separation s = lower > 0 ? depth(a, b, d, axes, lower, bound) : closest(a, b, d, axes, bound);
+  records.add(bounds::ObbSeparation{a, b, s, bound});
+  return s;
+}
+
+}  // namespace
+
+Separation distance_obb_obb(const Obb& a, const Obb& b) {
+  bounds::NoRecords none;
+  return obb_obb(a, b, none);
+}
+
+Separation distance_obb_obb(const Obb& a, const Obb& b, bounds::Records& records) {
+  bounds::RecordsRef into{records};
+  return obb_obb(a, b, into);
 }
 
 }  // namespace cc

@@ -3,6 +3,7 @@
 
 #include "collide/fp.h"
 #include "collide/obb.h"
+#include "collide/record_sink.h"
 #include "collide/separation.h"
 
 namespace cc::bounds {
@@ -33,4 +34,19 @@ struct ObbDistanceBound {
   double point() const { return 96 * fp::u * (magnitude + size) + fp::subnormal_slack; }
 };
 
+/// A call of distance_obb_obb and its answer, as computed.
+struct ObbSeparation {
+  Obb a, b;
+  Separation answer;
+  ObbDistanceBound bound;
+};
+
 }  // namespace cc::bounds
+
+namespace cc {
+
+/// The same as its plain version (obb_distance.h), recording the call and its bounds into
+/// `records` (bound_records.h); the same answer, bit for bit.
+Separation distance_obb_obb(const Obb& a, const Obb& b, bounds::Records& records);
+
+}  // namespace cc

@@ -22,6 +22,7 @@
 #include "harness/model/inputs/mesh_mesh_first.h"
 #include "harness/model/inputs/moving_obb.h"
 #include "harness/model/inputs/obb_obb.h"
+#include "harness/model/inputs/obb_obb_distance.h"
 #include "harness/model/inputs/ray_aabb.h"
 #include "harness/model/inputs/ray_mesh.h"
 #include "harness/model/inputs/sphere_obb_distance.h"
@@ -55,4 +56,5 @@
   X(tri_tri_distance, TriTriDistance)             \
   X(sphere_sphere_distance, SphereSphereDistance) \
   X(sphere_obb_distance, SphereObbDistance)       \
-  X(mesh_mesh_distance, MeshMeshDistance)
+  X(mesh_mesh_distance, MeshMeshDistance)         \
+  X(obb_obb_distance, ObbObbDistance)

@@ -98,7 +98,7 @@ void for_each_value(harness::Input& input, F&& f) {
         } else if constexpr (std::is_same_v<T, KdopKdopInput>) {
           for (Vec3& p : in.a) vec(p);
           for (Vec3& p : in.b) vec(p);
-        } else if constexpr (std::is_same_v<T, ObbObbInput>) {
+        } else if constexpr (std::is_same_v<T, ObbObbInput> || std::is_same_v<T, ObbObbDistanceInput>) {
           obb(in.a), obb(in.b);
         } else if constexpr (std::is_same_v<T, TriAabbInput>) {
           tri(in.tri), box(in.box);
@@ -203,6 +203,7 @@ inline harness::Input distinct_input(harness::QueryKind kind, DistinctValues& va
       break;
     }
     case QueryKind::obb_obb: in = ObbObbInput{}; break;
+    case QueryKind::obb_obb_distance: in = ObbObbDistanceInput{}; break;
     case QueryKind::tri_aabb: in = TriAabbInput{}; break;
     case QueryKind::tri_obb: in = TriObbInput{}; break;
     case QueryKind::tri_tri: in = TriTriInput{}; break;

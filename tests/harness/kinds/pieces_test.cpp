@@ -17,6 +17,7 @@
 #include "harness/kinds/mesh_mesh_first.h"
 #include "harness/kinds/moving_obb.h"
 #include "harness/kinds/obb_obb.h"
+#include "harness/kinds/obb_obb_distance.h"
 #include "harness/kinds/ray_aabb.h"
 #include "harness/kinds/ray_mesh.h"
 #include "harness/kinds/sphere_obb_distance.h"

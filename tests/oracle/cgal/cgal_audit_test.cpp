@@ -165,6 +165,22 @@ TEST(CgalObbs, ZeroHalfExtentsSpanRectanglesSegmentsAndPoints) {
   EXPECT_FALSE(cgal_answer(cube, obb({3, 0, 0}, {2, 0, 0}, kQuarterTurn)).hit);  // along y, at x = 3
 }
 
+// Two boxes' signed distance, rounded down: apart face to face and corner to corner, touching,
+// overlapping through a face (the least depth), a segment through a square (depth 0.5 though
+// neither has an inside), two squares crossing in one plane (0).
+TEST(CgalObbs, TheSignedDistanceIsTheGapOrMinusTheDepth) {
+  const Obb cube = obb({0, 0, 0}, {1, 1, 1});
+  EXPECT_EQ(cgal_answer(cube, obb({3.5, 0.25, -0.5}, {1, 1, 1})).distance_down, 1.5);
+  EXPECT_NEAR(*cgal_answer(cube, obb({3, 4, 14}, {1, 1, 1})).distance_down, std::sqrt(149.0), 1e-14);
+  EXPECT_EQ(cgal_answer(cube, obb({2, 0.5, 0.5}, {1, 1, 1})).distance_down, 0);
+  const CgalAnswer deep = cgal_answer(cube, obb({1.5, 0.2, 0}, {1, 1, 1}));
+  EXPECT_TRUE(deep.hit);
+  EXPECT_EQ(deep.distance_down, -0.5);
+  EXPECT_EQ(cgal_answer(obb({0, 0, 0}, {1, 1, 0}), obb({0.5, 0, 0}, {0, 0, 1})).distance_down, -0.5);
+  EXPECT_EQ(cgal_answer(obb({0, 0, 0}, {1, 1, 0}), obb({0.5, 0.5, 0}, {1, 1, 0})).distance_down, 0);
+  EXPECT_EQ(cgal_answer(cube, obb({0.5, 0, 0}, {0.25, 0.25, 0.25})).distance_down, -0.75);  // nested
+}
+
 // The tetrahedron x, y, z >= 0, x + y + z <= 1: on the diagonal slabs of k = 18 it spans x + y,
 // x + z, y + z in [0, 1] and x - y, x - z, y - z in [-1, 1].
 const std::vector<Vec3> kTetrahedron = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};

@@ -61,7 +61,7 @@ TEST(ExactAudit, AnswersTheKindsMadeOfTwoShapesItExpresses) {
   for (QueryKind kind : {QueryKind::ray_aabb, QueryKind::sphere_sphere, QueryKind::aabb_aabb, QueryKind::tri_aabb,
                          QueryKind::tri_obb, QueryKind::tri_tri, QueryKind::obb_obb, QueryKind::kdop_kdop,
                          QueryKind::ray_mesh, QueryKind::disc_walls, QueryKind::tri_tri_distance,
-                         QueryKind::sphere_sphere_distance, QueryKind::sphere_obb_distance}) {
+                         QueryKind::sphere_sphere_distance, QueryKind::sphere_obb_distance, QueryKind::obb_obb_distance}) {
     EXPECT_TRUE(answers(kind)) << name(kind);
   }
   for (QueryKind kind : {QueryKind::mesh_mesh, QueryKind::mesh_mesh_first, QueryKind::broadphase,
@@ -110,6 +110,25 @@ TEST(ExactAudit, AMarginThatUnderflowsKeepsItsSign) {
   EXPECT_EQ(a.outcome, AuditOutcome::agree) << a.why;
   EXPECT_FALSE(a.touching());
   EXPECT_GT(a.exact.margin, 0);
+}
+
+// Boxes apart, touching and overlapping, flat ones, turned ones with nearly parallel edges:
+// CGAL's signed distance (its hull of the Minkowski difference, its triangle distances) is the
+// reference's, rounded down alike.
+TEST(ExactAudit, BoxDistancesAgreeWithCgals) {
+  const exact::ExactRationalReference reference;
+  const Mat3 turned = Mat3::from_columns({0.6, 0.8, 0}, {-0.8, 0.6, 0}, {0, 0, 1});
+  const Obb cube{{0, 0, 0}, {1, 1, 1}, Mat3::identity()};
+  const ObbObbDistanceInput cases[] = {
+      {cube, {{3.5, 0.25, -0.5}, {1, 1, 1}, Mat3::identity()}},  {cube, {{2, 0.5, 0.5}, {1, 1, 1}, Mat3::identity()}},
+      {cube, {{1.5, 0.2, 0}, {1, 1, 1}, Mat3::identity()}},      {cube, {{2.1, 1.9, 0.3}, {0.5, 1, 2}, turned}},
+      {cube, {{0.5, 0.25, 0}, {1, 0.5, 0.25}, turned}},          {cube, {{0.5, 0, 0}, {0, 0, 1}, Mat3::identity()}},
+      {{{0, 0, 0}, {1, 1, 0}, Mat3::identity()}, {{0.5, 0.5, 0}, {1, 1, 0}, Mat3::identity()}}};
+  for (const ObbObbDistanceInput& in : cases) {
+    const Audit a = audit_case(in, reference);
+    EXPECT_EQ(a.outcome, AuditOutcome::agree) << a.why;
+    ASSERT_TRUE(a.cgal.distance_down.has_value());
+  }
 }
 
 TEST(ExactAudit, OutOfContractIsNotCompared) {
