@@ -389,4 +389,12 @@ int crosscheck_sphere_obb_distance(const cc_sphere* ball, const cc_obb* box, dou
   return gjk_distance(sphere, at(ball->center), shape, place(*box), distance, on_a, on_b);
 }
 
+int crosscheck_obb_obb_distance(const cc_obb* a, const cc_obb* b, double* distance, cc_vec3* on_a, cc_vec3* on_b) {
+  btBoxShape shape_a(v(a->half)), shape_b(v(b->half));
+  for (btBoxShape* shape : {&shape_a, &shape_b}) shape->setMargin(0);
+  shape_a.setImplicitShapeDimensions(v(a->half));
+  shape_b.setImplicitShapeDimensions(v(b->half));
+  return gjk_distance(shape_a, place(*a), shape_b, place(*b), distance, on_a, on_b);
+}
+
 }  // extern "C"

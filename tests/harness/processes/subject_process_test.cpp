@@ -75,7 +75,8 @@ TEST(SubjectProcess, TheBulletExampleAnswersTheKindsItExportsAndIsNamedByItsHash
   for (QueryKind kind : {QueryKind::ray_aabb, QueryKind::sphere_sphere, QueryKind::aabb_aabb, QueryKind::obb_obb,
                          QueryKind::tri_aabb, QueryKind::tri_obb, QueryKind::moving_obb, QueryKind::ray_mesh,
                          QueryKind::mesh_mesh, QueryKind::mesh_mesh_first, QueryKind::broadphase,
-                         QueryKind::tri_tri_distance, QueryKind::sphere_sphere_distance, QueryKind::sphere_obb_distance}) {
+                         QueryKind::tri_tri_distance, QueryKind::sphere_sphere_distance, QueryKind::sphere_obb_distance,
+                         QueryKind::obb_obb_distance}) {
     EXPECT_TRUE(bullet->answers(kind)) << name(kind);
   }
   for (QueryKind kind : {QueryKind::tri_tri, QueryKind::kdop_kdop, QueryKind::disc_walls}) {
@@ -84,7 +85,7 @@ TEST(SubjectProcess, TheBulletExampleAnswersTheKindsItExportsAndIsNamedByItsHash
   EXPECT_EQ(bullet->identity().file, "libcrosscheck_bullet_subject.so");
   EXPECT_EQ(bullet->identity().version, 1);
   EXPECT_EQ(bullet->identity().sha256.size(), 64u);
-  EXPECT_EQ(bullet->identity().kinds.size(), 14u);
+  EXPECT_EQ(bullet->identity().kinds.size(), 15u);
   EXPECT_TRUE(bullet->ask(kTouching).hit);
   EXPECT_FALSE(bullet->ask(AabbAabbInput{kUnit, {{1.5, 0, 0}, {2, 1, 1}}}).hit);
   EXPECT_TRUE(bullet->ask(SphereSphereInput{{{0, 0, 0}, 1}, {{1.5, 0, 0}, 1}}).hit);
@@ -101,6 +102,11 @@ TEST(SubjectProcess, TheBulletExampleAnswersTheKindsItExportsAndIsNamedByItsHash
   EXPECT_EQ(d.params[7], 0x1p-9 * 4);
   EXPECT_EQ(d.params[8], 0x1p-9 * 4);
   EXPECT_TRUE(bullet->ask(SphereObbDistanceInput{{{0, 0, 0.5}, 1}, {{0, 0, 0}, {1, 1, 1}, Mat3::identity()}}).hit);
+  // Two unit cubes 1.5 apart along x.
+  const Answer boxes =
+      bullet->ask(ObbObbDistanceInput{{{0, 0, 0}, {1, 1, 1}, Mat3::identity()}, {{3.5, 0, 0}, {1, 1, 1}, Mat3::identity()}});
+  EXPECT_FALSE(boxes.hit);
+  EXPECT_NEAR(boxes.params.at(0), 1.5, 1e-9);
 }
 
 TEST(SubjectProcess, TheOdeExampleAnswersTheKindsItExports) {
