@@ -46,6 +46,24 @@ double overlap_along(const Obb& a, const Obb& b, const Vec3& d, const Vec3& dire
   return ((radius_along(a, n) + radius_along(b, n)) - std::fabs(dot(d, n))) / n_length;
 }
 
+// a d - b c within 2 ulps (Kahan's difference of products: b c's rounding error, exact by a fused
+// multiply-add, put back), and exactly 0 when it is 0; but for underflow.
+double difference_of_products(double a, double d, double b, double c) {
+  const double w = b * c;
+  const double e = std::fma(-b, c, w);
+  const double f = std::fma(a, d, -w);
+  return f + e;
+}
+
+// a x b, each component within 2 ulps of the exact one however nearly parallel a and b are (the
+// plain cross product errs by u of the products, which is all of it for nearly parallel edges);
+// b x a is its exact negation.
+Vec3 accurate_cross(const Vec3& a, const Vec3& b) {
+  if (lexicographic_less(b, a)) return -accurate_cross(b, a);
+  return {difference_of_products(a.y, b.z, a.z, b.y), difference_of_products(a.z, b.x, a.x, b.z),
+          difference_of_products(a.x, b.y, a.y, b.x)};
+}
+
 // A candidate axis: a box's axis or an edge pair's cross product, the overlap on it, and how far
 // that overlap may lie from the overlap on the exact face normal of a - b it stands for.
 struct Axis {
@@ -86,7 +104,7 @@ Axes measure_axes(const Obb& a, const Obb& b, const Vec3& d, const bounds::ObbDi
   const int faces = axes.count;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
-      const Vec3 c = cross(a.axes.col[i], b.axes.col[j]);
+      const Vec3 c = accurate_cross(a.axes.col[i], b.axes.col[j]);
       const double c_length = length(c);
       // Nearly parallel edges: measured when the direction's error costs less than the sliver.
       // An axis at least 1/2 long is always measured: the neighbours of a sliver's face are.
@@ -95,7 +113,7 @@ Axes measure_axes(const Obb& a, const Obb& b, const Vec3& d, const bounds::ObbDi
         axes.sliver = std::max(axes.sliver, sliver);
         continue;
       }
-      axes.axis[axes.count++] = {c, 0, bound.cross_direction(c_length), 10 * fp::u / c_length};
+      axes.axis[axes.count++] = {c, 0, bound.cross_direction(c_length), bounds::ObbDistanceBound::cross_angle(c_length)};
     }
   }
   measure(a, b, d, faces, axes);

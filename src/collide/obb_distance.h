@@ -13,10 +13,10 @@ namespace cc {
 /// shortest translations are not unique (parallel faces or edges), any of them.
 ///  - Overlapping: the depth is the least overlap of the boxes' projections over the separating
 ///    axes (the faces' normals and the edges' cross products, the normals of the faces of their
-///    difference a - b). An axis from two nearly parallel edges is measured where its direction
-///    is known well enough for that to be the tighter bound, and otherwise left out: its face of
-///    a - b is then a sliver of width w, never nearer than its neighbours less w, and w joins the
-///    bound. The witnesses are the nearest pair between a's and b's faces, edges or corners that
+///    difference a - b), each cross product within 2 ulps per component (a fused multiply-add),
+///    so its direction is known to 4u however nearly parallel the edges are. An axis from edges
+///    parallel to within about u of the size over the extent is left out: its face of a - b is
+///    then a sliver of width w, never nearer than its neighbours less w, and w joins the bound. The witnesses are the nearest pair between a's and b's faces, edges or corners that
 ///    meet the least axis, b's moved out along it.
 ///  - Apart, or too nearly touching to be sure they overlap: the nearest of each corner against
 ///    the other box and each pair of edges not farther than the best so far; the bound is

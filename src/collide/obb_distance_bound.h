@@ -21,12 +21,16 @@ struct ObbDistanceBound {
   /// A face's axis is its box's axis, not the cross product of the other two: within 3 eta in
   /// direction, and the overlap is S-Lipschitz in the direction.
   double face_direction() const { return 8 * kObbOrthonormalTolerance * size; }
-  /// An edge pair's axis a_i x b_j of computed length `length`: each component rounds 2u of its
-  /// products, within 4u of the exact cross product in all; the unit direction within
-  /// 8u / (length - 4u), times S.
-  double cross_direction(double length) const { return 10 * fp::u * size / length; }
-  /// An edge pair's axis left out: its face of a - b is the parallelogram the two edges span,
-  /// 2 min(h_i, h_j) sin(theta) wide, with sin(theta) within 4u of the computed length.
+  /// An edge pair's axis a_i x b_j of computed length `length`, each component by Kahan's
+  /// difference of products within 2u of its exact value (plus 2^-1074 per rounding, where one
+  /// underflows): within 2u |c| + 2^-1070 of the exact cross product, its unit direction within
+  /// 4u + 2^-1069 / |c| however nearly parallel the edges are; times S (the overlap is
+  /// S-Lipschitz in the direction).
+  static double cross_angle(double length) { return 5 * fp::u + 0x1p-1068 / length; }
+  double cross_direction(double length) const { return size * cross_angle(length); }
+  /// An edge pair's axis left out (where the sliver costs less than the direction's error: edges
+  /// parallel to within about u S / h): its face of a - b is the parallelogram the two edges
+  /// span, 2 min(h_i, h_j) sin(theta) wide, with sin(theta) within 4u of the computed length.
   static double sliver(double least_half, double length) { return 2.01 * least_half * (length + 4 * fp::u); }
   /// Each corner c + sum +-h_k axis_k rounds 7u (M + S) in length; a point of an edge 16u (M + S);
   /// the witnesses of a depth are the nearest pair of the features (triangles of corners within

@@ -164,8 +164,8 @@ TEST(DistanceObbObbExact, WithinItsBounds) {
 // (1, 1, 0)), pressed edge into edge along the diagonal by delta on x and on y. The face of a - b
 // from those edges is a bevel across the corner of the difference's square section, sqrt 2 delta
 // deep where the faces are delta + theta / sqrt 2: for delta below 1.7 theta the depth is the
-// bevel's: where the library measures that edge pair's axis (theta 2^-20), its direction's error
-// counts; where it leaves it out (2^-26 and below), the sliver's width does. Both stay sound.
+// bevel's. The edge pair's axis is measured for every theta here (its cross product's direction is
+// known to 4u), so the answer is sound and its bound tight.
 TEST(DistanceObbObbExact, NearlyParallelEdgesMeetingAtACorner) {
   int bevel_deepest = 0;
   for (const int theta_exponent : {-20, -23, -26, -30, -40}) {
@@ -193,9 +193,35 @@ TEST(DistanceObbObbExact, NearlyParallelEdgesMeetingAtACorner) {
       // The faces' least overlap is delta + theta / sqrt 2, the bevel's sqrt 2 delta.
       const Rational face = exact::rational(delta + theta * h);
       if (e.squared < face * face * Rational(99, 100)) ++bevel_deepest;
+      // Measured on the edges' own axis, whose direction the accurate cross product knows to 4u:
+      // the bound stays at the rounding's scale.
+      EXPECT_LE(sep.distance_error, 0x1p-40) << "theta 2^" << theta_exponent << ", delta " << delta_in_thetas;
     }
   }
   EXPECT_GT(bevel_deepest, 5);  // the bevel, not a face, is the depth in many of them
+}
+
+// A long box whose second axis leans on its first by the whole orthonormality tolerance (2^-48):
+// its face across the first axis is then turned by 2^-48 from that axis, and a small turned box
+// pressed into that face at its far end is less deep along the face's normal than along the
+// axis, by some 2000 times the lean. The face axes' term of the bound covers it.
+TEST(DistanceObbObbExact, AxesLeaningByTheToleranceCountTheirLean) {
+  const Mat3 leaning = Mat3::from_columns({1, 0, 0}, {0x1p-48, 1, 0}, {0, 0, 1});
+  const Obb a{{0, 0, 0}, {1, 1000, 1}, leaning};
+  int checked = 0;
+  for (const double delta : {0.01, 0.1, 0.25}) {
+    for (const double turn : {0.3, 0.7, 1.1}) {
+      const Obb b{{1.25 - delta, -999.25, 0}, {0.5, 0.25, 0.25}, test::rotation(turn, 2 * turn, -turn)};
+      const Separation sep = distance_obb_obb(a, b);
+      const auto ca = exact::box_corners(a), cb = exact::box_corners(b);
+      const exact::ExactSignedDistance e = exact::exact_polytope_distance(ca, cb);
+      const harness::DistanceClaim claim{sep.distance, true, sep.on_a, sep.on_b, sep.distance_error, sep.point_error};
+      const auto wrong = exact::distance_check(e, exact::boundary_of(a), exact::boundary_of(b))(claim);
+      ASSERT_FALSE(wrong) << *wrong << " (delta " << delta << ", turn " << turn << ")";
+      checked += e.sign < 0;
+    }
+  }
+  EXPECT_EQ(checked, 9);
 }
 
 }  // namespace
