@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -24,6 +26,41 @@ TEST(KdopDirections, HaveKOverTwoSlabsInFclsOrder) {
   EXPECT_EQ(d[8].z, -1);
   EXPECT_EQ(d[11].x, -1);
   EXPECT_TRUE(kdop_directions(12).empty());
+}
+
+// Each set is the one its comment documents, as a set of lines (a direction and its negation are
+// one slab), with no line twice: the exact reference reads the same tables, so only this test
+// notices a wrong direction in them.
+TEST(KdopDirections, AreTheDocumentedLinesEachOnce) {
+  using Line = std::array<int, 3>;
+  const auto lines = [](int k) {
+    std::vector<Line> out;
+    for (const KdopDirection& d : kdop_directions(k)) {
+      Line l{static_cast<int>(d.x), static_cast<int>(d.y), static_cast<int>(d.z)};
+      const int first = l[0] != 0 ? l[0] : (l[1] != 0 ? l[1] : l[2]);
+      if (first < 0) l = {-l[0], -l[1], -l[2]};
+      out.push_back(l);
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  const std::vector<Line> axes = {{0, 0, 1}, {0, 1, 0}, {1, 0, 0}};
+  const std::vector<Line> corners = {{1, -1, -1}, {1, -1, 1}, {1, 1, -1}, {1, 1, 1}};
+  const std::vector<Line> edges = {{0, 1, -1}, {0, 1, 1}, {1, -1, 0}, {1, 0, -1}, {1, 0, 1}, {1, 1, 0}};
+  const auto joined = [](std::vector<std::vector<Line>> parts) {
+    std::vector<Line> out;
+    for (const auto& p : parts) out.insert(out.end(), p.begin(), p.end());
+    std::sort(out.begin(), out.end());
+    return out;
+  };
+  EXPECT_EQ(lines(6), axes);
+  EXPECT_EQ(lines(14), joined({axes, corners}));
+  EXPECT_EQ(lines(18), joined({axes, edges}));
+  EXPECT_EQ(lines(26), joined({axes, corners, edges}));
+  for (int k : {16, 24}) {
+    const std::vector<Line> l = lines(k);
+    EXPECT_EQ(std::adjacent_find(l.begin(), l.end()), l.end()) << k << ": a line twice";
+  }
 }
 
 TEST(FitKdop, SixDopIsTheBoundingBoxExactly) {
