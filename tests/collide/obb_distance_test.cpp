@@ -11,6 +11,7 @@
 #include <numbers>
 
 #include "rotations.h"
+#include "test_random.h"
 
 namespace cc {
 namespace {
@@ -136,11 +137,8 @@ TEST(DistanceObbObb, SwappingGivesTheSameDistance) {
 // more than that of any two of their points: checked against directions and points sampled on
 // a grid, for boxes drawn at random.
 TEST(DistanceObbObb, NeverBeyondAnySampledDirectionOrPair) {
-  std::uint64_t state = 12345;
-  const auto next = [&state] {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return static_cast<double>(state >> 11) * 0x1p-53;
-  };
+  test::Random random(12345);
+  const auto next = [&random] { return random.unit(); };
   int apart = 0, overlapping = 0;
   for (int round = 0; round < 200; ++round) {
     const Obb a{{0, 0, 0}, {0.2 + next(), 0.2 + next(), 0.2 + next()}, test::rotation(6 * next(), 6 * next(), 6 * next())};

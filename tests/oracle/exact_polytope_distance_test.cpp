@@ -12,6 +12,7 @@
 
 #include "oracle/exact/exact_distance.h"
 #include "rotations.h"
+#include "test_random.h"
 
 namespace cc::exact {
 namespace {
@@ -97,11 +98,8 @@ Rational feature_pairs(const Obb& a, const Obb& b) {
 }
 
 TEST(ExactPolytopeDistance, ApartItIsTheLeastOverFeaturePairs) {
-  std::uint64_t state = 99;
-  const auto next = [&state] {
-    state = state * 6364136223846793005ULL + 1442695040888963407ULL;
-    return static_cast<double>(state >> 11) * 0x1p-53;
-  };
+  test::Random random(99);
+  const auto next = [&random] { return random.unit(); };
   int apart = 0, overlapping = 0;
   for (int round = 0; round < 40; ++round) {
     const Obb a = box({0, 0, 0}, {0.2 + next(), 0.2 + next(), 0.2 + next()}, test::rotation(6 * next(), 6 * next(), 6 * next()));
