@@ -27,6 +27,16 @@ class Random {
     return static_cast<std::int64_t>(engine_() % span) - (std::int64_t{1} << bits);
   }
   Vec3 in_cube(double h) { return {between(-h, h), between(-h, h), between(-h, h)}; }
+  /// A scale for a drawn case: 1, a power of two from 2^-300 to 2^300, one of those two ends, or
+  /// anything in [1e-3, 1e3].
+  double scale() {
+    switch (below(4)) {
+      case 0: return 1;
+      case 1: return std::ldexp(1.0, in(-300, 300));
+      case 2: return std::ldexp(1.0, below(2) ? -300 : 300);
+      default: return between(1e-3, 1e3);
+    }
+  }
   /// A point with integer coordinates in [-h, h].
   Vec3 integer_point(int h) { return {double(in(-h, h)), double(in(-h, h)), double(in(-h, h))}; }
   /// x moved by 0, 1 or 2 ulps up or down.

@@ -7,6 +7,7 @@
 
 #include "collide/length.h"
 #include "collide/obb_distance_bound.h"
+#include "collide/obb_fit.h"
 #include "collide/record_sink.h"
 #include "collide/segment.h"
 #include "collide/segment_distance.h"
@@ -20,13 +21,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 
 bool in_domain(const Obb& b) {
   return finite(b.center) && finite(b.half) && finite(b.axes) && b.half.x >= 0 && b.half.y >= 0 && b.half.z >= 0;
-}
-
-// The corner center + sum_k (+-half_k) axis_k, bit k of `bits` set for +.
-Vec3 corner(const Obb& box, int bits) {
-  const auto signed_half = [&](int k) { return (bits >> k & 1) ? box.half[k] : -box.half[k]; };
-  return box.center + signed_half(0) * box.axes.col[0] + signed_half(1) * box.axes.col[1] +
-         signed_half(2) * box.axes.col[2];
 }
 
 // The radius of a box's projection on n: sum_k half_k |axis_k . n| (exact for the parallelepiped).
@@ -122,8 +116,10 @@ Axes measure_axes(const Obb& a, const Obb& b, const Vec3& d, const bounds::ObbDi
 
 // The face, edge or corner of `box` farthest along the unit direction n, every axis within
 // `tolerance` of perpendicular to n taken whole (the largest never), as triangles of its corners
-// (two for a face, one degenerate otherwise) moved by `shift`. Returns how many.
+// (corners(box), obb_fit.h: bit k of an index set for +half_k; two for a face, one degenerate
+// otherwise) moved by `shift`. Returns how many.
 int farthest_feature(const Obb& box, const Vec3& n, double tolerance, const Vec3& shift, Triangle out[2]) {
+  const std::array<Vec3, 8> corner = corners(box);
   int bits = 0, free[3], free_count = 0, largest = 0;
   double along[3];
   for (int k = 0; k < 3; ++k) {
@@ -137,7 +133,7 @@ int farthest_feature(const Obb& box, const Vec3& n, double tolerance, const Vec3
       bits |= 1 << k;
     }
   }
-  const auto at = [&](int extra) { return corner(box, bits | extra) + shift; };
+  const auto at = [&](int extra) { return corner[bits | extra] + shift; };
   if (free_count == 0) {
     const Vec3 p = at(0);
     out[0] = {{p, p, p}};
@@ -223,11 +219,11 @@ double square_gap_to_box(const Obb& box, const Vec3& p, const Vec3& q, int expon
 // The nearest of each corner against the other box and of each pair of edges whose segments are
 // not farther from the other box than the best corner's pair.
 Nearest nearest_features(const Obb& a, const Obb& b, int exponent) {
-  std::array<Vec3, 8> ca, cb, la, lb;  // corners, and their coordinates in the other box
+  const std::array<Vec3, 8> ca = corners(a), cb = corners(b);
+  std::array<Vec3, 8> la, lb;  // the corners' coordinates in the other box
   Nearest best;
   best.exponent = exponent;
   for (int i = 0; i < 8; ++i) {
-    ca[i] = corner(a, i), cb[i] = corner(b, i);
     la[i] = local(b, ca[i]), lb[i] = local(a, cb[i]);
     best.keep_nearer(ca[i], clamped(b, la[i]));
     best.keep_nearer(clamped(a, lb[i]), cb[i]);
@@ -271,10 +267,7 @@ Separation closest(const Obb& a, const Obb& b, const Vec3& d, const Axes& axes, 
     const double gap = -overlap_along(a, b, d, along) - bound.evaluation();
     if (gap > 0) lower = std::max(lower, gap);
   }
-  const double point_error = bound.point() + std::max(0.0, least + bound.evaluation());
-  const double distance = length(along);
-  const double upper = fp::sum3(distance, 2 * point_error, 4 * fp::u * distance);
-  return {distance, best.on_a, best.on_b, std::max(upper - distance, distance - lower), point_error};
+  return Separation::certified(best.on_a, best.on_b, bound.point() + std::max(0.0, least + bound.evaluation()), lower);
 }
 
 template <class Records>

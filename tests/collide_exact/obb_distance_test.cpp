@@ -23,15 +23,6 @@ namespace {
 
 using exact::Rational;
 
-double scale_of(test::Random& r) {
-  switch (r.below(4)) {
-    case 0: return 1;
-    case 1: return std::ldexp(1.0, r.in(-300, 300));
-    case 2: return std::ldexp(1.0, r.below(2) ? -300 : 300);
-    default: return r.between(1e-3, 1e3);
-  }
-}
-
 Vec3 draw_half(test::Random& r, double s) {
   Vec3 half{r.between(0.05, 3) * s, r.between(0.05, 3) * s, r.between(0.05, 3) * s};
   if (r.below(4) == 0) half[r.below(3)] *= std::ldexp(1.0, -r.in(10, 40));  // long and thin, or flat-ish
@@ -128,7 +119,7 @@ TEST(DistanceObbObbExact, WithinItsBounds) {
   test::Random r(2026);
   std::map<std::string, int> met;
   for (int i = 0; i < 1500; ++i) {
-    const double s = scale_of(r);
+    const double s = r.scale();
     std::string how;
     const Pair p = r.below(5) == 0 ? touching_on_a_grid(r, s) : near(r, s, how);
     const Separation sep = distance_obb_obb(p.a, p.b);

@@ -59,20 +59,11 @@ testing::AssertionResult witnesses_apart(const Separation& s) {
                                      << s.distance;
 }
 
-double scale_of(test::Random& r) {
-  switch (r.below(4)) {
-    case 0: return 1;
-    case 1: return std::ldexp(1.0, r.in(-300, 300));
-    case 2: return std::ldexp(1.0, r.below(2) ? -300 : 300);
-    default: return r.between(1e-3, 1e3);
-  }
-}
-
 TEST(DistanceSphereSphereExact, WithinItsBounds) {
   test::Random r(41);
   std::map<std::string, int> met;
   for (int i = 0; i < 4000; ++i) {
-    const double s = scale_of(r);
+    const double s = r.scale();
     Sphere a{s * r.in_cube(4), r.below(8) == 0 ? 0.0 : r.between(0, 3) * s};
     Sphere b{s * r.in_cube(4), r.below(8) == 0 ? 0.0 : r.between(0, 3) * s};
     switch (r.below(4)) {
@@ -142,7 +133,7 @@ TEST(DistanceSphereObbExact, WithinItsBounds) {
   test::Random r(43);
   std::map<std::string, int> met;
   for (int i = 0; i < 4000; ++i) {
-    const double s = scale_of(r);
+    const double s = r.scale();
     bool skewed = false;
     Obb box = draw_box(r, s, skewed);
     Vec3 local = draw_local_point(r, box, s);
