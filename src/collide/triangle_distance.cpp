@@ -10,6 +10,7 @@
 #include "collide/record_sink.h"
 #include "collide/segment_distance.h"
 #include "collide/triangle_distance_bound.h"
+#include "collide/triangle_foot.h"
 
 namespace cc {
 namespace {
@@ -40,31 +41,6 @@ struct Best {
 // A triangle's normal, scaled (a direction only); zero for a degenerate triangle.
 Vec3 normal_of(const Triangle& t) { return unit_scaled(cross(t.v[1] - t.v[0], t.v[2] - t.v[0])); }
 
-// The point of t nearest p when that is p's foot on t's plane, as t.v[0] + s e1 + t e2 with the
-// coordinates s, t >= 0, s + t <= 1 as computed: a point of t (but for its own rounding, which
-// point_error counts) however thin or small t is; an ill-conditioned plane only moves it within
-// t, away from the foot. The coordinates come from e1, e2 and p - t.v[0] scaled by one power
-// of two (their products of four neither overflow nor, for the largest, underflow), by cross
-// products: with n = e1 x e2 and f the foot less v0, s = (f x e2).n / n.n, t = (e1 x f).n / n.n.
-// False when the foot lies outside t, or t is degenerate as computed.
-bool foot_in(const Vec3& p, const Triangle& tri, Vec3& foot) {
-  const Vec3 e1 = tri.v[1] - tri.v[0], e2 = tri.v[2] - tri.v[0], w = p - tri.v[0];
-  const double m = std::max({max_abs(e1), max_abs(e2), max_abs(w)});
-  if (!(m > 0)) return false;
-  const int e = fp::exponent_of(m);
-  const Vec3 se1 = scaled(e1, e), se2 = scaled(e2, e), sw = scaled(w, e);
-  const Vec3 n = cross(se1, se2);
-  const double nn = dot(n, n);
-  if (!(nn > 0)) return false;
-  // The coordinates of w's part in the plane (w less its part along n): the far part of w is
-  // taken away along n first, so that the coordinates are measured on the foot, near t.
-  const Vec3 in_plane = sw - (dot(sw, n) / nn) * n;
-  const double s = dot(cross(in_plane, se2), n) / nn, t = dot(cross(se1, in_plane), n) / nn;
-  if (!(s >= 0 && t >= 0 && s + t <= 1)) return false;
-  foot = tri.v[0] + s * e1 + t * e2;
-  return true;
-}
-
 // A point of the segment from p to q near where it crosses the plane of t (n its normal_of),
 // if its ends lie on both sides of the plane or on it (and not both on it).
 bool crossing(const Vec3& p, const Vec3& q, const Vec3& v0, const Vec3& n, Vec3& at) {
@@ -91,8 +67,8 @@ void vertices_and_crossings(const Triangle& from, const Triangle& to, bool swapp
   };
   for (int i = 0; i < 3; ++i) {
     Vec3 at, on_to;
-    if (foot_in(from.v[i], to, on_to)) keep(from.v[i], on_to);
-    if (crossing(from.v[i], from.v[(i + 1) % 3], to.v[0], n, at) && foot_in(at, to, on_to)) keep(at, on_to);
+    if (foot_in_triangle(from.v[i], to, on_to)) keep(from.v[i], on_to);
+    if (crossing(from.v[i], from.v[(i + 1) % 3], to.v[0], n, at) && foot_in_triangle(at, to, on_to)) keep(at, on_to);
   }
 }
 
