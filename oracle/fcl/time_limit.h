@@ -7,9 +7,12 @@ namespace cc::fcl_oracle {
 
 /// Runs f. If it has not returned after `seconds` of CPU time, abandons it with a jump out of a
 /// SIGVTALRM handler and returns false. (CPU time, not SIGALRM: libFuzzer's own timeout uses
-/// SIGALRM and the real-time timer.) Only for single-threaded code that holds no
-/// locks and whose abandoned heap objects may leak: libccd's GJK and MPR loops, which do not
-/// terminate on some inputs (long, thin triangles; huge coordinates).
+/// SIGALRM and the real-time timer.) Never while f is inside the C or C++ runtime (malloc, the
+/// loader, the unwinder: a jump out would leave the heap or a lock broken): the jump then waits,
+/// a millisecond of CPU time at a time, until f is back in its own code. Only for
+/// single-threaded code that holds no locks of its own and whose abandoned heap objects may
+/// leak: libccd's GJK and MPR loops, which do not terminate on some inputs (long, thin
+/// triangles; huge coordinates).
 bool run_with_time_limit(double seconds, const std::function<void()>& f);
 
 /// How a guarded call ended.
