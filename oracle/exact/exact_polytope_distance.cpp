@@ -23,6 +23,8 @@ std::array<QVec3, 8> box_corners(const Obb& box) {
   return corners;
 }
 
+std::array<QVec3, 3> triangle_corners(const Triangle& t) { return {rational(t.v[0]), rational(t.v[1]), rational(t.v[2])}; }
+
 namespace {
 
 const QVec3 kOrigin{0, 0, 0};

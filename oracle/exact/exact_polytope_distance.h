@@ -1,12 +1,13 @@
 // The signed distance between two convex polytopes in exact rational arithmetic, from the exact
 // convex hull of their Minkowski difference: the reference for the library's box distances and
-// depths (collide/obb_distance.h), independent of how the library finds them.
+// depths (collide/obb_distance.h, collide/triangle_box_distance.h), independent of how the library finds them.
 #pragma once
 
 #include <array>
 #include <span>
 
 #include "collide/obb.h"
+#include "collide/triangle.h"
 #include "oracle/exact/distance_check.h"
 #include "oracle/exact/rational.h"
 
@@ -14,6 +15,9 @@ namespace cc::exact {
 
 /// The eight corners of a box (the parallelepiped its axes span, as given), exactly.
 std::array<QVec3, 8> box_corners(const Obb& box);
+
+/// The three vertices of a triangle, exactly.
+std::array<QVec3, 3> triangle_corners(const Triangle& t);
 
 /// The signed distance between the convex hulls of a's points and b's (each non-empty), as the
 /// signed distance from the origin to the boundary of M = a - b, the hull of every difference:

@@ -26,5 +26,6 @@ template void record(Records&, const SphereSeparation&);
 template void record(Records&, const SphereObbSeparation&);
 template void record(Records&, const TriangleSeparation&);
 template void record(Records&, const ObbSeparation&);
+template void record(Records&, const TriangleBoxSeparation&);
 
 }  // namespace cc::bounds

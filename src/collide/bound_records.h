@@ -25,6 +25,7 @@
 #include "collide/sphere_bound.h"
 #include "collide/sphere_distance_bound.h"
 #include "collide/sweep_bound.h"
+#include "collide/triangle_box_distance_bound.h"
 #include "collide/triangle_distance_bound.h"
 #include "collide/transform_bound.h"
 #include "collide/widening.h"
@@ -50,6 +51,7 @@ struct Records {
   std::vector<SphereObbSeparation> sphere_obb_separations;
   std::vector<TriangleSeparation> triangle_separations;
   std::vector<ObbSeparation> obb_separations;
+  std::vector<TriangleBoxSeparation> triangle_box_separations;
 
   void add(const Quotient& r) { quotients.push_back(r); }
   void add(const SphereSquares& r) { spheres.push_back(r); }
@@ -68,6 +70,7 @@ struct Records {
   void add(const SphereObbSeparation& r) { sphere_obb_separations.push_back(r); }
   void add(const TriangleSeparation& r) { triangle_separations.push_back(r); }
   void add(const ObbSeparation& r) { obb_separations.push_back(r); }
+  void add(const TriangleBoxSeparation& r) { triangle_box_separations.push_back(r); }
 };
 
 }  // namespace cc::bounds

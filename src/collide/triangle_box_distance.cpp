@@ -1,0 +1,233 @@
+#include "collide/triangle_box_distance.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+
+#include "collide/accurate_cross.h"
+#include "collide/box_features.h"
+#include "collide/depth_axes.h"
+#include "collide/length.h"
+#include "collide/nearest_pair.h"
+#include "collide/obb_fit.h"
+#include "collide/record_sink.h"
+#include "collide/segment.h"
+#include "collide/segment_distance.h"
+#include "collide/triangle_box_distance_bound.h"
+#include "collide/triangle_distance.h"
+#include "collide/triangle_foot.h"
+
+namespace cc {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+using Bound = bounds::TriangleBoxDistanceBound;
+using Axes = DepthAxes<13>;
+
+bool in_domain(const Triangle& t, const Obb& b) {
+  return finite(t) && finite(b.center) && finite(b.half) && finite(b.axes) && b.half.x >= 0 && b.half.y >= 0 &&
+         b.half.z >= 0;
+}
+
+// The triangle's vertices less the box's centre, as computed.
+using Relative = std::array<Vec3, 3>;
+
+// The extremes of the triangle's projection on n.
+struct Interval {
+  double lo, hi;
+};
+Interval projection(const Relative& w, const Vec3& n) {
+  const double p0 = dot(w[0], n), p1 = dot(w[1], n), p2 = dot(w[2], n);
+  return {std::min({p0, p1, p2}), std::max({p0, p1, p2})};
+}
+
+// The overlap of the projections of the triangle (w) and the box (centred at 0) on `direction`
+// over its length: > 0 overlapping by that much, < 0 apart by that much; +infinity for a zero
+// direction (no information). Within Bound::evaluation() of the exact overlap on the computed
+// direction.
+double overlap_along(const Relative& w, const Obb& box, const Vec3& direction) {
+  const Vec3 n = unit_scaled(direction);  // |n| in [1, 2 sqrt 3]: no underflow, no overflow
+  const double n_length = length(n);
+  if (!(n_length > 0)) return kInf;
+  const double r = radius_along(box, n);
+  const Interval t = projection(w, n);
+  return std::min(t.hi + r, r - t.lo) / n_length;
+}
+
+// The box's axes, then, unless one of them shows the shapes apart for certain (then the closest
+// pair needs no more), the triangle's normal and its edges' cross products with the box's axes.
+Axes measure_axes(const Triangle& t, const Relative& w, const Obb& box, const Bound& bound) {
+  Axes axes;
+  const auto overlap = [&](const Vec3& n) { return overlap_along(w, box, n); };
+  const double face_angle = 8 * kObbOrthonormalTolerance;
+  for (int k = 0; k < 3; ++k) axes.add(box.axes.col[k], bound.face_direction(), face_angle);
+  axes.measure(0, overlap);
+  if (axes.least_depth() + bound.evaluation() < 0) return axes;
+  const int faces = axes.count;
+  std::array<ExactDifference, 3> edge;  // edge k from v[k] to v[k + 1], exactly, scaled
+  std::array<double, 3> edge_length;    // as given, not scaled
+  for (int k = 0; k < 3; ++k) {
+    const ExactDifference e = exact_difference(t.v[(k + 1) % 3], t.v[k]);
+    edge[k] = unit_scaled(e);
+    edge_length[k] = length(e.hi);
+  }
+  const Vec3 normal = accurate_cross(edge[0], edge[1]);
+  const double normal_length = length(normal);
+  if (normal_length > 0) {
+    axes.add(normal, bound.direction(Bound::normal_angle(normal_length)), Bound::normal_angle(normal_length));
+  }
+  for (int k = 0; k < 3; ++k) {
+    const double scaled_length = length(edge[k].hi);
+    if (!(scaled_length > 0)) continue;  // a repeated vertex: no edge
+    for (int j = 0; j < 3; ++j) {
+      const Vec3 c = accurate_cross(edge[k], box.axes.col[j]);
+      const double c_length = length(c), sine = c_length / scaled_length;
+      // Nearly parallel: measured when the direction's error costs less than the sliver. An
+      // axis whose sine is at least 1/2 is always measured: the neighbours of a sliver's face are
+      // (the box's faces, the triangle's, and edge pairs of the other axes), or are slivers
+      // themselves, whose widths add up.
+      const double sliver = Bound::sliver(std::min(box.half[j], edge_length[k] / 2), sine);
+      if (sine < 0.5 && !(bound.direction(Bound::edge_angle(c_length)) < sliver)) {
+        axes.sliver += sliver;
+        continue;
+      }
+      axes.add(c, bound.direction(Bound::edge_angle(c_length)), Bound::edge_angle(c_length));
+    }
+  }
+  axes.measure(faces, overlap);
+  return axes;
+}
+
+// Overlapping for certain: minus the least depth; the witnesses the nearest pair of the
+// triangle's vertices farthest along the least axis and the box's feature nearest along it,
+// the box moved out by the depth.
+Separation depth(const Triangle& t, const Relative& w, const Obb& box, const Axes& axes, double lower,
+                 const Bound& bound) {
+  const DepthAxis& least = axes.axis[axes.least];
+  Vec3 n = length_and_direction(unit_scaled(least.n)).direction;
+  const Interval along = projection(w, n);
+  const double r = radius_along(box, n);
+  if (along.hi + r > r - along.lo) n = -n;  // the box is pushed along +n
+  const Interval pushed = projection(w, n);
+  const double m = least.depth;
+  const Vec3 shift = m * n;
+  const double tolerance = 16 * fp::u + least.angle_error;
+  // The vertices within the tolerance of the farthest, as a triangle (repeating one or two).
+  Triangle on_t = t;
+  int kept = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (pushed.hi - dot(w[k], n) <= tolerance * bound.size) on_t.v[kept++] = t.v[k];
+  }
+  for (int k = kept; k < 3; ++k) on_t.v[k] = on_t.v[k - 1];
+  Triangle on_box[2];
+  const int count = farthest_feature(box, -n, tolerance, shift, on_box);
+  Separation nearest;
+  nearest.distance = kInf;
+  for (int i = 0; i < count; ++i) {
+    const Separation s = distance_triangle_triangle(on_t, on_box[i]);
+    if (s.distance < nearest.distance) nearest = s;
+  }
+  // The pair meets where the least axis is a face of the difference; its gap counts in the
+  // witnesses' bound, so that they are as far apart as the depth says within it.
+  const double gap = nearest.distance;
+  return {-m, nearest.on_a, nearest.on_b - shift, std::max(bound.evaluation(), m - lower),
+          fp::sum3(bound.point(), gap / 2, 2 * fp::u * m)};
+}
+
+// The nearest of each vertex against the box, each corner of the box against the triangle's
+// face, and each pair of a triangle edge and a box edge not farther apart (by a gap in the box's
+// frame) than the best pair before them.
+NearestPair nearest_features(const Triangle& t, const Obb& box, int exponent) {
+  const std::array<Vec3, 8> corner = corners(box);  // bit k of an index set for +half_k
+  std::array<Vec3, 3> local;                        // the vertices in the box's frame
+  NearestPair best;
+  best.exponent = exponent;
+  for (int k = 0; k < 3; ++k) {
+    local[k] = box_coordinates(box, t.v[k]);
+    best.keep_nearer(t.v[k], clamped_into(box, local[k]));
+  }
+  for (const Vec3& c : corner) {
+    Vec3 foot;
+    if (foot_in_triangle(c, t, foot)) best.keep_nearer(foot, c);
+  }
+  // The triangle's extent in the box's frame: a box edge farther from it than the best pair
+  // cannot hold a nearer point.
+  Vec3 lo = local[0], hi = local[0];
+  for (int k = 1; k < 3; ++k) {
+    for (int j = 0; j < 3; ++j) lo[j] = std::min(lo[j], local[k][j]), hi[j] = std::max(hi[j], local[k][j]);
+  }
+  const double keep_below = best.square * (1 + 0x1p-20);
+  std::array<Segment, 3> edges;
+  int edge_count = 0;
+  for (int k = 0; k < 3; ++k) {
+    if (square_gap_to_box(box, local[k], local[(k + 1) % 3], exponent) <= keep_below) {
+      edges[edge_count++] = {t.v[k], t.v[(k + 1) % 3]};
+    }
+  }
+  // Box edge j: corners i (bit j clear) and i | 1 << j, in the frame +-half on the other axes.
+  for (int j = 0; j < 3; ++j) {
+    for (int i = 0; i < 8; ++i) {
+      if (i >> j & 1) continue;
+      double square = 0;
+      for (int k = 0; k < 3; ++k) {
+        const double from = k == j ? -box.half[k] : ((i >> k & 1) ? box.half[k] : -box.half[k]);
+        const double to = k == j ? box.half[k] : from;
+        const double g = std::max({0.0, lo[k] - std::max(from, to), std::min(from, to) - hi[k]});
+        const double s = fp::scale2(g, -exponent);
+        square += s * s;
+      }
+      if (!(square <= keep_below)) continue;
+      const Segment sb{corner[i], corner[i | 1 << j]};
+      for (int e = 0; e < edge_count; ++e) {
+        const auto [s, u] = closest_segment_parameters(edges[e], sb);
+        best.keep_nearer(edges[e].a + s * (edges[e].b - edges[e].a), sb.a + u * (sb.b - sb.a));
+      }
+    }
+  }
+  return best;
+}
+
+// Apart, or not certainly overlapping: the nearest pair, certified after the fact. Below: the
+// gap on the witnesses' direction when positive (then they are apart) and, on every axis, the
+// signed distance is at least minus its overlap. Where they may overlap, a witness may lie in
+// the other shape by up to the depth, which joins the witnesses' bound.
+Separation closest(const Triangle& t, const Relative& w, const Obb& box, const Axes& axes, const Bound& bound) {
+  const NearestPair best = nearest_features(t, box, bound.size > 0 ? fp::exponent_of(bound.size) : 0);
+  const double least = axes.least_depth();
+  double lower = -(least + bound.evaluation());
+  const Vec3 along = best.on_b - best.on_a;
+  if (along != Vec3{}) {
+    const double gap = -overlap_along(w, box, along) - bound.evaluation();
+    if (gap > 0) lower = std::max(lower, gap);
+  }
+  return Separation::certified(best.on_a, best.on_b, bound.point() + std::max(0.0, least + bound.evaluation()), lower);
+}
+
+template <class Records>
+Separation triangle_obb(const Triangle& t, const Obb& box, Records& records) {
+  if (!in_domain(t, box)) return Separation::outside_the_domain();
+  const Relative w{t.v[0] - box.center, t.v[1] - box.center, t.v[2] - box.center};
+  const double reach = std::max({norm1(w[0]), norm1(w[1]), norm1(w[2])});
+  const double magnitude = std::max({max_abs(t.v[0]), max_abs(t.v[1]), max_abs(t.v[2]), max_abs(box.center)});
+  const Bound bound{(reach + norm1(box.half)) * (1 + 8 * fp::u), magnitude};
+  const Axes axes = measure_axes(t, w, box, bound);
+  const double lower = axes.certain_depth(bound.evaluation());
+  const Separation s = lower > 0 ? depth(t, w, box, axes, lower, bound) : closest(t, w, box, axes, bound);
+  records.add(bounds::TriangleBoxSeparation{t, box, s, bound});
+  return s;
+}
+
+}  // namespace
+
+Separation distance_triangle_obb(const Triangle& t, const Obb& box) {
+  bounds::NoRecords none;
+  return triangle_obb(t, box, none);
+}
+
+Separation distance_triangle_obb(const Triangle& t, const Obb& box, bounds::Records& records) {
+  bounds::RecordsRef into{records};
+  return triangle_obb(t, box, into);
+}
+
+}  // namespace cc
