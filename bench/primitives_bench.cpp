@@ -17,6 +17,9 @@
 //   distance_obb_obb        fcl::detail::GJKSolver_libccd::shapeDistance on two Boxd, with nearest
 //                  points (libccd's GJK, FCL's default for distance(); it gives -1 for boxes that
 //                  meet, the library their signed distance, the depth, and witnesses)
+//   distance_tri_obb        fcl::detail::GJKSolver_libccd::shapeTriangleDistance on a Boxd, with
+//                  nearest points (what FCL's mesh-against-shape distance calls on each
+//                  triangle; -1 where they meet, the library their signed distance)
 // A distance row counts the pairs nearer than 0.1, so that the answers are used.
 #include <benchmark/benchmark.h>
 #include <fcl/geometry/shape/box.h>
@@ -40,6 +43,7 @@
 #include "collide/obb_distance.h"
 #include "collide/sphere_distance.h"
 #include "collide/triangle_box.h"
+#include "collide/triangle_box_distance.h"
 #include "collide/triangle_distance.h"
 #include "collide/triangle_intersection.h"
 #include "collide/triangle_triangle.h"
@@ -147,8 +151,8 @@ void register_kdop(Mix mix) {
 }
 
 // The distance rows: the library's signed distance with witnesses against FCL's routines for
-// the same pairs (sphere_pairs, obb_pairs and triangle_pairs; the ball-box pairs take the balls
-// of one and the boxes of the other).
+// the same pairs (sphere_pairs, obb_pairs, triangle_pairs and triangle_obb_pairs; the ball-box
+// pairs take the balls of one and the boxes of the other).
 void register_distance_benchmarks(Mix mix) {
   constexpr double kNear = 0.1;
   // (Names built by append: GCC 12 warns falsely, -Wrestrict, on "literal" + std::string here.)
@@ -202,6 +206,20 @@ void register_distance_benchmarks(Mix mix) {
           double d = 0;
           fcl::Vector3d pa, pb;
           solver.shapeDistance(a.box, a.tf, b.box, b.tf, &d, &pa, &pb);
+          return d < kNear;
+        });
+  }
+  {
+    auto p = std::make_shared<const Pairs<Triangle, Obb>>(triangle_obb_pairs(mix));
+    register_pair(
+        name("distance_tri_obb"), p,
+        [](const Triangle& t, const Obb& b) { return distance_triangle_obb(t, b).distance < kNear; },
+        std::shared_ptr<const Pairs<FclTriangle, FclBox>>(converted(*p, fcl_triangle, fcl_box)),
+        [](const FclTriangle& t, const FclBox& b) {
+          static const fcl::detail::GJKSolver_libccd<double> solver;
+          double d = 0;
+          fcl::Vector3d pb, pt;
+          solver.shapeTriangleDistance(b.box, b.tf, t.v[0], t.v[1], t.v[2], &d, &pb, &pt);
           return d < kNear;
         });
   }

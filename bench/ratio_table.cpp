@@ -50,7 +50,7 @@ void primitive_rows(const Results& r, std::vector<Row>& rows) {
                                                    {"tri_tri/", 1.5},  {"tri_tri_intersection/", 0},  // 0: no target
                                                    {"distance_sphere_sphere/", 1.5}, {"distance_sphere_obb/", 1.5},
                                                    {"distance_tri_tri/", 1.5},
-                                                   {"distance_obb_obb/", 1.5}};
+                                                   {"distance_obb_obb/", 1.5}, {"distance_tri_obb/", 1.5}};
   for (const auto& [group, at_least] : groups) {
     for (const auto& [name, lib] : r) {
       if (!starts_with(name, group) || name.size() < 4 || name.compare(name.size() - 4, 4, "/lib") != 0) continue;

@@ -397,4 +397,16 @@ int crosscheck_obb_obb_distance(const cc_obb* a, const cc_obb* b, double* distan
   return gjk_distance(shape_a, place(*a), shape_b, place(*b), distance, on_a, on_b);
 }
 
+int crosscheck_tri_obb_distance(const cc_triangle* tri, const cc_obb* box, double* distance, cc_vec3* on_a,
+                                cc_vec3* on_b) {
+  btTriangleShape triangle(v(tri->v[0]), v(tri->v[1]), v(tri->v[2]));
+  triangle.setMargin(0);
+  btBoxShape shape(v(box->half));
+  shape.setMargin(0);
+  shape.setImplicitShapeDimensions(v(box->half));
+  btTransform identity;
+  identity.setIdentity();
+  return gjk_distance(triangle, identity, shape, place(*box), distance, on_a, on_b);
+}
+
 }  // extern "C"

@@ -109,6 +109,8 @@ int crosscheck_sphere_sphere_distance(const cc_sphere* a, const cc_sphere* b, do
 int crosscheck_sphere_obb_distance(const cc_sphere* ball, const cc_obb* box, double* distance, cc_vec3* on_a,
                                    cc_vec3* on_b);
 int crosscheck_obb_obb_distance(const cc_obb* a, const cc_obb* b, double* distance, cc_vec3* on_a, cc_vec3* on_b);
+int crosscheck_tri_obb_distance(const cc_triangle* tri, const cc_obb* box, double* distance, cc_vec3* on_a,
+                                cc_vec3* on_b);
 /* How far the subject's distances and points may be from the exact ones, relative to the largest
  * absolute coordinate, radius or half extent of a case's shapes (e.g. 1e-12): an answer is right
  * when its distance and each point lie within this of the exact ones. At least 0, below 1. */

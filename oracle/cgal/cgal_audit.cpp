@@ -332,7 +332,6 @@ CgalAnswer cgal_answer(const Sphere& ball, const Obb& box) {
 CgalAnswer cgal_answer(const Aabb& a, const Aabb& b) { return hit_or_miss(CGAL::do_intersect(cuboid(a), cuboid(b))); }
 CgalAnswer cgal_answer(const Ray& ray, const Aabb& box) { return hit_or_miss(ray_meets(ray, cuboid(box))); }
 CgalAnswer cgal_answer(const Triangle& tri, const Aabb& box) { return hit_or_miss(meet(pieces(tri), cuboid(box))); }
-CgalAnswer cgal_answer(const Triangle& tri, const Obb& box) { return hit_or_miss(meet(pieces(tri), pieces(box))); }
 /// The squared distance between two pieces of triangles (points, segments, triangles).
 template <class X, class Y>
 FT squared_distance_between(const X& x, const Y& y) {
@@ -396,14 +395,14 @@ std::vector<Point> box_corners(const Obb& b) {
   return out;
 }
 
-/// The squared penetration depth of two boxes that meet: the least squared distance from the
-/// origin to the planes of the faces of CGAL's convex hull (convex_hull_3) of their Minkowski
-/// difference; 0 where that difference is flat (no translation is needed to leave a set with no
-/// inside).
-FT squared_depth(const Obb& a, const Obb& b) {
+/// The squared penetration depth of two convex polytopes that meet, given by their corners: the
+/// least squared distance from the origin to the planes of the faces of CGAL's convex hull
+/// (convex_hull_3) of their Minkowski difference; 0 where that difference is flat (no translation
+/// is needed to leave a set with no inside).
+FT squared_depth(const std::vector<Point>& a, const std::vector<Point>& b) {
   std::vector<Point> m;
-  for (const Point& p : box_corners(a)) {
-    for (const Point& q : box_corners(b)) m.push_back(CGAL::ORIGIN + (p - q));
+  for (const Point& p : a) {
+    for (const Point& q : b) m.push_back(CGAL::ORIGIN + (p - q));
   }
   std::size_t i1 = 1, i2 = 0, i3 = 0;
   while (i1 < m.size() && m[i1] == m[0]) ++i1;
@@ -424,25 +423,41 @@ FT squared_depth(const Obb& a, const Obb& b) {
   return *least;
 }
 
+/// The least squared distance between two sets of pieces (each non-empty).
+FT least_squared_distance(const Pieces& a, const Pieces& b) {
+  std::optional<FT> least;
+  for (const Piece& x : a) {
+    for (const Piece& y : b) {
+      const FT d = std::visit([](const auto& p, const auto& q) { return squared_distance_between(p, q); }, x, y);
+      if (!least || d < *least) least = d;
+    }
+  }
+  return *least;
+}
+
 }  // namespace
 
 CgalAnswer cgal_answer(const Obb& a, const Obb& b) {
   CgalAnswer answer = hit_or_miss(meet(pieces(a), pieces(b)));
   const auto to_double = [](const FT& t) { return CGAL::to_double(CGAL::exact(t)); };
   if (answer.hit) {
-    answer.distance_down = exact::signed_distance_down(-1, squared_depth(a, b), FT(0), to_double);
+    answer.distance_down = exact::signed_distance_down(-1, squared_depth(box_corners(a), box_corners(b)), FT(0), to_double);
     return answer;
   }
-  // Apart: the least squared distance between the pieces of their boundaries.
-  const Pieces pa = boundary(a), pb = boundary(b);
-  std::optional<FT> least;
-  for (const Piece& x : pa) {
-    for (const Piece& y : pb) {
-      const FT d = std::visit([](const auto& p, const auto& q) { return squared_distance_between(p, q); }, x, y);
-      if (!least || d < *least) least = d;
-    }
+  answer.distance_down = exact::signed_distance_down(1, least_squared_distance(boundary(a), boundary(b)), FT(0), to_double);
+  return answer;
+}
+
+CgalAnswer cgal_answer(const Triangle& tri, const Obb& box) {
+  const Pieces t = pieces(tri);
+  CgalAnswer answer = hit_or_miss(meet(t, pieces(box)));
+  const auto to_double = [](const FT& x) { return CGAL::to_double(CGAL::exact(x)); };
+  if (answer.hit) {
+    const std::vector<Point> corners{point(tri.v[0]), point(tri.v[1]), point(tri.v[2])};
+    answer.distance_down = exact::signed_distance_down(-1, squared_depth(corners, box_corners(box)), FT(0), to_double);
+    return answer;
   }
-  answer.distance_down = exact::signed_distance_down(1, *least, FT(0), to_double);
+  answer.distance_down = exact::signed_distance_down(1, least_squared_distance(t, boundary(box)), FT(0), to_double);
   return answer;
 }
 

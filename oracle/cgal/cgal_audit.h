@@ -76,7 +76,9 @@ CgalAnswer cgal_answer(const Ray& ray, const Aabb& box);
 CgalAnswer cgal_answer(const Triangle& tri, const Aabb& box);
 /// Triangle_3 (Segment_3, Point_3) against the parallelepiped the box's axes span, as the union
 /// of the six tetrahedra of its Kuhn triangulation (two triangles, a segment or a point when half
-/// extents are 0).
+/// extents are 0), and their signed distance: apart, the least squared_distance between the
+/// triangle and the triangles of the box's faces; meeting, minus the penetration depth, as for
+/// two boxes below.
 CgalAnswer cgal_answer(const Triangle& tri, const Obb& box);
 /// Triangle_3 (Segment_3, Point_3) against Triangle_3 (Segment_3, Point_3), and their squared
 /// distance (CGAL's squared_distance; for a segment and a triangle, which CGAL lacks, 0 where

@@ -24,5 +24,6 @@ CC_NO_PARTIES(chipmunk_parties, tri_tri_intersection, TriTriIntersection, "Chipm
 CC_NO_PARTIES(chipmunk_parties, tri_tri_distance, TriTriDistance, "Chipmunk is 2-D; the triangles are 3-D")
 CC_NO_PARTIES(chipmunk_parties, mesh_mesh_distance, MeshMeshDistance, "Chipmunk is 2-D; the meshes are 3-D")
 CC_NO_PARTIES(chipmunk_parties, obb_obb_distance, ObbObbDistance, "Chipmunk is 2-D; the boxes are 3-D")
+CC_NO_PARTIES(chipmunk_parties, tri_obb_distance, TriObbDistance, "Chipmunk is 2-D; the triangle and the box are 3-D")
 
 }  // namespace cc::chipmunk_oracle

@@ -349,6 +349,17 @@ class Measure {
     term("witness", "total", off, r.answer.point_error);
   }
 
+  // A triangle and a box: the signed distance against its whole bound, each witness's distance
+  // from its shape (the box's boundary).
+  void operator()(const bounds::TriangleBoxSeparation& r) {
+    if (!finite_triangle(r.triangle) || !all_finite(r.box)) return;
+    const auto ct = triangle_corners(r.triangle);
+    const auto cb = box_corners(r.box);
+    distance(r.answer, exact_polytope_distance(ct, cb), -1);
+    const double off = std::max(off_triangle(r.answer.on_a, r.triangle), off_box(r.answer.on_b, r.box));
+    term("witness", "total", off, r.answer.point_error);
+  }
+
  private:
   // |x - exact| for a double x, rounded up to a double: the least double e with x within e of
   // the exact signed distance, decided on squares (root_within).
@@ -479,6 +490,7 @@ std::vector<TermError> ExactRationalReference::bound_errors(const bounds::Record
   for (const auto& r : records.sphere_obb_separations) measure(r);
   for (const auto& r : records.triangle_separations) measure(r);
   for (const auto& r : records.obb_separations) measure(r);
+  for (const auto& r : records.triangle_box_separations) measure(r);
   return out;
 }
 

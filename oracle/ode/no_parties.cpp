@@ -17,5 +17,6 @@ CC_NO_PARTIES(ode_parties, tri_tri_distance, TriTriDistance, "ODE has no distanc
 CC_NO_PARTIES(ode_parties, tri_tri_intersection, TriTriIntersection, "ODE's triangle contacts are points for dynamics, not the intersection")
 CC_NO_PARTIES(ode_parties, mesh_mesh_distance, MeshMeshDistance, "ODE has no distance query (its trimesh colliders give contacts)")
 CC_NO_PARTIES(ode_parties, obb_obb_distance, ObbObbDistance, "ODE has no distance query (dBoxBox gives contacts with a depth for dynamics, not the penetration depth)")
+CC_NO_PARTIES(ode_parties, tri_obb_distance, TriObbDistance, "ODE has no distance query (a one-triangle dTriMesh against a dBox gives contacts for dynamics, not the distance or the penetration depth)")
 
 }  // namespace cc::ode_oracle

@@ -30,6 +30,7 @@
 #include "harness/model/inputs/sphere_sphere_distance.h"
 #include "harness/model/inputs/tri_aabb.h"
 #include "harness/model/inputs/tri_obb.h"
+#include "harness/model/inputs/tri_obb_distance.h"
 #include "harness/model/inputs/tri_tri.h"
 #include "harness/model/inputs/tri_tri_distance.h"
 #include "harness/model/inputs/tri_tri_intersection.h"
@@ -57,4 +58,5 @@
   X(sphere_sphere_distance, SphereSphereDistance) \
   X(sphere_obb_distance, SphereObbDistance)       \
   X(mesh_mesh_distance, MeshMeshDistance)         \
-  X(obb_obb_distance, ObbObbDistance)
+  X(obb_obb_distance, ObbObbDistance)             \
+  X(tri_obb_distance, TriObbDistance)

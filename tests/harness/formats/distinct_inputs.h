@@ -102,7 +102,7 @@ void for_each_value(harness::Input& input, F&& f) {
           obb(in.a), obb(in.b);
         } else if constexpr (std::is_same_v<T, TriAabbInput>) {
           tri(in.tri), box(in.box);
-        } else if constexpr (std::is_same_v<T, TriObbInput>) {
+        } else if constexpr (std::is_same_v<T, TriObbInput> || std::is_same_v<T, TriObbDistanceInput>) {
           tri(in.tri), obb(in.box);
         } else if constexpr (std::is_same_v<T, TriTriInput> || std::is_same_v<T, TriTriIntersectionInput> ||
                              std::is_same_v<T, TriTriDistanceInput>) {
@@ -206,6 +206,7 @@ inline harness::Input distinct_input(harness::QueryKind kind, DistinctValues& va
     case QueryKind::obb_obb_distance: in = ObbObbDistanceInput{}; break;
     case QueryKind::tri_aabb: in = TriAabbInput{}; break;
     case QueryKind::tri_obb: in = TriObbInput{}; break;
+    case QueryKind::tri_obb_distance: in = TriObbDistanceInput{}; break;
     case QueryKind::tri_tri: in = TriTriInput{}; break;
     case QueryKind::tri_tri_intersection: in = TriTriIntersectionInput{}; break;
     case QueryKind::tri_tri_distance: in = TriTriDistanceInput{}; break;

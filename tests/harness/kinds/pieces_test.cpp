@@ -25,6 +25,7 @@
 #include "harness/kinds/sphere_sphere_distance.h"
 #include "harness/kinds/tri_aabb.h"
 #include "harness/kinds/tri_obb.h"
+#include "harness/kinds/tri_obb_distance.h"
 #include "harness/kinds/tri_tri.h"
 #include "harness/kinds/tri_tri_distance.h"
 #include "harness/kinds/tri_tri_intersection.h"

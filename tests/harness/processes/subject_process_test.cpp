@@ -76,7 +76,7 @@ TEST(SubjectProcess, TheBulletExampleAnswersTheKindsItExportsAndIsNamedByItsHash
                          QueryKind::tri_aabb, QueryKind::tri_obb, QueryKind::moving_obb, QueryKind::ray_mesh,
                          QueryKind::mesh_mesh, QueryKind::mesh_mesh_first, QueryKind::broadphase,
                          QueryKind::tri_tri_distance, QueryKind::sphere_sphere_distance, QueryKind::sphere_obb_distance,
-                         QueryKind::obb_obb_distance}) {
+                         QueryKind::obb_obb_distance, QueryKind::tri_obb_distance}) {
     EXPECT_TRUE(bullet->answers(kind)) << name(kind);
   }
   for (QueryKind kind : {QueryKind::tri_tri, QueryKind::kdop_kdop, QueryKind::disc_walls}) {
@@ -85,7 +85,7 @@ TEST(SubjectProcess, TheBulletExampleAnswersTheKindsItExportsAndIsNamedByItsHash
   EXPECT_EQ(bullet->identity().file, "libcrosscheck_bullet_subject.so");
   EXPECT_EQ(bullet->identity().version, 1);
   EXPECT_EQ(bullet->identity().sha256.size(), 64u);
-  EXPECT_EQ(bullet->identity().kinds.size(), 15u);
+  EXPECT_EQ(bullet->identity().kinds.size(), 16u);
   EXPECT_TRUE(bullet->ask(kTouching).hit);
   EXPECT_FALSE(bullet->ask(AabbAabbInput{kUnit, {{1.5, 0, 0}, {2, 1, 1}}}).hit);
   EXPECT_TRUE(bullet->ask(SphereSphereInput{{{0, 0, 0}, 1}, {{1.5, 0, 0}, 1}}).hit);
@@ -107,6 +107,11 @@ TEST(SubjectProcess, TheBulletExampleAnswersTheKindsItExportsAndIsNamedByItsHash
       bullet->ask(ObbObbDistanceInput{{{0, 0, 0}, {1, 1, 1}, Mat3::identity()}, {{3.5, 0, 0}, {1, 1, 1}, Mat3::identity()}});
   EXPECT_FALSE(boxes.hit);
   EXPECT_NEAR(boxes.params.at(0), 1.5, 1e-9);
+  // A triangle whose lowest vertex is 0.75 above a unit cube.
+  const Triangle above{{Vec3{0.25, 0.5, 1.75}, Vec3{3, 3, 5}, Vec3{-2, 2, 6}}};
+  const Answer triangle_box = bullet->ask(TriObbDistanceInput{above, {{0, 0, 0}, {1, 1, 1}, Mat3::identity()}});
+  EXPECT_FALSE(triangle_box.hit);
+  EXPECT_NEAR(triangle_box.params.at(0), 0.75, 1e-9);
 }
 
 TEST(SubjectProcess, TheOdeExampleAnswersTheKindsItExports) {

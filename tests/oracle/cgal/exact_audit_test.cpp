@@ -61,7 +61,8 @@ TEST(ExactAudit, AnswersTheKindsMadeOfTwoShapesItExpresses) {
   for (QueryKind kind : {QueryKind::ray_aabb, QueryKind::sphere_sphere, QueryKind::aabb_aabb, QueryKind::tri_aabb,
                          QueryKind::tri_obb, QueryKind::tri_tri, QueryKind::obb_obb, QueryKind::kdop_kdop,
                          QueryKind::ray_mesh, QueryKind::disc_walls, QueryKind::tri_tri_distance,
-                         QueryKind::sphere_sphere_distance, QueryKind::sphere_obb_distance, QueryKind::obb_obb_distance}) {
+                         QueryKind::sphere_sphere_distance, QueryKind::sphere_obb_distance, QueryKind::obb_obb_distance,
+                         QueryKind::tri_obb_distance}) {
     EXPECT_TRUE(answers(kind)) << name(kind);
   }
   for (QueryKind kind : {QueryKind::mesh_mesh, QueryKind::mesh_mesh_first, QueryKind::broadphase,
@@ -125,6 +126,29 @@ TEST(ExactAudit, BoxDistancesAgreeWithCgals) {
       {cube, {{0.5, 0.25, 0}, {1, 0.5, 0.25}, turned}},          {cube, {{0.5, 0, 0}, {0, 0, 1}, Mat3::identity()}},
       {{{0, 0, 0}, {1, 1, 0}, Mat3::identity()}, {{0.5, 0.5, 0}, {1, 1, 0}, Mat3::identity()}}};
   for (const ObbObbDistanceInput& in : cases) {
+    const Audit a = audit_case(in, reference);
+    EXPECT_EQ(a.outcome, AuditOutcome::agree) << a.why;
+    ASSERT_TRUE(a.cgal.distance_down.has_value());
+  }
+}
+
+// Triangles and boxes apart, touching and overlapping (a vertex in a face, a corner through the
+// triangle, a triangle cutting the box), a segment and a flat box: CGAL's signed distance is the
+// reference's, rounded down alike.
+TEST(ExactAudit, TriangleBoxDistancesAgreeWithCgals) {
+  const exact::ExactRationalReference reference;
+  const Mat3 turned = Mat3::from_columns({0.6, 0.8, 0}, {-0.8, 0.6, 0}, {0, 0, 1});
+  const Obb cube{{0, 0, 0}, {1, 1, 1}, Mat3::identity()};
+  const auto tri = [](const Vec3& a, const Vec3& b, const Vec3& c) { return Triangle{{a, b, c}}; };
+  const TriObbDistanceInput cases[] = {
+      {tri({0.25, 0.5, 1.75}, {3, 3, 5}, {-2, 2, 6}), cube},
+      {tri({0, 0, 1}, {3, 0, 3}, {0, 3, 3}), cube},
+      {tri({0.25, 0.25, 0.875}, {4, 1, 6}, {1, 4, 6}), cube},
+      {tri({-5, -5, 0.25}, {5, -5, 0.25}, {0, 5, 0.25}), cube},
+      {tri({3, 1, -1}, {-1, 3, -1}, {-1, -1, 3}), {{0, 0, 0}, {0.5, 1, 2}, turned}},
+      {tri({-3, 0, 0.5}, {3, 0, 0.5}, {3, 0, 0.5}), cube},
+      {tri({0, 0, 0.5}, {2, 0, 0.5}, {0, 2, 0.5}), {{0.5, 0.5, 0.5}, {1, 1, 0}, Mat3::identity()}}};
+  for (const TriObbDistanceInput& in : cases) {
     const Audit a = audit_case(in, reference);
     EXPECT_EQ(a.outcome, AuditOutcome::agree) << a.why;
     ASSERT_TRUE(a.cgal.distance_down.has_value());
