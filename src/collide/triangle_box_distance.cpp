@@ -55,8 +55,8 @@ double overlap_along(const Relative& w, const Obb& box, const Vec3& direction) {
   return std::min(t.hi + r, r - t.lo) / n_length;
 }
 
-// The box's axes, then, unless one of them shows the shapes apart for certain (then the closest
-// pair needs no more), the triangle's normal and its edges' cross products with the box's axes.
+// The box's axes, then the triangle's normal and its edges' cross products with the box's axes,
+// until one shows the shapes apart for certain (then the closest pair needs no more).
 Axes measure_axes(const Triangle& t, const Relative& w, const Obb& box, const Bound& bound) {
   Axes axes;
   const auto overlap = [&](const Vec3& n) { return overlap_along(w, box, n); };
@@ -64,7 +64,6 @@ Axes measure_axes(const Triangle& t, const Relative& w, const Obb& box, const Bo
   for (int k = 0; k < 3; ++k) axes.add(box.axes.col[k], bound.face_direction(), face_angle);
   axes.measure(0, overlap);
   if (axes.least_depth() + bound.evaluation() < 0) return axes;
-  const int faces = axes.count;
   std::array<ExactDifference, 3> edge;  // edge k from v[k] to v[k + 1], exactly, scaled
   std::array<double, 3> edge_length;    // as given, not scaled
   for (int k = 0; k < 3; ++k) {
@@ -74,9 +73,13 @@ Axes measure_axes(const Triangle& t, const Relative& w, const Obb& box, const Bo
   }
   const Vec3 normal = accurate_cross(edge[0], edge[1]);
   const double normal_length = length(normal);
-  if (normal_length > 0) {
-    axes.add(normal, bound.direction(Bound::normal_angle(normal_length)), Bound::normal_angle(normal_length));
-  }
+  // Each axis measured as it comes: one that shows them apart for certain ends the list.
+  const auto apart_on = [&](const Vec3& n, double angle) {
+    axes.add(n, bound.direction(angle), angle);
+    axes.measure(axes.count - 1, overlap);
+    return axes.least_depth() + bound.evaluation() < 0;
+  };
+  if (normal_length > 0 && apart_on(normal, Bound::normal_angle(normal_length))) return axes;
   for (int k = 0; k < 3; ++k) {
     const double scaled_length = length(edge[k].hi);
     if (!(scaled_length > 0)) continue;  // a repeated vertex: no edge
@@ -92,10 +95,9 @@ Axes measure_axes(const Triangle& t, const Relative& w, const Obb& box, const Bo
         axes.sliver += sliver;
         continue;
       }
-      axes.add(c, bound.direction(Bound::edge_angle(c_length)), Bound::edge_angle(c_length));
+      if (apart_on(c, Bound::edge_angle(c_length))) return axes;
     }
   }
-  axes.measure(faces, overlap);
   return axes;
 }
 
@@ -135,10 +137,32 @@ Separation depth(const Triangle& t, const Relative& w, const Obb& box, const Axe
           fp::sum3(bound.point(), gap / 2, 2 * fp::u * m)};
 }
 
-// The nearest of each vertex against the box, each corner of the box against the triangle's
-// face, and each pair of a triangle edge and a box edge not farther apart (by a gap in the box's
-// frame) than the best pair before them.
-NearestPair nearest_features(const Triangle& t, const Obb& box, int exponent) {
+// The gap (scaled, squared) between two boxes of the box's frame given by their corners lo and
+// hi: a lower bound on the distance between anything they hold. For pruning only.
+double square_gap(const Vec3& a_lo, const Vec3& a_hi, const Vec3& b_lo, const Vec3& b_hi, int exponent) {
+  double sum = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double s = fp::scale2(std::max({0.0, a_lo[k] - b_hi[k], b_lo[k] - a_hi[k]}), -exponent);
+    sum += s * s;
+  }
+  return sum;
+}
+
+// The gap along the direction from the pair's first point to its second: a certified lower bound
+// on the distance when positive (0 otherwise).
+double gap_along(const Relative& w, const Obb& box, const NearestPair& pair, const Bound& bound) {
+  const Vec3 along = pair.on_b - pair.on_a;
+  if (along == Vec3{}) return 0;
+  return std::max(0.0, -overlap_along(w, box, along) - bound.evaluation());
+}
+
+// The nearest of each vertex against the box, each corner of the box against the triangle's face
+// (those the triangle reaches beyond and nearer its plane than the best pair), and, unless the gap
+// along the best pair's direction already proves it closest to within the rounding (its `gap`),
+// each pair of a triangle edge and a box edge that the edge reaches beyond and whose extents in
+// the box's frame are not farther apart than the best pair.
+NearestPair nearest_features(const Triangle& t, const Relative& w, const Obb& box, const Bound& bound, double& gap) {
+  const int exponent = bound.size > 0 ? fp::exponent_of(bound.size) : 0;
   const std::array<Vec3, 8> corner = corners(box);  // bit k of an index set for +half_k
   std::array<Vec3, 3> local;                        // the vertices in the box's frame
   NearestPair best;
@@ -147,44 +171,56 @@ NearestPair nearest_features(const Triangle& t, const Obb& box, int exponent) {
     local[k] = box_coordinates(box, t.v[k]);
     best.keep_nearer(t.v[k], clamped_into(box, local[k]));
   }
-  for (const Vec3& c : corner) {
-    Vec3 foot;
-    if (foot_in_triangle(c, t, foot)) best.keep_nearer(foot, c);
-  }
-  // The triangle's extent in the box's frame: a box edge farther from it than the best pair
-  // cannot hold a nearer point.
+  // A box feature can be nearest to a point of the triangle only if that point lies beyond the
+  // feature's faces, on the feature's side of each (clamping takes it there): the triangle's
+  // extent in the frame, with a margin for the frame's rounding, tells which can.
   Vec3 lo = local[0], hi = local[0];
   for (int k = 1; k < 3; ++k) {
     for (int j = 0; j < 3; ++j) lo[j] = std::min(lo[j], local[k][j]), hi[j] = std::max(hi[j], local[k][j]);
   }
-  const double keep_below = best.square * (1 + 0x1p-20);
-  std::array<Segment, 3> edges;
-  int edge_count = 0;
-  for (int k = 0; k < 3; ++k) {
-    if (square_gap_to_box(box, local[k], local[(k + 1) % 3], exponent) <= keep_below) {
-      edges[edge_count++] = {t.v[k], t.v[(k + 1) % 3]};
+  const double margin = 0x1p-30 * bound.size;
+  const auto reaches = [&](int k, bool plus, const Vec3& from, const Vec3& to) {
+    return plus ? to[k] + margin >= box.half[k] : from[k] - margin <= -box.half[k];
+  };
+  const Vec3 normal = unit_scaled(cross(t.v[1] - t.v[0], t.v[2] - t.v[0]));  // for pruning only
+  const double normal_square = dot(normal, normal);
+  for (int i = 0; i < 8; ++i) {
+    if (!reaches(0, i & 1, lo, hi) || !reaches(1, i >> 1 & 1, lo, hi) || !reaches(2, i >> 2 & 1, lo, hi)) continue;
+    const Vec3& c = corner[i];
+    if (normal_square > 0) {
+      const double height = fp::scale2(dot(c - t.v[0], normal), -exponent);
+      if (height * height > best.square * normal_square * (1 + 0x1p-20)) continue;
+    }
+    Vec3 foot;
+    if (foot_in_triangle(c, t, foot)) best.keep_nearer(foot, c);
+  }
+  gap = gap_along(w, box, best, bound);
+  const double scaled_gap = fp::scale2(gap, -exponent);
+  if (scaled_gap * scaled_gap >= best.square * (1 - 0x1p-40)) return best;
+  // Box edge j from corner i (bit j clear) to i | 1 << j: in the frame, [-h_j, h_j] on axis j and
+  // +-h on the others.
+  for (int e = 0; e < 3; ++e) {
+    const Vec3 &p = local[e], &q = local[(e + 1) % 3];
+    const Vec3 lo_e{std::min(p.x, q.x), std::min(p.y, q.y), std::min(p.z, q.z)};
+    const Vec3 hi_e{std::max(p.x, q.x), std::max(p.y, q.y), std::max(p.z, q.z)};
+    if (!(square_gap(lo_e, hi_e, -box.half, box.half, exponent) <= best.square * (1 + 0x1p-20))) continue;
+    const Segment edge{t.v[e], t.v[(e + 1) % 3]};
+    for (int j = 0; j < 3; ++j) {
+      for (int i = 0; i < 8; ++i) {
+        if (i >> j & 1) continue;
+        const int a = (j + 1) % 3, b = (j + 2) % 3;
+        if (!reaches(a, i >> a & 1, lo_e, hi_e) || !reaches(b, i >> b & 1, lo_e, hi_e)) continue;
+        Vec3 from, to;
+        for (int k = 0; k < 3; ++k) from[k] = to[k] = (i >> k & 1) ? box.half[k] : -box.half[k];
+        to[j] = box.half[j];
+        if (!(square_gap(lo_e, hi_e, from, to, exponent) <= best.square * (1 + 0x1p-20))) continue;
+        const Segment sb{corner[i], corner[i | 1 << j]};
+        const auto [s, u] = closest_segment_parameters(edge, sb);
+        best.keep_nearer(edge.a + s * (edge.b - edge.a), sb.a + u * (sb.b - sb.a));
+      }
     }
   }
-  // Box edge j: corners i (bit j clear) and i | 1 << j, in the frame +-half on the other axes.
-  for (int j = 0; j < 3; ++j) {
-    for (int i = 0; i < 8; ++i) {
-      if (i >> j & 1) continue;
-      double square = 0;
-      for (int k = 0; k < 3; ++k) {
-        const double from = k == j ? -box.half[k] : ((i >> k & 1) ? box.half[k] : -box.half[k]);
-        const double to = k == j ? box.half[k] : from;
-        const double g = std::max({0.0, lo[k] - std::max(from, to), std::min(from, to) - hi[k]});
-        const double s = fp::scale2(g, -exponent);
-        square += s * s;
-      }
-      if (!(square <= keep_below)) continue;
-      const Segment sb{corner[i], corner[i | 1 << j]};
-      for (int e = 0; e < edge_count; ++e) {
-        const auto [s, u] = closest_segment_parameters(edges[e], sb);
-        best.keep_nearer(edges[e].a + s * (edges[e].b - edges[e].a), sb.a + u * (sb.b - sb.a));
-      }
-    }
-  }
+  gap = gap_along(w, box, best, bound);
   return best;
 }
 
@@ -193,14 +229,11 @@ NearestPair nearest_features(const Triangle& t, const Obb& box, int exponent) {
 // signed distance is at least minus its overlap. Where they may overlap, a witness may lie in
 // the other shape by up to the depth, which joins the witnesses' bound.
 Separation closest(const Triangle& t, const Relative& w, const Obb& box, const Axes& axes, const Bound& bound) {
-  const NearestPair best = nearest_features(t, box, bound.size > 0 ? fp::exponent_of(bound.size) : 0);
+  double gap = 0;
+  const NearestPair best = nearest_features(t, w, box, bound, gap);
   const double least = axes.least_depth();
   double lower = -(least + bound.evaluation());
-  const Vec3 along = best.on_b - best.on_a;
-  if (along != Vec3{}) {
-    const double gap = -overlap_along(w, box, along) - bound.evaluation();
-    if (gap > 0) lower = std::max(lower, gap);
-  }
+  if (gap > 0) lower = std::max(lower, gap);
   return Separation::certified(best.on_a, best.on_b, bound.point() + std::max(0.0, least + bound.evaluation()), lower);
 }
 
