@@ -8,11 +8,6 @@
 
 namespace cc {
 
-double radius_along(const Obb& box, const Vec3& n) {
-  return fp::sum3(box.half.x * std::fabs(dot(box.axes.col[0], n)), box.half.y * std::fabs(dot(box.axes.col[1], n)),
-                  box.half.z * std::fabs(dot(box.axes.col[2], n)));
-}
-
 int farthest_feature(const Obb& box, const Vec3& n, double tolerance, const Vec3& shift, Triangle out[2]) {
   const std::array<Vec3, 8> corner = corners(box);  // bit k of an index set for +half_k
   int bits = 0, free[3], free_count = 0, largest = 0;
@@ -45,24 +40,6 @@ int farthest_feature(const Obb& box, const Vec3& n, double tolerance, const Vec3
   out[0] = {{p00, p10, p11}};
   out[1] = {{p00, p11, p01}};
   return 2;
-}
-
-Vec3 box_coordinates(const Obb& box, const Vec3& p) { return transpose_times(box.axes, p - box.center); }
-
-Vec3 clamped_into(const Obb& box, const Vec3& q) {
-  const Vec3 c{std::clamp(q.x, -box.half.x, box.half.x), std::clamp(q.y, -box.half.y, box.half.y),
-               std::clamp(q.z, -box.half.z, box.half.z)};
-  return box.center + box.axes * c;
-}
-
-double square_gap_to_box(const Obb& box, const Vec3& p, const Vec3& q, int exponent) {
-  double sum = 0;
-  for (int k = 0; k < 3; ++k) {
-    const double g = std::max({0.0, std::min(p[k], q[k]) - box.half[k], -box.half[k] - std::max(p[k], q[k])});
-    const double s = fp::scale2(g, -exponent);
-    sum += s * s;
-  }
-  return sum;
 }
 
 }  // namespace cc

@@ -38,8 +38,8 @@ double overlap_along(const Obb& a, const Obb& b, const Vec3& d, const Vec3& dire
   return ((radius_along(a, n) + radius_along(b, n)) - std::fabs(dot(d, n))) / n_length;
 }
 
-// The faces' axes, then, unless one of them shows the boxes apart for certain (then the closest
-// pair needs no more), the edge pairs'.
+// The faces' axes, then the edge pairs', until one shows the boxes apart for certain (then the
+// closest pair needs no more).
 using Axes = DepthAxes<15>;
 
 Axes measure_axes(const Obb& a, const Obb& b, const Vec3& d, const bounds::ObbDistanceBound& bound) {
@@ -52,7 +52,6 @@ Axes measure_axes(const Obb& a, const Obb& b, const Vec3& d, const bounds::ObbDi
   }
   axes.measure(0, overlap);
   if (axes.least_depth() + bound.evaluation() < 0) return axes;
-  const int faces = axes.count;
   for (int i = 0; i < 3; ++i) {
     for (int j = 0; j < 3; ++j) {
       const Vec3 c = accurate_cross(a.axes.col[i], b.axes.col[j]);
@@ -65,9 +64,10 @@ Axes measure_axes(const Obb& a, const Obb& b, const Vec3& d, const bounds::ObbDi
         continue;
       }
       axes.add(c, bound.cross_direction(c_length), bounds::ObbDistanceBound::cross_angle(c_length));
+      axes.measure(axes.count - 1, overlap);
+      if (axes.least_depth() + bound.evaluation() < 0) return axes;
     }
   }
-  axes.measure(faces, overlap);
   return axes;
 }
 
@@ -100,9 +100,20 @@ Separation depth(const Obb& a, const Obb& b, const Vec3& d, const Axes& axes, do
           fp::sum3(bound.point(), gap / 2, 2 * fp::u * m)};
 }
 
-// The nearest of each corner against the other box and of each pair of edges whose segments are
-// not farther from the other box than the best corner's pair.
-NearestPair nearest_features(const Obb& a, const Obb& b, int exponent) {
+// The gap along the direction from the pair's first point to its second: a certified lower bound
+// on the distance when positive (0 otherwise).
+double gap_along(const Obb& a, const Obb& b, const Vec3& d, const NearestPair& pair, const bounds::ObbDistanceBound& bound) {
+  const Vec3 along = pair.on_b - pair.on_a;
+  if (along == Vec3{}) return 0;
+  return std::max(0.0, -overlap_along(a, b, d, along) - bound.evaluation());
+}
+
+// The nearest of each corner against the other box and, unless the gap along the best pair's
+// direction already proves it closest to within the rounding (its `gap`), of each pair of edges
+// no farther from the other box than the best pair that reach beyond each other's faces.
+NearestPair nearest_features(const Obb& a, const Obb& b, const Vec3& d, const bounds::ObbDistanceBound& bound,
+                             double& gap) {
+  const int exponent = bound.size > 0 ? fp::exponent_of(bound.size) : 0;
   const std::array<Vec3, 8> ca = corners(a), cb = corners(b);
   std::array<Vec3, 8> la, lb;  // the corners' coordinates in the other box
   NearestPair best;
@@ -112,29 +123,43 @@ NearestPair nearest_features(const Obb& a, const Obb& b, int exponent) {
     best.keep_nearer(ca[i], clamped_into(b, la[i]));
     best.keep_nearer(clamped_into(a, lb[i]), cb[i]);
   }
-  // Edge k of a box joins corner i (bit k clear) and i | 1 << k.
+  gap = gap_along(a, b, d, best, bound);
+  const double scaled_gap = fp::scale2(gap, -exponent);
+  if (scaled_gap * scaled_gap >= best.square * (1 - 0x1p-40)) return best;
+  // Edge k of a box joins corner i (bit k clear) and i | 1 << k. Each edge's extent in the other
+  // box's frame; those no farther from the other box than the best pair, paired where each
+  // reaches beyond the other's faces (reaches_beyond, box_features.h).
   struct Edge {
-    int from, to;
+    int axis, from, to;
+    Extent extent;
   };
   std::array<Edge, 12> ea, eb;
   int na = 0, nb = 0;
   const double keep_below = best.square * (1 + 0x1p-20);
+  const Extent whole_a{-a.half, a.half}, whole_b{-b.half, b.half};
   for (int k = 0; k < 3; ++k) {
     for (int i = 0; i < 8; ++i) {
       if (i >> k & 1) continue;
       const int j = i | 1 << k;
-      if (square_gap_to_box(b, la[i], la[j], exponent) <= keep_below) ea[na++] = {i, j};
-      if (square_gap_to_box(a, lb[i], lb[j], exponent) <= keep_below) eb[nb++] = {i, j};
+      const Extent in_b = extent_of(la[i], la[j]), in_a = extent_of(lb[i], lb[j]);
+      if (square_gap(in_b, whole_b, exponent) <= keep_below) ea[na++] = {k, i, j, in_b};
+      if (square_gap(in_a, whole_a, exponent) <= keep_below) eb[nb++] = {k, i, j, in_a};
     }
   }
+  const double margin = 0x1p-30 * bound.size;
   for (int i = 0; i < na; ++i) {
     const Segment sa{ca[ea[i].from], ca[ea[i].to]};
     for (int j = 0; j < nb; ++j) {
+      if (!reaches_beyond(b, ea[i].extent, eb[j].from, eb[j].axis, margin) ||
+          !reaches_beyond(a, eb[j].extent, ea[i].from, ea[i].axis, margin)) {
+        continue;
+      }
       const Segment sb{cb[eb[j].from], cb[eb[j].to]};
       const auto [s, t] = closest_segment_parameters(sa, sb);
       best.keep_nearer(sa.a + s * (sa.b - sa.a), sb.a + t * (sb.b - sb.a));
     }
   }
+  gap = gap_along(a, b, d, best, bound);
   return best;
 }
 
@@ -143,14 +168,11 @@ NearestPair nearest_features(const Obb& a, const Obb& b, int exponent) {
 // signed distance is at least minus its overlap. Where they may overlap, a witness may lie in
 // the other box by up to the depth, which joins the witnesses' bound.
 Separation closest(const Obb& a, const Obb& b, const Vec3& d, const Axes& axes, const bounds::ObbDistanceBound& bound) {
-  const NearestPair best = nearest_features(a, b, bound.size > 0 ? fp::exponent_of(bound.size) : 0);
+  double gap = 0;
+  const NearestPair best = nearest_features(a, b, d, bound, gap);
   const double least = axes.least_depth();
   double lower = -(least + bound.evaluation());
-  const Vec3 along = best.on_b - best.on_a;
-  if (along != Vec3{}) {
-    const double gap = -overlap_along(a, b, d, along) - bound.evaluation();
-    if (gap > 0) lower = std::max(lower, gap);
-  }
+  if (gap > 0) lower = std::max(lower, gap);
   return Separation::certified(best.on_a, best.on_b, bound.point() + std::max(0.0, least + bound.evaluation()), lower);
 }
 

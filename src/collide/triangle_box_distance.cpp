@@ -137,17 +137,6 @@ Separation depth(const Triangle& t, const Relative& w, const Obb& box, const Axe
           fp::sum3(bound.point(), gap / 2, 2 * fp::u * m)};
 }
 
-// The gap (scaled, squared) between two boxes of the box's frame given by their corners lo and
-// hi: a lower bound on the distance between anything they hold. For pruning only.
-double square_gap(const Vec3& a_lo, const Vec3& a_hi, const Vec3& b_lo, const Vec3& b_hi, int exponent) {
-  double sum = 0;
-  for (int k = 0; k < 3; ++k) {
-    const double s = fp::scale2(std::max({0.0, a_lo[k] - b_hi[k], b_lo[k] - a_hi[k]}), -exponent);
-    sum += s * s;
-  }
-  return sum;
-}
-
 // The gap along the direction from the pair's first point to its second: a certified lower bound
 // on the distance when positive (0 otherwise).
 double gap_along(const Relative& w, const Obb& box, const NearestPair& pair, const Bound& bound) {
@@ -171,21 +160,17 @@ NearestPair nearest_features(const Triangle& t, const Relative& w, const Obb& bo
     local[k] = box_coordinates(box, t.v[k]);
     best.keep_nearer(t.v[k], clamped_into(box, local[k]));
   }
-  // A box feature can be nearest to a point of the triangle only if that point lies beyond the
-  // feature's faces, on the feature's side of each (clamping takes it there): the triangle's
-  // extent in the frame, with a margin for the frame's rounding, tells which can.
-  Vec3 lo = local[0], hi = local[0];
-  for (int k = 1; k < 3; ++k) {
-    for (int j = 0; j < 3; ++j) lo[j] = std::min(lo[j], local[k][j]), hi[j] = std::max(hi[j], local[k][j]);
+  // A box feature can be nearest to a point of the triangle only if the triangle reaches beyond
+  // its faces (reaches_beyond, box_features.h).
+  Extent triangle = extent_of(local[0], local[1]);
+  for (int k = 0; k < 3; ++k) {
+    triangle.lo[k] = std::min(triangle.lo[k], local[2][k]), triangle.hi[k] = std::max(triangle.hi[k], local[2][k]);
   }
   const double margin = 0x1p-30 * bound.size;
-  const auto reaches = [&](int k, bool plus, const Vec3& from, const Vec3& to) {
-    return plus ? to[k] + margin >= box.half[k] : from[k] - margin <= -box.half[k];
-  };
   const Vec3 normal = unit_scaled(cross(t.v[1] - t.v[0], t.v[2] - t.v[0]));  // for pruning only
   const double normal_square = dot(normal, normal);
   for (int i = 0; i < 8; ++i) {
-    if (!reaches(0, i & 1, lo, hi) || !reaches(1, i >> 1 & 1, lo, hi) || !reaches(2, i >> 2 & 1, lo, hi)) continue;
+    if (!reaches_beyond(box, triangle, i, -1, margin)) continue;
     const Vec3& c = corner[i];
     if (normal_square > 0) {
       const double height = fp::scale2(dot(c - t.v[0], normal), -exponent);
@@ -197,23 +182,16 @@ NearestPair nearest_features(const Triangle& t, const Relative& w, const Obb& bo
   gap = gap_along(w, box, best, bound);
   const double scaled_gap = fp::scale2(gap, -exponent);
   if (scaled_gap * scaled_gap >= best.square * (1 - 0x1p-40)) return best;
-  // Box edge j from corner i (bit j clear) to i | 1 << j: in the frame, [-h_j, h_j] on axis j and
-  // +-h on the others.
+  // Box edge j from corner i (bit j clear) to i | 1 << j.
   for (int e = 0; e < 3; ++e) {
-    const Vec3 &p = local[e], &q = local[(e + 1) % 3];
-    const Vec3 lo_e{std::min(p.x, q.x), std::min(p.y, q.y), std::min(p.z, q.z)};
-    const Vec3 hi_e{std::max(p.x, q.x), std::max(p.y, q.y), std::max(p.z, q.z)};
-    if (!(square_gap(lo_e, hi_e, -box.half, box.half, exponent) <= best.square * (1 + 0x1p-20))) continue;
+    const Extent on_edge = extent_of(local[e], local[(e + 1) % 3]);
+    if (!(square_gap(on_edge, {-box.half, box.half}, exponent) <= best.square * (1 + 0x1p-20))) continue;
     const Segment edge{t.v[e], t.v[(e + 1) % 3]};
     for (int j = 0; j < 3; ++j) {
       for (int i = 0; i < 8; ++i) {
         if (i >> j & 1) continue;
-        const int a = (j + 1) % 3, b = (j + 2) % 3;
-        if (!reaches(a, i >> a & 1, lo_e, hi_e) || !reaches(b, i >> b & 1, lo_e, hi_e)) continue;
-        Vec3 from, to;
-        for (int k = 0; k < 3; ++k) from[k] = to[k] = (i >> k & 1) ? box.half[k] : -box.half[k];
-        to[j] = box.half[j];
-        if (!(square_gap(lo_e, hi_e, from, to, exponent) <= best.square * (1 + 0x1p-20))) continue;
+        if (!reaches_beyond(box, on_edge, i, j, margin)) continue;
+        if (!(square_gap(on_edge, edge_extent(box, j, i), exponent) <= best.square * (1 + 0x1p-20))) continue;
         const Segment sb{corner[i], corner[i | 1 << j]};
         const auto [s, u] = closest_segment_parameters(edge, sb);
         best.keep_nearer(edge.a + s * (edge.b - edge.a), sb.a + u * (sb.b - sb.a));
