@@ -320,6 +320,63 @@ int crosscheck_mesh_mesh_first(const cc_mesh* a, const cc_pose* pose_a, const cc
   return 1;
 }
 
+// A point where two triangles meet: where an edge of one passes through the other (none for
+// triangles that meet only within one plane).
+bool meeting_point(const btVector3 (&t)[3], const btVector3 (&u)[3], btVector3& at) {
+  for (const auto& [p, q] : {std::pair{&t, &u}, std::pair{&u, &t}}) {
+    const btVector3 n = ((*q)[1] - (*q)[0]).cross((*q)[2] - (*q)[0]);
+    for (int k = 0; k < 3; ++k) {
+      const btVector3 a = (*p)[k], b = (*p)[(k + 1) % 3];
+      const double da = n.dot(a - (*q)[0]), db = n.dot(b - (*q)[0]);
+      if ((da > 0 && db > 0) || (da < 0 && db < 0) || da == db) continue;
+      const btVector3 x = a + (b - a) * (da / (da - db));
+      bool inside = true;
+      for (int i = 0; i < 3; ++i) inside = inside && ((*q)[(i + 1) % 3] - (*q)[i]).cross(x - (*q)[i]).dot(n) >= 0;
+      if (inside) {
+        at = x;
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+// The distance between the placed meshes' surfaces the plain way: every pair of faces through
+// GJK (btGjkPairDetector on two btTriangleShapes of margin 0, as Bullet asks a pair of convex
+// pieces), the nearest kept; a pair GJK finds overlapping is 0 apart (triangles have no inside),
+// at a point where an edge of one passes through the other.
+int crosscheck_mesh_mesh_distance(const cc_mesh* a, const cc_pose* pose_a, const cc_mesh* b, const cc_pose* pose_b,
+                                  double* distance, cc_vec3* on_a, cc_vec3* on_b) {
+  const auto placed = [](const cc_mesh& m, const cc_pose& pose, unsigned f, int k) {
+    const cc_vec3& p = m.vertices[m.faces[f][k]];
+    const double t[3] = {pose.translation.x, pose.translation.y, pose.translation.z};
+    btVector3 out;
+    for (int r = 0; r < 3; ++r) out[r] = pose.rotation[r][0] * p.x + pose.rotation[r][1] * p.y + pose.rotation[r][2] * p.z + t[r];
+    return out;
+  };
+  btTransform identity;
+  identity.setIdentity();
+  bool any = false;
+  for (unsigned i = 0; i < a->face_count; ++i) {
+    const btVector3 va[3] = {placed(*a, *pose_a, i, 0), placed(*a, *pose_a, i, 1), placed(*a, *pose_a, i, 2)};
+    btTriangleShape ta(va[0], va[1], va[2]);
+    ta.setMargin(0);
+    for (unsigned j = 0; j < b->face_count; ++j) {
+      const btVector3 vb[3] = {placed(*b, *pose_b, j, 0), placed(*b, *pose_b, j, 1), placed(*b, *pose_b, j, 2)};
+      btTriangleShape tb(vb[0], vb[1], vb[2]);
+      tb.setMargin(0);
+      double d = 0;
+      cc_vec3 pa{}, pb{};
+      if (gjk_distance(ta, identity, tb, identity, &d, &pa, &pb) != 1) return 0;
+      btVector3 at;
+      if (d <= 0 && meeting_point(va, vb, at)) pa = pb = {at.x(), at.y(), at.z()};
+      d = std::max(d, 0.0);
+      if (!any || d < *distance) *distance = d, *on_a = pa, *on_b = pb, any = true;
+    }
+  }
+  return any ? 1 : 0;
+}
+
 // Bullet's dynamic AABB trees (its broad phase), driven as a collision world drives them: a proxy created
 // when a box appears, its AABB set every frame, destroyed when the box goes; each frame's
 // candidates kept where the boxes overlap (as a narrow phase's first step).

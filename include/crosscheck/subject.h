@@ -111,6 +111,11 @@ int crosscheck_sphere_obb_distance(const cc_sphere* ball, const cc_obb* box, dou
 int crosscheck_obb_obb_distance(const cc_obb* a, const cc_obb* b, double* distance, cc_vec3* on_a, cc_vec3* on_b);
 int crosscheck_tri_obb_distance(const cc_triangle* tri, const cc_obb* box, double* distance, cc_vec3* on_a,
                                 cc_vec3* on_b);
+/* The distance between the surfaces of the two placed meshes (0 where they touch or cross) and a
+ * closest pair of points, on_a on a's faces and on_b on b's, in the world. Returns 1 when it wrote
+ * them. */
+int crosscheck_mesh_mesh_distance(const cc_mesh* a, const cc_pose* pose_a, const cc_mesh* b, const cc_pose* pose_b,
+                                  double* distance, cc_vec3* on_a, cc_vec3* on_b);
 /* How far the subject's distances and points may be from the exact ones, relative to the largest
  * absolute coordinate, radius or half extent of a case's shapes (e.g. 1e-12): an answer is right
  * when its distance and each point lie within this of the exact ones. At least 0, below 1. */

@@ -14,6 +14,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "collide/rigid_transform.h"
 #include "harness/model/fields.h"
 #include "harness/model/kind_pieces.h"
 
@@ -121,12 +122,17 @@ concept TwoPlacedMeshes = requires(const In& in) {
 };
 
 template <class In>
+concept TwoPlacedMeshesApart = requires(const In& in) {
+  { in.meshes } -> std::convertible_to<const MeshPair&>;
+} && !TwoPlacedMeshes<In>;
+
+template <class In>
 concept BoxFramesOnly = requires(const In& in) {
   { in.frames } -> std::convertible_to<const BoxFrames&>;
 };
 
 template <class In>
-constexpr bool has_own_signature = RayAndMesh<In> || TwoPlacedMeshes<In> || BoxFramesOnly<In>;
+constexpr bool has_own_signature = RayAndMesh<In> || TwoPlacedMeshes<In> || TwoPlacedMeshesApart<In> || BoxFramesOnly<In>;
 
 cc_mesh to_c(const MeshRef& ref) {
   if (ref.mesh == nullptr) throw std::runtime_error("a case without its mesh");
@@ -195,8 +201,31 @@ Answer ask_box_frames(void* function, const BoxFrames& frames, QueryKind kind) {
   return answer;
 }
 
+// Two placed meshes asked for their distance: as a distance kind's answer, with the subject's
+// tolerance of the placed vertices' largest coordinate as the bounds.
+Answer ask_mesh_distance(void* function, const MeshPair& m, QueryKind kind, double tolerance) {
+  const cc_mesh a = to_c(m.a), b = to_c(m.b);
+  const cc_pose pose_a = to_c(m.pose_a), pose_b = to_c(m.pose_b);
+  double distance = 0;
+  cc_vec3 on_a{}, on_b{};
+  using Fn = int (*)(const cc_mesh*, const cc_pose*, const cc_mesh*, const cc_pose*, double*, cc_vec3*, cc_vec3*);
+  const int said = reinterpret_cast<Fn>(function)(&a, &pose_a, &b, &pose_b, &distance, &on_a, &on_b);
+  if (said != 1) {
+    throw std::runtime_error("the subject's crosscheck_" + std::string(name(kind)) + " returned " + std::to_string(said) +
+                             ", not 1 (a distance and two points)");
+  }
+  double scale = 0;
+  for (const auto& [mesh, pose] : {std::pair{m.a.mesh, m.pose_a}, std::pair{m.b.mesh, m.pose_b}}) {
+    for (const Vec3& p : mesh->vertices) scale = std::max(scale, max_abs(cc::apply(pose, p)));
+  }
+  const double bound = tolerance * (scale > 0 ? scale : 1);
+  Answer answer = Answer::of(distance <= 0);
+  answer.params = {distance, on_a.x, on_a.y, on_a.z, on_b.x, on_b.y, on_b.z, bound, bound};
+  return answer;
+}
+
 template <class In>
-Answer ask_own_signature(void* function, const In& in, QueryKind kind) {
+Answer ask_own_signature(void* function, const In& in, QueryKind kind, double distance_tolerance) {
   if constexpr (BoxFramesOnly<In>) {
     return ask_box_frames(function, in.frames, kind);
   } else if constexpr (RayAndMesh<In>) {
@@ -212,6 +241,8 @@ Answer ask_own_signature(void* function, const In& in, QueryKind kind) {
     }
     a.pairs = {{face, 0}};
     return a;
+  } else if constexpr (TwoPlacedMeshesApart<In>) {
+    return ask_mesh_distance(function, in.meshes, kind, distance_tolerance);
   } else {
     const MeshPair& m = in.meshes;
     const cc_mesh a = to_c(m.a), b = to_c(m.b);
@@ -306,7 +337,7 @@ Answer SubjectBinding::ask(const Input& input) const {
   return std::visit(
       [this, function, kind]<class In>(const In& in) -> Answer {
         if constexpr (has_own_signature<In>) {
-          return ask_own_signature(function, in, kind);
+          return ask_own_signature(function, in, kind, distance_tolerance_);
         } else if constexpr (expressible<In>()) {
           if (pieces_of(kind).judged == Judged::distance) {
             if constexpr (has_magnitudes<In>()) return ask_distance(function, in, kind, distance_tolerance_);

@@ -76,7 +76,7 @@ TEST(SubjectProcess, TheBulletExampleAnswersTheKindsItExportsAndIsNamedByItsHash
                          QueryKind::tri_aabb, QueryKind::tri_obb, QueryKind::moving_obb, QueryKind::ray_mesh,
                          QueryKind::mesh_mesh, QueryKind::mesh_mesh_first, QueryKind::broadphase,
                          QueryKind::tri_tri_distance, QueryKind::sphere_sphere_distance, QueryKind::sphere_obb_distance,
-                         QueryKind::obb_obb_distance, QueryKind::tri_obb_distance}) {
+                         QueryKind::obb_obb_distance, QueryKind::tri_obb_distance, QueryKind::mesh_mesh_distance}) {
     EXPECT_TRUE(bullet->answers(kind)) << name(kind);
   }
   for (QueryKind kind : {QueryKind::tri_tri, QueryKind::kdop_kdop, QueryKind::disc_walls}) {
@@ -85,7 +85,7 @@ TEST(SubjectProcess, TheBulletExampleAnswersTheKindsItExportsAndIsNamedByItsHash
   EXPECT_EQ(bullet->identity().file, "libcrosscheck_bullet_subject.so");
   EXPECT_EQ(bullet->identity().version, 1);
   EXPECT_EQ(bullet->identity().sha256.size(), 64u);
-  EXPECT_EQ(bullet->identity().kinds.size(), 16u);
+  EXPECT_EQ(bullet->identity().kinds.size(), 17u);
   EXPECT_TRUE(bullet->ask(kTouching).hit);
   EXPECT_FALSE(bullet->ask(AabbAabbInput{kUnit, {{1.5, 0, 0}, {2, 1, 1}}}).hit);
   EXPECT_TRUE(bullet->ask(SphereSphereInput{{{0, 0, 0}, 1}, {{1.5, 0, 0}, 1}}).hit);
@@ -144,6 +144,15 @@ TEST(SubjectProcess, TheMeshKindsHandTheMeshesOverAndNameTheFaces) {
   EXPECT_EQ(bullet->ask(MeshMeshFirstInput{pair}).pairs, (std::vector<FacePair>{{0, 0}}));
   pair.pose_b.translation = {0, 0, 5};
   EXPECT_FALSE(bullet->ask(MeshMeshInput{pair}).hit);
+  // Their distance: the stick's lowest point (1, 1, 6.5) is 4.5 above face 0.
+  const Answer apart = bullet->ask(MeshMeshDistanceInput{pair});
+  EXPECT_FALSE(apart.hit);
+  ASSERT_EQ(apart.params.size(), 9u);
+  EXPECT_NEAR(apart.params[0], 4.5, 1e-9);
+  EXPECT_NEAR(apart.params[3], 2, 1e-9);    // on face 0 (z = 2)
+  EXPECT_NEAR(apart.params[6], 6.5, 1e-9);  // the stick's lowest vertex
+  pair.pose_b.translation = {0, 0, 0};
+  EXPECT_TRUE(bullet->ask(MeshMeshDistanceInput{pair}).hit);  // through face 0: 0 apart
   // A stick through face 1 alone: the pair names each mesh's own face, the other way round when
   // the meshes (of two faces and of one) change sides, so meshes handed over swapped would show.
   Mesh low;
