@@ -74,6 +74,15 @@ constexpr bool has_magnitudes() {
   return std::apply([](const auto&... f) { return (requires { magnitude(to_c(f.of(In{}))); } && ...); }, Fields<In>::list);
 }
 
+// A distance kind's answer: the signed distance and both points, each within the subject's
+// tolerance of the case's scale (its largest magnitude; 1 when all are 0).
+Answer distance_answer(double distance, const cc_vec3& on_a, const cc_vec3& on_b, double tolerance, double scale) {
+  const double bound = tolerance * (scale > 0 ? scale : 1);
+  Answer answer = Answer::of(distance <= 0);
+  answer.params = {distance, on_a.x, on_a.y, on_a.z, on_b.x, on_b.y, on_b.z, bound, bound};
+  return answer;
+}
+
 // A distance kind: the signed distance and both points, with the subject's tolerance of the scale
 // as the bounds of both.
 template <class In>
@@ -97,10 +106,7 @@ Answer ask_distance(void* function, const In& in, QueryKind kind, double toleran
     throw std::runtime_error("the subject's crosscheck_" + std::string(name(kind)) + " returned " + std::to_string(said) +
                              ", not 1 (a distance and two points)");
   }
-  const double bound = tolerance * (scale > 0 ? scale : 1);
-  Answer answer = Answer::of(distance <= 0);
-  answer.params = {distance, on_a.x, on_a.y, on_a.z, on_b.x, on_b.y, on_b.z, bound, bound};
-  return answer;
+  return distance_answer(distance, on_a, on_b, tolerance, scale);
 }
 
 // The kinds of a mesh or of many boxes, found by their inputs as the others are: a ray and a
@@ -218,10 +224,7 @@ Answer ask_mesh_distance(void* function, const MeshPair& m, QueryKind kind, doub
   for (const auto& [mesh, pose] : {std::pair{m.a.mesh, m.pose_a}, std::pair{m.b.mesh, m.pose_b}}) {
     for (const Vec3& p : mesh->vertices) scale = std::max(scale, max_abs(cc::apply(pose, p)));
   }
-  const double bound = tolerance * (scale > 0 ? scale : 1);
-  Answer answer = Answer::of(distance <= 0);
-  answer.params = {distance, on_a.x, on_a.y, on_a.z, on_b.x, on_b.y, on_b.z, bound, bound};
-  return answer;
+  return distance_answer(distance, on_a, on_b, tolerance, scale);
 }
 
 template <class In>
