@@ -5,6 +5,7 @@
 
 #include <limits>
 
+#include "collide/fp.h"
 #include "collide/length.h"
 #include "collide/vec3.h"
 
@@ -22,6 +23,17 @@ struct NearestPair {
     const Vec3 v = scaled(q - p, exponent);
     const double sq = dot(v, v);
     if (sq < square) on_a = p, on_b = q, square = sq;
+  }
+
+  /// Whether features whose squared gap (scaled the same way) is `square_gap` may hold a pair
+  /// nearer than this one, up to rounding. For pruning only.
+  bool may_improve_on(double square_gap) const { return square_gap <= square * (1 + 0x1p-20); }
+
+  /// Whether `gap`, a certified lower bound on the distance (unscaled), shows this pair nearest to
+  /// within 2^-40 of its distance: then no other candidate need be tried.
+  bool proven_by(double gap) const {
+    const double g = fp::scale2(gap, -exponent);
+    return g * g >= square * (1 - 0x1p-40);
   }
 };
 

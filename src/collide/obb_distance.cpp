@@ -124,8 +124,7 @@ NearestPair nearest_features(const Obb& a, const Obb& b, const Vec3& d, const bo
     best.keep_nearer(clamped_into(a, lb[i]), cb[i]);
   }
   gap = gap_along(a, b, d, best, bound);
-  const double scaled_gap = fp::scale2(gap, -exponent);
-  if (scaled_gap * scaled_gap >= best.square * (1 - 0x1p-40)) return best;
+  if (best.proven_by(gap)) return best;
   // Edge k of a box joins corner i (bit k clear) and i | 1 << k. Each edge's extent in the other
   // box's frame; those no farther from the other box than the best pair, paired where each
   // reaches beyond the other's faces (reaches_beyond, box_features.h).
@@ -135,15 +134,14 @@ NearestPair nearest_features(const Obb& a, const Obb& b, const Vec3& d, const bo
   };
   std::array<Edge, 12> ea, eb;
   int na = 0, nb = 0;
-  const double keep_below = best.square * (1 + 0x1p-20);
   const Extent whole_a{-a.half, a.half}, whole_b{-b.half, b.half};
   for (int k = 0; k < 3; ++k) {
     for (int i = 0; i < 8; ++i) {
       if (i >> k & 1) continue;
       const int j = i | 1 << k;
       const Extent in_b = extent_of(la[i], la[j]), in_a = extent_of(lb[i], lb[j]);
-      if (square_gap(in_b, whole_b, exponent) <= keep_below) ea[na++] = {k, i, j, in_b};
-      if (square_gap(in_a, whole_a, exponent) <= keep_below) eb[nb++] = {k, i, j, in_a};
+      if (best.may_improve_on(square_gap(in_b, whole_b, exponent))) ea[na++] = {k, i, j, in_b};
+      if (best.may_improve_on(square_gap(in_a, whole_a, exponent))) eb[nb++] = {k, i, j, in_a};
     }
   }
   const double margin = 0x1p-30 * bound.size;

@@ -109,9 +109,9 @@ Separation depth(const Triangle& t, const Relative& w, const Obb& box, const Axe
   const DepthAxis& least = axes.axis[axes.least];
   Vec3 n = length_and_direction(unit_scaled(least.n)).direction;
   const Interval along = projection(w, n);
-  const double r = radius_along(box, n);
-  if (along.hi + r > r - along.lo) n = -n;  // the box is pushed along +n
-  const Interval pushed = projection(w, n);
+  const bool flip = along.hi > -along.lo;  // the box is pushed along +n, away from the triangle
+  if (flip) n = -n;
+  const double farthest = flip ? -along.lo : along.hi;  // the triangle's, along the new n
   const double m = least.depth;
   const Vec3 shift = m * n;
   const double tolerance = 16 * fp::u + least.angle_error;
@@ -119,7 +119,7 @@ Separation depth(const Triangle& t, const Relative& w, const Obb& box, const Axe
   Triangle on_t = t;
   int kept = 0;
   for (int k = 0; k < 3; ++k) {
-    if (pushed.hi - dot(w[k], n) <= tolerance * bound.size) on_t.v[kept++] = t.v[k];
+    if (farthest - dot(w[k], n) <= tolerance * bound.size) on_t.v[kept++] = t.v[k];
   }
   for (int k = kept; k < 3; ++k) on_t.v[k] = on_t.v[k - 1];
   Triangle on_box[2];
@@ -174,24 +174,23 @@ NearestPair nearest_features(const Triangle& t, const Relative& w, const Obb& bo
     const Vec3& c = corner[i];
     if (normal_square > 0) {
       const double height = fp::scale2(dot(c - t.v[0], normal), -exponent);
-      if (height * height > best.square * normal_square * (1 + 0x1p-20)) continue;
+      if (!best.may_improve_on(height * height / normal_square)) continue;
     }
     Vec3 foot;
     if (foot_in_triangle(c, t, foot)) best.keep_nearer(foot, c);
   }
   gap = gap_along(w, box, best, bound);
-  const double scaled_gap = fp::scale2(gap, -exponent);
-  if (scaled_gap * scaled_gap >= best.square * (1 - 0x1p-40)) return best;
+  if (best.proven_by(gap)) return best;
   // Box edge j from corner i (bit j clear) to i | 1 << j.
   for (int e = 0; e < 3; ++e) {
     const Extent on_edge = extent_of(local[e], local[(e + 1) % 3]);
-    if (!(square_gap(on_edge, {-box.half, box.half}, exponent) <= best.square * (1 + 0x1p-20))) continue;
+    if (!best.may_improve_on(square_gap(on_edge, {-box.half, box.half}, exponent))) continue;
     const Segment edge{t.v[e], t.v[(e + 1) % 3]};
     for (int j = 0; j < 3; ++j) {
       for (int i = 0; i < 8; ++i) {
         if (i >> j & 1) continue;
         if (!reaches_beyond(box, on_edge, i, j, margin)) continue;
-        if (!(square_gap(on_edge, edge_extent(box, j, i), exponent) <= best.square * (1 + 0x1p-20))) continue;
+        if (!best.may_improve_on(square_gap(on_edge, edge_extent(box, j, i), exponent))) continue;
         const Segment sb{corner[i], corner[i | 1 << j]};
         const auto [s, u] = closest_segment_parameters(edge, sb);
         best.keep_nearer(edge.a + s * (edge.b - edge.a), sb.a + u * (sb.b - sb.a));

@@ -12,6 +12,7 @@
 
 #include <cmath>
 #include <map>
+#include <optional>
 #include <string>
 
 #include "oracle/exact/distance_check.h"
@@ -129,6 +130,24 @@ void touching_on_a_grid(test::Random& r, double s, Triangle& t, Obb& box) {
   for (int i = 1; i < 3; ++i) t.v[i][k] = std::max(t.v[i][k], p[k]);
 }
 
+// The library's answer for t against the box, the exact signed distance, and what is wrong with
+// the answer judged against it (distance_check.h): nothing when it holds.
+struct Judged {
+  Separation answer;
+  exact::ExactSignedDistance exact;
+  std::optional<std::string> wrong;
+};
+Judged judged(const Triangle& t, const Obb& box) {
+  Judged j{distance_triangle_obb(t, box), {}, {}};
+  const auto ct = exact::triangle_corners(t);
+  const auto cb = exact::box_corners(box);
+  j.exact = exact::exact_polytope_distance(ct, cb);
+  const Separation& s = j.answer;
+  const harness::DistanceClaim claim{s.distance, true, s.on_a, s.on_b, s.distance_error, s.point_error};
+  j.wrong = exact::distance_check(j.exact, exact::boundary_of(t), exact::boundary_of(box))(claim);
+  return j;
+}
+
 TEST(DistanceTriangleObbExact, WithinItsBounds) {
   test::Random r(2026);
   std::map<std::string, int> met;
@@ -149,13 +168,7 @@ TEST(DistanceTriangleObbExact, WithinItsBounds) {
       const double size = std::max({box.half.x, box.half.y, box.half.z, s});
       t = r.below(3) == 0 ? near(r, box, size, how) : against_a_face(r, box, size, how);
     }
-    const Separation sep = distance_triangle_obb(t, box);
-    const auto ct = exact::triangle_corners(t);
-    const auto cb = exact::box_corners(box);
-    const exact::ExactSignedDistance e = exact::exact_polytope_distance(ct, cb);
-    const auto check = exact::distance_check(e, exact::boundary_of(t), exact::boundary_of(box));
-    const harness::DistanceClaim claim{sep.distance, true, sep.on_a, sep.on_b, sep.distance_error, sep.point_error};
-    const auto wrong = check(claim);
+    const auto [sep, e, wrong] = judged(t, box);
     ASSERT_FALSE(wrong) << *wrong << " (case " << i << ":" << how << ", distance " << sep.distance << ", error "
                         << sep.distance_error << ", points " << sep.point_error << ")";
     const double exact = exact::rounded_down(e);
@@ -196,12 +209,7 @@ TEST(DistanceTriangleObbExact, ANeedleAlongABoxEdge) {
       const double w = std::ldexp(1.0, -k);
       const Vec3 base = place * Vec3{-3, 0.25, 0.5 - depth};
       const Triangle t{{base, base + place * Vec3{6, w, w}, base + place * Vec3{3, -w, 2 * w}}};
-      const Separation sep = distance_triangle_obb(t, box);
-      const auto ct = exact::triangle_corners(t);
-      const auto cb = exact::box_corners(box);
-      const exact::ExactSignedDistance e = exact::exact_polytope_distance(ct, cb);
-      const harness::DistanceClaim claim{sep.distance, true, sep.on_a, sep.on_b, sep.distance_error, sep.point_error};
-      const auto wrong = exact::distance_check(e, exact::boundary_of(t), exact::boundary_of(box))(claim);
+      const auto [sep, e, wrong] = judged(t, box);
       ASSERT_FALSE(wrong) << *wrong << " (2^-" << k << ", depth " << depth << ")";
       checked += e.sign < 0;
     }
@@ -227,13 +235,8 @@ TEST(DistanceTriangleObbExact, AnEdgeNearlyParallelToABoxEdgeMeetingItAtTheBevel
       const double delta = delta_in_thetas * theta;
       const Vec3 through{1 - delta, 1 - delta, 0}, along{-h * theta, h * theta, 1};
       const Triangle t{{place * (through + along), place * (through - along), place * Vec3{3, 3, 0}}};
-      const Separation sep = distance_triangle_obb(t, box);
-      const auto ct = exact::triangle_corners(t);
-      const auto cb = exact::box_corners(box);
-      const exact::ExactSignedDistance e = exact::exact_polytope_distance(ct, cb);
+      const auto [sep, e, wrong] = judged(t, box);
       ASSERT_LT(e.sign, 0);
-      const harness::DistanceClaim claim{sep.distance, true, sep.on_a, sep.on_b, sep.distance_error, sep.point_error};
-      const auto wrong = exact::distance_check(e, exact::boundary_of(t), exact::boundary_of(box))(claim);
       ASSERT_FALSE(wrong) << *wrong << " (theta 2^" << theta_exponent << ", delta " << delta_in_thetas << " theta)";
       const exact::Rational face = exact::rational(delta + theta * h);
       if (e.squared < face * face * exact::Rational(99, 100)) ++bevel_deepest;
@@ -253,12 +256,7 @@ TEST(DistanceTriangleObbExact, AxesLeaningByTheToleranceCountTheirLean) {
   int checked = 0;
   for (const double delta : {0x1p-30, 0.01, 0.25}) {
     const Triangle t{{Vec3{1 - delta, -999.5, 0}, Vec3{3, -999, 0.5}, Vec3{2.5, -999.75, -0.5}}};
-    const Separation sep = distance_triangle_obb(t, box);
-    const auto ct = exact::triangle_corners(t);
-    const auto cb = exact::box_corners(box);
-    const exact::ExactSignedDistance e = exact::exact_polytope_distance(ct, cb);
-    const harness::DistanceClaim claim{sep.distance, true, sep.on_a, sep.on_b, sep.distance_error, sep.point_error};
-    const auto wrong = exact::distance_check(e, exact::boundary_of(t), exact::boundary_of(box))(claim);
+    const auto [sep, e, wrong] = judged(t, box);
     ASSERT_FALSE(wrong) << *wrong << " (delta " << delta << ")";
     checked += e.sign < 0;
   }
