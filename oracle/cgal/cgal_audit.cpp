@@ -94,13 +94,16 @@ Cuboid cuboid(const Aabb& box) {
 
 /// A triangle; collinear vertices span the segment between the two extreme ones (the
 /// lexicographic order of points on a line is their order along it).
+Piece triangle_piece(const std::array<Point, 3>& p) {
+  if (!CGAL::collinear(p[0], p[1], p[2])) return Triangle3(p[0], p[1], p[2]);
+  const auto [lo, hi] = std::minmax_element(p.begin(), p.end());
+  if (*lo == *hi) return *lo;
+  return Segment(*lo, *hi);
+}
+
 Pieces pieces(const Triangle& t) {
   require_finite({t.v[0], t.v[1], t.v[2]});
-  const std::array<Point, 3> p = {point(t.v[0]), point(t.v[1]), point(t.v[2])};
-  if (!CGAL::collinear(p[0], p[1], p[2])) return {Triangle3(p[0], p[1], p[2])};
-  const auto [lo, hi] = std::minmax_element(p.begin(), p.end());
-  if (*lo == *hi) return {*lo};
-  return {Segment(*lo, *hi)};
+  return {triangle_piece({point(t.v[0]), point(t.v[1]), point(t.v[2])})};
 }
 
 /// The parallelepiped { center + sum u_i half_i axes.col[i] : |u_i| <= 1 }.
@@ -523,6 +526,101 @@ CgalAnswer cgal_answer(const Ray& ray, const harness::MeshRef& mesh_ref, const h
   answer.hit = !faces.empty();
   answer.faces = std::move(faces);
   if (answer.hit) answer.first_t = origin_alone ? Bracket{ray.tmin, ray.tmin} : bracket(*first);
+  return answer;
+}
+
+namespace {
+
+/// A mesh's faces, each vertex placed exactly by the pose, as pieces, with boxes holding them.
+struct PlacedFaces {
+  std::vector<Piece> faces;
+  std::vector<CGAL::Bbox_3> boxes;
+};
+
+PlacedFaces placed_faces(const harness::MeshRef& ref, const RigidTransform& pose) {
+  require(ref.mesh != nullptr, "no mesh");
+  const Mesh& mesh = *ref.mesh;
+  require(!mesh_problem(mesh), "invalid mesh");
+  require(finite(pose.rotation) && finite(pose.translation), "a pose has a NaN or infinite entry");
+  std::vector<Point> vertices;
+  for (const Vec3& v : mesh.vertices) {
+    require_finite({v});
+    FT c[3];
+    for (int i = 0; i < 3; ++i) {
+      const Vec3 r = pose.rotation.row(i);
+      c[i] = FT(r.x) * FT(v.x) + FT(r.y) * FT(v.y) + FT(r.z) * FT(v.z) + FT(pose.translation[i]);
+    }
+    vertices.emplace_back(c[0], c[1], c[2]);
+  }
+  PlacedFaces out;
+  for (std::size_t f = 0; f < mesh.size(); ++f) {
+    const std::array<Point, 3> p = {vertices[mesh.faces[f][0]], vertices[mesh.faces[f][1]], vertices[mesh.faces[f][2]]};
+    out.faces.push_back(triangle_piece(p));
+    out.boxes.push_back(p[0].bbox() + p[1].bbox() + p[2].bbox());
+  }
+  return out;
+}
+
+/// A lower bound on the squared distance between the points of two boxes: the gaps along the
+/// axes squared and summed in doubles (each step within an ulp, 5 ulps in all), less 2^-49 of it.
+double squared_gap_down(const CGAL::Bbox_3& a, const CGAL::Bbox_3& b) {
+  double sum = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double gap = std::max({0.0, b.min(k) - a.max(k), a.min(k) - b.max(k)});
+    sum += gap * gap;
+  }
+  return sum * (1 - 0x1p-49);
+}
+
+bool boxes_meet(const CGAL::Bbox_3& a, const CGAL::Bbox_3& b) {
+  for (int k = 0; k < 3; ++k) {
+    if (a.max(k) < b.min(k) || b.max(k) < a.min(k)) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+CgalAnswer cgal_answer(const harness::MeshPair& meshes) {
+  const PlacedFaces a = placed_faces(meshes.a, meshes.pose_a), b = placed_faces(meshes.b, meshes.pose_b);
+  std::vector<harness::FacePair> met;
+  for (std::uint32_t i = 0; i < a.faces.size(); ++i) {
+    for (std::uint32_t j = 0; j < b.faces.size(); ++j) {
+      if (!boxes_meet(a.boxes[i], b.boxes[j])) continue;
+      if (std::visit([](const auto& x, const auto& y) { return meet(x, y); }, a.faces[i], b.faces[j])) met.emplace_back(i, j);
+    }
+  }
+  CgalAnswer answer = hit_or_miss(!met.empty());
+  answer.pairs = std::move(met);
+  if (a.faces.empty() || b.faces.empty()) return answer;
+  const auto to_double = [](const FT& t) { return CGAL::to_double(CGAL::exact(t)); };
+  if (answer.hit) {
+    answer.distance_down = 0;
+    return answer;
+  }
+  // Apart: every pair in the order of its boxes' gap, until the gap exceeds the least distance.
+  struct Candidate {
+    double gap_down;
+    std::uint32_t i, j;
+  };
+  std::vector<Candidate> order;
+  order.reserve(a.faces.size() * b.faces.size());
+  for (std::uint32_t i = 0; i < a.faces.size(); ++i) {
+    for (std::uint32_t j = 0; j < b.faces.size(); ++j) order.push_back({squared_gap_down(a.boxes[i], b.boxes[j]), i, j});
+  }
+  std::sort(order.begin(), order.end(), [](const Candidate& x, const Candidate& y) { return x.gap_down < y.gap_down; });
+  std::optional<FT> least;
+  double least_up = INFINITY;  // a double >= *least
+  for (const Candidate& c : order) {
+    if (c.gap_down > least_up) break;
+    const FT d = std::visit([](const auto& x, const auto& y) { return squared_distance_between(x, y); }, a.faces[c.i],
+                            b.faces[c.j]);
+    if (!least || d < *least) {
+      least = d;
+      least_up = CGAL::to_interval(d).second;
+    }
+  }
+  answer.distance_down = exact::root_down(*least, to_double);
   return answer;
 }
 

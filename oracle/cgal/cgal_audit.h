@@ -22,6 +22,7 @@
 #include "collide/ray.h"
 #include "collide/sphere.h"
 #include "collide/triangle.h"
+#include "harness/model/answer.h"
 #include "harness/model/mesh_query.h"
 
 namespace cc::cgal {
@@ -45,6 +46,8 @@ struct CgalAnswer {
   /// A ray against a mesh: the faces the ray meets, ascending; a disc against walls: the walls
   /// it touches, ascending.
   std::optional<std::vector<std::uint32_t>> faces;
+  /// Two meshes: the pairs of faces (face of a, face of b) that meet, ascending.
+  std::optional<std::vector<harness::FacePair>> pairs;
   /// A ray against a mesh, a hit: the first parameter t at which the ray meets the mesh (exact in FT, then
   /// bracketed).
   std::optional<Bracket> first_t;
@@ -102,6 +105,14 @@ CgalAnswer cgal_answer(int k, const std::vector<Vec3>& a, const std::vector<Vec3
 /// the origin alone, t = tmin (which may be -inf). The mesh must be valid (mesh_problem). The
 /// hierarchy the library is asked to use does not change the answer.
 CgalAnswer cgal_answer(const Ray& ray, const harness::MeshRef& mesh, const harness::LibraryBvh& library);
+/// Two meshes, each vertex placed exactly by its pose (rotation p + translation in FT), each face
+/// its pieces as a triangle above: the pairs of faces that meet, tried where their boxes (the
+/// intervals CGAL holds the placed vertices in) meet; a hit iff any does; their distance, 0 where
+/// they meet, else the least squared_distance over all pairs of faces, taken in the order of a
+/// lower bound (their boxes' gap, rounded down) and stopped where it exceeds the least found;
+/// rounded down. The meshes must be valid (mesh_problem). The hierarchy the library is asked to
+/// use does not change the answer.
+CgalAnswer cgal_answer(const harness::MeshPair& meshes);
 /// The disc against each wall in the plane: the squared distance from its centre (Point_2) to
 /// the wall (Segment_2, or Point_2 when its ends are equal) against the squared radius; the walls
 /// touched in `faces`. A wall with a NaN or infinite end is never touched (the kind's contract).

@@ -85,6 +85,23 @@ std::string face_differences(const harness::ExactVerdict& exact, const CgalAnswe
          harness::format_double(exact_upper) + "): " + cgal_t;
 }
 
+std::string pairs_text(const std::vector<harness::FacePair>& pairs) {
+  std::string text = "{";
+  for (std::size_t i = 0; i < pairs.size(); ++i) {
+    text += (i > 0 ? ", (" : "(") + std::to_string(pairs[i].first) + ", " + std::to_string(pairs[i].second) + ")";
+  }
+  return text + "}";
+}
+
+// Where CGAL gives the pairs of faces of two meshes that meet: those, every one.
+std::string pair_differences(const harness::ExactVerdict& exact, const CgalAnswer& cgal) {
+  if (!cgal.pairs) return {};
+  std::vector<harness::FacePair> exact_pairs = exact.answer.pairs;
+  std::sort(exact_pairs.begin(), exact_pairs.end());
+  if (exact_pairs == *cgal.pairs) return {};
+  return "exact reference's pairs that meet " + pairs_text(exact_pairs) + " differ from CGAL's " + pairs_text(*cgal.pairs);
+}
+
 // Where CGAL gives a distance (Judged::distance): the exact reference's, rounded down, is CGAL's
 // rounded down.
 std::string distance_differences(const harness::ExactVerdict& exact, const CgalAnswer& cgal) {
@@ -188,6 +205,9 @@ Audit audit_case(const harness::Input& input, const harness::ExactReference& exa
         [&a](const auto& in) { return with_fields(in, [&a](const auto&... fields) { return slab_differences(a.cgal, fields...); }); },
         input);
     if (a.why.empty()) a.why = face_differences(a.exact, a.cgal);
+    if (a.why.empty() && harness::judged_of(harness::kind_of(input)) != harness::Judged::distance) {
+      a.why = pair_differences(a.exact, a.cgal);
+    }
     if (a.why.empty() && harness::judged_of(harness::kind_of(input)) == harness::Judged::corners) {
       a.why = corner_differences(a.exact, a.cgal);
     }

@@ -1,6 +1,7 @@
 // The audit of the exact reference by CGAL: one case answered by both and compared. CGAL
 // answers every kind whose input's fields, in their order, a cgal_answer of cgal_audit.h takes
-// (two shapes it expresses, a k with two point sets, a ray with a mesh, a disc with walls).
+// (two shapes it expresses, a k with two point sets, a ray with a mesh, two placed meshes, a disc
+// with walls).
 #pragma once
 
 #include <optional>
@@ -15,7 +16,7 @@ namespace cc::cgal {
 enum class AuditOutcome {
   agree,            // CGAL gives the exact reference's answer and, where it computes them, the sign of
                     // its margin, of every k-DOP slab's overlap (exact_kdop_slabs), a disc's walls
-                    // touched, a ray's faces hit and its first t (the reference's t one of the two
+                    // touched, two meshes' pairs of faces that meet, a ray's faces hit and its first t (the reference's t one of the two
                     // doubles around CGAL's, the upper end of its range the smallest double >= CGAL's)
   disagree,         // it does not: one of the two is wrong (class exact_defect)
   out_of_contract,  // the inputs are outside the library's contract: not compared

@@ -2,7 +2,8 @@
 // and degenerate shapes, and the line in a face's plane that CGAL 5.5's Line_3 test gets wrong;
 // signed distances of balls, a ball's centre in each tetrahedron of a box (CGAL 5.5 measures a
 // point's distance to a tetrahedron rightly only when it is positively oriented);
-// k-DOP slabs one by one; the first point of a ray on a mesh, exact to the double around it.
+// k-DOP slabs one by one; the first point of a ray on a mesh, exact to the double around it; the
+// faces of two placed meshes that meet and their distance.
 #include "oracle/cgal/cgal_audit.h"
 
 #include <gtest/gtest.h>
@@ -354,6 +355,80 @@ TEST(CgalRayMesh, ATinyDirectionGivesAFirstTFarOut) {
   EXPECT_EQ(beyond.first_t->up, kInf);
 }
 
+// The square [0, 2] x [0, 2] in the plane z = 0 as two triangles (face 0 below the diagonal,
+// face 1 above it), and a degenerate face 2: the segment from (3, 0, 0) to (5, 0, 0).
+harness::MeshRef square_and_segment() {
+  Mesh mesh;
+  mesh.vertices = {{0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}, {3, 0, 0}, {5, 0, 0}, {4, 0, 0}};
+  mesh.faces = {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}};
+  return harness::triangles_mesh(mesh);
+}
+
+// The square mesh as a, and as b placed by a rotation and a translation.
+harness::MeshPair squares(const Mat3& rotation, const Vec3& translation) {
+  return {square_and_segment(), square_and_segment(), {Mat3::identity(), {0, 0, 0}}, {rotation, translation}, {}};
+}
+
+using Pairs = std::vector<harness::FacePair>;
+
+TEST(CgalMeshes, ParallelSquaresApartAreAsFarAsTheirPlanes) {
+  const CgalAnswer a = cgal_answer(squares(Mat3::identity(), {0.25, 0.5, 0.75}));
+  EXPECT_FALSE(a.hit);
+  EXPECT_EQ(a.pairs, Pairs{});
+  EXPECT_EQ(a.distance_down, 0.75);
+  // One ulp above the plane: apart, and the distance rounds down to that ulp.
+  const double ulp = 0x1p-1074;
+  const CgalAnswer b = cgal_answer(squares(Mat3::identity(), {0.25, 0.5, ulp}));
+  EXPECT_FALSE(b.hit);
+  EXPECT_EQ(b.distance_down, ulp);
+}
+
+TEST(CgalMeshes, TouchingAndCrossingFacesAreListedAndAtZero) {
+  // Moved up by 2: b's square [0, 2] x [2, 4] meets a's along the edge y = 2: a's face 1 holds
+  // it whole and face 0 its end (2, 2); b's face 0 holds it whole and face 1 its end (0, 2). a's
+  // face 0 (y <= x) and b's face 1 (y >= x + 2) do not meet, nor do the segments.
+  const CgalAnswer shared_edge = cgal_answer(squares(Mat3::identity(), {0, 2, 0}));
+  EXPECT_TRUE(shared_edge.hit);
+  EXPECT_EQ(shared_edge.pairs, (Pairs{{0, 0}, {1, 0}, {1, 1}}));
+  EXPECT_EQ(shared_edge.distance_down, 0);
+  // Stood up across a's square (x -> x, y -> z, about (0, 1, -1)): b's square is x in [0, 2],
+  // y = 1, z in [-1, 1], crossing a's plane along y = 1. a's face 0 holds x in [1, 2] of that
+  // line, face 1 x in [0, 1]; b's face 0 (z <= x - 1) crosses it for x in [1, 2], face 1 for
+  // x in [0, 1]: every pair meets, the two across at the point (1, 1, 0) alone.
+  const Mat3 stand = Mat3::from_columns({1, 0, 0}, {0, 0, 1}, {0, -1, 0});
+  const CgalAnswer crossing = cgal_answer(squares(stand, {0, 1, -1}));
+  EXPECT_TRUE(crossing.hit);
+  EXPECT_EQ(crossing.pairs, (Pairs{{0, 0}, {0, 1}, {1, 0}, {1, 1}}));
+  EXPECT_EQ(crossing.distance_down, 0);
+}
+
+TEST(CgalMeshes, ADegenerateFaceMeetsAsItsSegment) {
+  // Moved by -3 along x: b's segment lies on a's edge from (0, 0) to (2, 0), which face 0 holds
+  // whole and face 1 at (0, 0); b's triangles lie at x <= -1.
+  const CgalAnswer on_edge = cgal_answer(squares(Mat3::identity(), {-3, 0, 0}));
+  EXPECT_TRUE(on_edge.hit);
+  EXPECT_EQ(on_edge.pairs, (Pairs{{0, 2}, {1, 2}}));
+  // Moved by -5 - 2^-50: the segment ends 2^-50 short of a's corner (0, 0).
+  const CgalAnswer short_of = cgal_answer(squares(Mat3::identity(), {-5 - 0x1p-50, 0, 0}));
+  EXPECT_FALSE(short_of.hit);
+  EXPECT_EQ(short_of.pairs, Pairs{});
+  EXPECT_EQ(short_of.distance_down, 0x1p-50);
+}
+
+TEST(CgalMeshes, TheDistanceOfTurnedMeshesIsExact) {
+  // Turned by the 3-4-5 rotation about z and lifted by 3: b lies in the plane z = 3 over a's
+  // square, 3 apart however its turned vertices round in doubles.
+  const Mat3 turned = Mat3::from_columns({0.6, 0.8, 0}, {-0.8, 0.6, 0}, {0, 0, 1});
+  const CgalAnswer over = cgal_answer(squares(turned, {0.1, 0.3, 3}));
+  EXPECT_FALSE(over.hit);
+  EXPECT_EQ(over.distance_down, 3);
+  // Beside it: b's square [5, 7] x [6, 8] is nearest a's at the corners (2, 2) and (5, 6), 5
+  // apart (a's segment's end (5, 0) is 6 from b).
+  const CgalAnswer beside = cgal_answer(squares(Mat3::identity(), {5, 6, 0}));
+  EXPECT_FALSE(beside.hit);
+  EXPECT_EQ(beside.distance_down, 5);
+}
+
 TEST(CgalDiscWalls, TouchingASideOrAnEndIsAHitOneUlpApartAMiss) {
   const std::vector<Wall> walls{{{0, 0}, {4, 0}}, {{5, 0}, {5, 0}}, {{NAN, 0}, {2, 0.5}}};
   EXPECT_EQ(cgal_answer(Disc{{2, 0.5}, 0.5}, walls).faces, (std::vector<std::uint32_t>{0}));  // the side
@@ -382,6 +457,8 @@ TEST(CgalAnswer, InputsOutOfContractAreRefused) {
   EXPECT_THROW(cgal_answer(Disc{{INFINITY, 0}, 1}, {{{0, 0}, {1, 0}}}), std::invalid_argument);
   EXPECT_THROW(cgal_answer(Aabb{{1, 0, 0}, {0, 1, 1}}, unit_box()), std::invalid_argument);
   EXPECT_THROW(cgal_answer(Ray{{0, 0, 0}, {1, 0, 0}, kInf, kInf}, unit_box()), std::invalid_argument);
+  harness::MeshPair nan_pose = squares(Mat3::identity(), {NAN, 0, 0});
+  EXPECT_THROW(cgal_answer(nan_pose), std::invalid_argument);
   EXPECT_THROW(cgal_answer(obb({0, 0, 0}, {1, 1, 1}, Mat3::from_columns({1, 0, 0}, {1, 0, 0}, {0, 0, 1})),
                            obb({0, 0, 0}, {1, 1, 1})),
                std::invalid_argument);  // axes not independent

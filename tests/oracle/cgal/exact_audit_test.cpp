@@ -62,11 +62,11 @@ TEST(ExactAudit, AnswersTheKindsMadeOfTwoShapesItExpresses) {
                          QueryKind::tri_obb, QueryKind::tri_tri, QueryKind::obb_obb, QueryKind::kdop_kdop,
                          QueryKind::ray_mesh, QueryKind::disc_walls, QueryKind::tri_tri_distance,
                          QueryKind::sphere_sphere_distance, QueryKind::sphere_obb_distance, QueryKind::obb_obb_distance,
-                         QueryKind::tri_obb_distance}) {
+                         QueryKind::tri_obb_distance, QueryKind::mesh_mesh, QueryKind::mesh_mesh_first,
+                         QueryKind::mesh_mesh_distance}) {
     EXPECT_TRUE(answers(kind)) << name(kind);
   }
-  for (QueryKind kind : {QueryKind::mesh_mesh, QueryKind::mesh_mesh_first, QueryKind::broadphase,
-                         QueryKind::moving_obb}) {
+  for (QueryKind kind : {QueryKind::broadphase, QueryKind::moving_obb}) {
     EXPECT_FALSE(answers(kind)) << name(kind);
     EXPECT_FALSE(cgal_answer(with_kind(kind, []<class In>() { return Input(In{}); })).has_value()) << name(kind);
   }
@@ -219,6 +219,43 @@ TEST(ExactAudit, ARayFirstTOneUlpOffOrAFaceLeftOutIsADisagreement) {
     EXPECT_FALSE(a.why.empty());
   }
   EXPECT_NE(audit_case(in, one_face).why.find("faces"), std::string::npos);
+}
+
+// Two unit squares in z = 0 as two triangles each, b placed by the pose.
+MeshPair two_squares(const RigidTransform& pose_b) {
+  Mesh mesh;
+  mesh.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  mesh.faces = {{0, 1, 2}, {0, 2, 3}};
+  return {triangles_mesh(mesh), triangles_mesh(mesh), {Mat3::identity(), {0, 0, 0}}, pose_b, {}};
+}
+
+// Squares crossing, sharing an edge, turned over each other and apart: CGAL's pairs of faces that
+// meet are the reference's, all of them, and its distance the reference's, rounded down alike;
+// a pair left out or a distance one ulp off is a disagreement.
+TEST(ExactAudit, TwoMeshesAgreeOnThePairsThatMeetAndTheirDistance) {
+  const exact::ExactRationalReference reference;
+  const Mat3 stand = Mat3::from_columns({1, 0, 0}, {0, 0, 1}, {0, -1, 0});
+  const Mat3 turned = Mat3::from_columns({0.6, 0.8, 0}, {-0.8, 0.6, 0}, {0, 0, 1});
+  const MeshPair crossing = two_squares({stand, {0, 0.5, -0.5}}), shared_edge = two_squares({Mat3::identity(), {0, 1, 0}}),
+                 over = two_squares({turned, {0.1, 0.2, 0x1p-40}}), beside = two_squares({turned, {3, 4.5, 1}});
+  for (const MeshPair& m : {crossing, shared_edge, over, beside}) {
+    for (const Input& in : {Input{MeshMeshInput{m}}, Input{MeshMeshFirstInput{m}}, Input{MeshMeshDistanceInput{m}}}) {
+      const Audit a = audit_case(in, reference);
+      EXPECT_EQ(a.outcome, AuditOutcome::agree) << name(kind_of(in)) << ": " << a.why;
+    }
+  }
+  EXPECT_EQ(audit_case(MeshMeshInput{crossing}, reference).cgal.pairs,
+            (std::vector<FacePair>{{0, 0}, {0, 1}, {1, 0}, {1, 1}}));
+  EXPECT_EQ(audit_case(MeshMeshDistanceInput{over}, reference).cgal.distance_down, 0x1p-40);
+
+  const AlteredReference one_pair_less([](ExactVerdict& v) { v.answer.pairs.pop_back(); });
+  const Audit fewer = audit_case(MeshMeshInput{crossing}, one_pair_less);
+  EXPECT_EQ(fewer.outcome, AuditOutcome::disagree);
+  EXPECT_NE(fewer.why.find("pairs"), std::string::npos) << fewer.why;
+  const AlteredReference nearer([](ExactVerdict& v) { v.answer.params[0] = std::nextafter(v.answer.params[0], 0.0); });
+  const Audit off = audit_case(MeshMeshDistanceInput{beside}, nearer);
+  EXPECT_EQ(off.outcome, AuditOutcome::disagree);
+  EXPECT_NE(off.why.find("distance"), std::string::npos) << off.why;
 }
 
 TEST(ExactAudit, ADiscAgainstWallsAgreesWallByWall) {
