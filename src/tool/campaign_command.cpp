@@ -15,7 +15,9 @@
 #include <chrono>
 #include <cerrno>
 #include <csignal>
+#include <cmath>
 #include <cstring>
+#include <ctime>
 #include <sstream>
 #include <system_error>
 
@@ -34,7 +36,9 @@
 #include "tool/child_process.h"
 #include "tool/commands.h"
 #include "tool/flag_checks.h"
+#include "tool/history.h"
 #include "tool/oracles.h"
+#include "tool/run_context.h"
 #include "tool/subject_option.h"
 
 namespace cc::tool {
@@ -74,6 +78,7 @@ struct CampaignArgs {
   int max_new = 30;
   int per_key = 1;
   std::string subject;
+  std::string history;
 };
 
 void print_table(const CampaignResult& r) {
@@ -120,6 +125,7 @@ struct Storage {
   std::string failure;     // why it could not be stored
   std::size_t group = 0;   // the findings of its kind of finding (same key), itself included
   std::size_t like = 0;    // grouped: the finding of its kind that was chosen to be stored
+  std::string key;         // its kind of finding (finding_key, and " crash" for a crash)
 };
 
 std::string_view how_name(Storage::How how) {
@@ -254,6 +260,7 @@ std::vector<std::size_t> chosen_findings(const CampaignResult& r, const Campaign
     const Finding& f = r.findings[i];
     const std::string key = finding_key(f.input, f.evaluation) + (f.crash.empty() ? "" : " crash");
     first_of_key.try_emplace(key, i);
+    stored.of[i].key = key;
     ++stored.of[first_of_key[key]].group;
     if (per_key[key]++ >= args.per_key) {
       stored.of[i].how = Storage::How::grouped;
@@ -428,7 +435,16 @@ Json result_json(const CampaignResult& r, const Stored& s, int signal) {
               {"case", f.case_index},
               {"class", to_string(f.evaluation.verdict.cls)},
               {"what", summary_of(f)},
-              {"stored", how_name(storage.how)}};
+              {"stored", how_name(storage.how)},
+              {"group", storage.key}};
+    // The parties not plainly right, with their standing; and the exact margin, where finite.
+    Json parties = Json::object();
+    for (const harness::PartyStanding& p : f.evaluation.verdict.parties) {
+      if (p.standing == harness::Standing::right || p.standing == harness::Standing::not_applicable) continue;
+      parties[p.party] = to_string(p.standing);
+    }
+    j["parties"] = parties;
+    if (std::isfinite(f.evaluation.exact.margin)) j["margin"] = f.evaluation.exact.margin;
     // A finding grouped with a stored one is like it, and its inputs follow from the seed and
     // its case number (harness::campaign_case): they are not spelled out again.
     if (storage.how != Storage::How::grouped || storage.path.empty()) j["inputs"] = input_to_json(f.input);
@@ -450,6 +466,7 @@ Json result_json(const CampaignResult& r, const Stored& s, int signal) {
 int run(const CampaignArgs& args) {
   count_interrupts();  // from here on SIGINT and SIGTERM stop the run and keep what it found
   const double started = monotonic_seconds();
+  const std::time_t started_at = std::time(nullptr);
   CampaignOptions options;
   for (const std::string& q : args.queries) {
     const auto kind = query_kind_named(q);
@@ -524,10 +541,22 @@ int run(const CampaignArgs& args) {
     }
   }
   int code = 0;
+  const Json result = result_json(r, s, r.interrupted ? last_interrupt() : 0);
   if (!args.json.empty()) {
-    const std::string why = write_output_file(args.json, result_json(r, s, r.interrupted ? last_interrupt() : 0).dump(2) + "\n");
+    const std::string why = write_output_file(args.json, result.dump(2) + "\n");
     if (!why.empty()) {
       std::fprintf(stderr, "crosscheck campaign: %s\n", why.c_str());
+      code = kExitIncomplete;
+    }
+  }
+  if (!args.history.empty()) {
+    Json record = run_record("campaign", started_at, monotonic_seconds() - started, args.subject);
+    record.update(result);
+    record["seconds_of_cases"] = r.seconds;
+    try {
+      std::printf("history: %s\n", add_to_history(args.history, record).c_str());
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "crosscheck campaign: --history: %s\n", e.what());
       code = kExitIncomplete;
     }
   }
@@ -571,6 +600,8 @@ void add_campaign_command(CLI::App& app, int& exit_code) {
                   "Cases written per kind of finding (same class, parties, features and margin decade)")
       ->capture_default_str()
       ->check(whole_in(1, 1000000));
+  cmd->add_option("--history", args->history, "Add the run's record to this history folder (a new file, for crosscheck report)")
+      ->check(writable_folder());
   add_subject_option(cmd, args->subject);
   // --out is checked up front even when left at its default: findings go there after the budget.
   cmd->callback([args, &exit_code] {

@@ -7,13 +7,9 @@
 #include <exception>
 #include <iostream>
 
-#include "oracle/bullet/bullet_oracle.h"
-#include "oracle/chipmunk/chipmunk_oracle.h"
-#include "oracle/ode/ode_oracle.h"
-#include "oracle/fcl/fcl_oracle.h"
 #include "tool/commands.h"
 #include "tool/flag_checks.h"
-#include "tool/version.h"
+#include "tool/run_context.h"
 
 namespace {
 
@@ -47,11 +43,7 @@ int finished(const CLI::App& app, int exit_code) {
 int main(int argc, char** argv) {
   CLI::App app{"crosscheck: the collision library (or a subject) checked against FCL/libccd, Bullet, ODE, Chipmunk and exact rational arithmetic"};
   app.require_subcommand(1);
-  app.set_version_flag("--version", std::string("crosscheck ") + CROSSCHECK_VERSION + " (commit " + CROSSCHECK_COMMIT +
-                                        "), FCL " + std::string(cc::fcl_oracle::fcl_version()) +
-                                        ", Bullet " + std::string(cc::bullet_oracle::bullet_version()) +
-                                        ", ODE " + std::string(cc::ode_oracle::ode_version()) +
-                                        ", Chipmunk " + std::string(cc::chipmunk_oracle::chipmunk_version()));
+  app.set_version_flag("--version", cc::tool::version_line());
   app.footer("Query kinds: " + cc::tool::query_kind_names() +
              "\nExit status: 0 done, 1 an impl_bug found (or a replayed case changed), 2 bad input.");
   int exit_code = 0;
@@ -70,6 +62,7 @@ int main(int argc, char** argv) {
   cc::tool::add_mutate_command(app, exit_code);
   cc::tool::add_kind_files_command(app, exit_code);
   cc::tool::add_audit_exact_command(app, exit_code);
+  cc::tool::add_report_command(app, exit_code);
   if (argc > 1 && argv[1][0] != '-' && !is_subcommand(app, argv[1])) {
     std::fprintf(stderr, "crosscheck: unknown subcommand \"%s\" (crosscheck --help lists them)\n", argv[1]);
     return cc::tool::kExitBadInput;

@@ -26,6 +26,7 @@
 #include "tool/flag_checks.h"
 #include "tool/mutant_catalogue.h"
 #include "tool/mutation_report.h"
+#include "tool/run_context.h"
 #include "tool/output_file.h"
 #include "tool/scratch_tree.h"
 #include "tool/test_time_limits.h"
@@ -98,21 +99,6 @@ SourceState source_state(const fs::path& source, const fs::path& log) {
   char digest[32];
   std::snprintf(digest, sizeof digest, "changes %016llx", static_cast<unsigned long long>(h));
   return {commit + "-dirty", digest};
-}
-
-// The processor's name (the first "model name" of /proc/cpuinfo) and the number of hardware
-// threads, or "unknown" for what cannot be read.
-std::string processor_description() {
-  std::ifstream cpuinfo("/proc/cpuinfo");
-  std::string line, model = "unknown processor";
-  while (std::getline(cpuinfo, line)) {
-    if (line.starts_with("model name")) {
-      if (const auto colon = line.find(':'); colon != std::string::npos && colon + 2 <= line.size()) model = line.substr(colon + 2);
-      break;
-    }
-  }
-  const unsigned threads = std::thread::hardware_concurrency();
-  return model + ", " + (threads > 0 ? std::to_string(threads) : std::string("unknown")) + " hardware threads";
 }
 
 // The program `name` as the shell would find it on PATH, if it is there.

@@ -1,0 +1,92 @@
+#include "tool/history.h"
+
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+
+
+namespace cc::tool {
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string utc(std::time_t t, const char* format) {
+  std::tm parts{};
+  gmtime_r(&t, &parts);
+  char text[32];
+  std::strftime(text, sizeof text, format, &parts);
+  return text;
+}
+
+[[noreturn]] void fail(const fs::path& path, const std::string& what, int error) {
+  throw std::runtime_error("cannot " + what + " " + path.string() + ": " + std::strerror(error));
+}
+
+// Writes the whole text to a new temporary file in the folder; returns its path.
+fs::path write_temporary(const fs::path& folder, const std::string& text) {
+  std::string name = (folder / ".record-XXXXXX").string();
+  const int fd = mkstemp(name.data());
+  if (fd < 0) fail(folder, "write a record in", errno);
+  std::size_t done = 0;
+  while (done < text.size()) {
+    const ssize_t n = write(fd, text.data() + done, text.size() - done);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) {
+      const int error = n < 0 ? errno : ENOSPC;
+      close(fd);
+      unlink(name.c_str());
+      fail(name, "write", error);
+    }
+    done += static_cast<std::size_t>(n);
+  }
+  if (fsync(fd) != 0 || close(fd) != 0) {
+    const int error = errno;
+    unlink(name.c_str());
+    fail(name, "write", error);
+  }
+  return name;
+}
+
+}  // namespace
+
+std::string iso_utc(std::time_t t) { return utc(t, "%Y-%m-%dT%H:%M:%SZ"); }
+
+fs::path add_to_history(const fs::path& folder, const nlohmann::json& record) {
+  std::error_code error;
+  fs::create_directories(folder, error);
+  if (error) throw std::runtime_error("cannot create the history folder " + folder.string() + ": " + error.message());
+  const std::string started = record.at("started").get<std::string>(), run = record.at("run").get<std::string>();
+  const auto is_one_of = [](const std::string& text, std::string_view allowed) {
+    return !text.empty() && text.find_first_not_of(allowed) == std::string::npos;
+  };
+  if (!is_one_of(run, "abcdefghijklmnopqrstuvwxyz_") || !is_one_of(started, "0123456789-:TZ")) {
+    throw std::runtime_error("cannot name a record of run \"" + run + "\" started \"" + started + "\" in " + folder.string());
+  }
+  std::string stem;  // 2026-12-02T19:50:00Z as 20261202T195000Z
+  for (char c : started) {
+    if (c != '-' && c != ':') stem += c;
+  }
+  stem += "-" + run;
+  const fs::path temporary = write_temporary(folder, record.dump(2) + "\n");
+  for (int n = 1; n < 10000; ++n) {
+    std::string name = stem;
+    if (n > 1) name.append("-").append(std::to_string(n));  // (by append: GCC 12 warns falsely, -Wrestrict, on "-" + string)
+    const fs::path path = folder / name.append(".json");
+    if (link(temporary.c_str(), path.c_str()) == 0) {
+      unlink(temporary.c_str());
+      return path;
+    }
+    if (errno != EEXIST) {
+      const int e = errno;
+      unlink(temporary.c_str());
+      fail(path, "write", e);
+    }
+  }
+  unlink(temporary.c_str());
+  throw std::runtime_error("cannot add a record to " + folder.string() + ": 9999 records of " + stem + " are there");
+}
+
+}  // namespace cc::tool

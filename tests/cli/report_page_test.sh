@@ -1,0 +1,35 @@
+#!/bin/sh
+# The report page as a person sees it: two short campaigns add their records to a history
+# folder, `crosscheck report` writes the page, and headless Chromium renders it. Fails on any
+# console message, on an image the page could not load or a script error (the page's own check,
+# read from the rendered DOM), or on a section missing; leaves the screenshot in WORK.
+# Usage: report_page_test.sh CROSSCHECK CORPORA WORK
+set -u
+tool=$1 corpora=$2 work=$3
+fail() { echo "report page: $*" >&2; exit 1; }
+rm -rf "$work" && mkdir -p "$work" || fail "cannot make $work"
+for seed in 1 2; do
+  "$tool" campaign --query sphere_sphere_distance --query obb_obb --query tri_obb_distance --seconds 3 --seed "$seed" \
+    --workers 2 --history "$work/history" --corpora "$corpora" --out "$work/new" --max-new 4 > "$work/campaign-$seed.log" 2>&1
+  status=$?
+  [ "$status" -le 1 ] || fail "campaign --seed $seed exited $status (see $work/campaign-$seed.log)"
+done
+[ "$(ls "$work/history" | wc -l)" -eq 2 ] || fail "two campaigns left $(ls "$work/history" | wc -l) records"
+"$tool" report "$work/history" --out "$work/page" > "$work/report.log" 2>&1 || fail "report failed: $(cat "$work/report.log")"
+page="$work/page/index.html"
+[ -s "$page" ] || fail "no $page"
+browser() {
+  chromium --headless --no-sandbox --disable-gpu --hide-scrollbars --enable-logging=stderr --v=0 \
+    --virtual-time-budget=5000 --window-size=1400,3000 "$@" "file://$page"
+}
+browser --screenshot="$work/screenshot.png" > /dev/null 2> "$work/chromium-screenshot.log" || fail "chromium failed to render"
+browser --dump-dom > "$work/dom.html" 2> "$work/chromium-dom.log" || fail "chromium failed to load the page"
+if grep -h ':CONSOLE' "$work/chromium-screenshot.log" "$work/chromium-dom.log"; then fail "console messages above"; fi
+grep -q 'data-self-check="ok"' "$work/dom.html" ||
+  fail "the page's own check: $(grep -o 'data-self-check="[^"]*"' "$work/dom.html" || echo 'it never ran')"
+for section in header grid trends new ledger findings; do
+  grep -q "id=\"$section\"" "$work/dom.html" || fail "no section \"$section\""
+done
+[ "$(grep -c '<img ' "$work/dom.html")" -ge 3 ] || fail "fewer than three plots"
+[ -s "$work/screenshot.png" ] || fail "no screenshot"
+echo "report page: $(wc -c < "$page") bytes, screenshot $work/screenshot.png"
