@@ -92,6 +92,16 @@ def run_label(record, i):
     return f"{i + 1}\n{record['started'][5:10]}"
 
 
+def over_runs(figure, axes, records, ylabel, title, grid_axis="both", columns=1):
+    """The figure's common frame: one tick per run, a grid, the legend beside it; as PNG."""
+    axes.set_ylabel(ylabel)
+    axes.set_xticks(range(len(records)), [run_label(r, i) for i, r in enumerate(records)], fontsize=7)
+    axes.grid(alpha=0.3, axis=grid_axis)
+    axes.legend(fontsize=7, ncol=columns, loc="upper left", bbox_to_anchor=(1.01, 1))
+    axes.set_title(title, fontsize=10)
+    return png(figure)
+
+
 def plot_rates(records):
     figure, axes = plt.subplots(figsize=(7.5, 3.6))
     kinds = sorted({k for r in records if r["run"] == "campaign" for k in r["queries"]})
@@ -102,12 +112,7 @@ def plot_rates(records):
         if points:
             axes.plot([p[0] for p in points], [p[1] for p in points], marker="o", label=kind)
     axes.set_yscale("log")
-    axes.set_ylabel("cases per second")
-    axes.set_xticks(xs, [run_label(r, i) for i, r in enumerate(records)], fontsize=7)
-    axes.grid(alpha=0.3)
-    axes.legend(fontsize=7, ncol=2, loc="upper left", bbox_to_anchor=(1.01, 1))
-    axes.set_title("Cases per second, per query kind", fontsize=10)
-    return png(figure)
+    return over_runs(figure, axes, records, "cases per second", "Cases per second, per query kind", columns=2)
 
 
 def plot_classes(records):
@@ -118,12 +123,7 @@ def plot_classes(records):
         ys = [sum(q.get(cls, 0) for q in r["queries"].values()) for r in records]
         axes.bar(xs, ys, bottom=bottom, color=colour, label=cls)
         bottom = [b + y for b, y in zip(bottom, ys)]
-    axes.set_ylabel("cases")
-    axes.set_xticks(xs, [run_label(r, i) for i, r in enumerate(records)], fontsize=7)
-    axes.grid(alpha=0.3, axis="y")
-    axes.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
-    axes.set_title("Findings per class", fontsize=10)
-    return png(figure)
+    return over_runs(figure, axes, records, "cases", "Findings per class", grid_axis="y")
 
 
 def plot_groups(records, new_per_run):
@@ -133,12 +133,7 @@ def plot_groups(records, new_per_run):
     new = [len(n) for n in new_per_run]
     axes.bar(xs, [t - n for t, n in zip(totals, new)], color="#78909c", label="known groups")
     axes.bar(xs, new, bottom=[t - n for t, n in zip(totals, new)], color="#d81b60", label="new groups")
-    axes.set_ylabel("finding groups")
-    axes.set_xticks(xs, [run_label(r, i) for i, r in enumerate(records)], fontsize=7)
-    axes.grid(alpha=0.3, axis="y")
-    axes.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
-    axes.set_title("Finding groups: new against known", fontsize=10)
-    return png(figure)
+    return over_runs(figure, axes, records, "finding groups", "Finding groups: new against known", grid_axis="y")
 
 
 def plot_fuzz(records):
