@@ -550,9 +550,11 @@ int run(const CampaignArgs& args) {
     }
   }
   if (!args.history.empty()) {
-    Json record = run_record("campaign", started_at, monotonic_seconds() - started, args.subject);
-    record.update(result);
+    const double whole = monotonic_seconds() - started;
+    Json record = run_record("campaign", started_at, whole, args.subject);
+    record.update(result);  // its "seconds" are the cases' share
     record["seconds_of_cases"] = r.seconds;
+    record["seconds"] = whole;
     try {
       std::printf("history: %s\n", add_to_history(args.history, record).c_str());
     } catch (const std::exception& e) {

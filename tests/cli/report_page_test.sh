@@ -15,6 +15,14 @@ for seed in 1 2; do
   [ "$status" -le 1 ] || fail "campaign --seed $seed exited $status (see $work/campaign-$seed.log)"
 done
 [ "$(ls "$work/history" | wc -l)" -eq 2 ] || fail "two campaigns left $(ls "$work/history" | wc -l) records"
+for record in "$work"/history/*.json; do
+  /usr/bin/python3 -c 'import json, sys
+r = json.load(open(sys.argv[1]))
+assert r["format"] == "crosscheck history" and r["run"] == "campaign", "not a campaign record"
+assert r["seconds"] >= r["seconds_of_cases"] > 0, "the whole run shorter than its cases"
+assert all("group" in f and "parties" in f for f in r["findings"]), "a finding without its group"' "$record" ||
+    fail "$record: not the record a campaign writes"
+done
 "$tool" report "$work/history" --out "$work/page" > "$work/report.log" 2>&1 || fail "report failed: $(cat "$work/report.log")"
 page="$work/page/index.html"
 [ -s "$page" ] || fail "no $page"
