@@ -1,58 +1,32 @@
 #include "tool/history.h"
 
-#include <fcntl.h>
 #include <unistd.h>
 
 #include <cerrno>
 #include <cstring>
+#include <optional>
 #include <stdexcept>
 
+#include "tool/output_file.h"
 
 namespace cc::tool {
 namespace fs = std::filesystem;
 
 namespace {
 
-std::string utc(std::time_t t, const char* format) {
-  std::tm parts{};
-  gmtime_r(&t, &parts);
-  char text[32];
-  std::strftime(text, sizeof text, format, &parts);
-  return text;
-}
-
 [[noreturn]] void fail(const fs::path& path, const std::string& what, int error) {
   throw std::runtime_error("cannot " + what + " " + path.string() + ": " + std::strerror(error));
 }
 
-// Writes the whole text to a new temporary file in the folder; returns its path.
-fs::path write_temporary(const fs::path& folder, const std::string& text) {
-  std::string name = (folder / ".record-XXXXXX").string();
-  const int fd = mkstemp(name.data());
-  if (fd < 0) fail(folder, "write a record in", errno);
-  std::size_t done = 0;
-  while (done < text.size()) {
-    const ssize_t n = write(fd, text.data() + done, text.size() - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int error = n < 0 ? errno : ENOSPC;
-      close(fd);
-      unlink(name.c_str());
-      fail(name, "write", error);
-    }
-    done += static_cast<std::size_t>(n);
-  }
-  if (fsync(fd) != 0 || close(fd) != 0) {
-    const int error = errno;
-    unlink(name.c_str());
-    fail(name, "write", error);
-  }
-  return name;
-}
-
 }  // namespace
 
-std::string iso_utc(std::time_t t) { return utc(t, "%Y-%m-%dT%H:%M:%SZ"); }
+std::string iso_utc(std::time_t t) {
+  std::tm parts{};
+  gmtime_r(&t, &parts);
+  char text[32];
+  std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &parts);
+  return text;
+}
 
 fs::path add_to_history(const fs::path& folder, const nlohmann::json& record) {
   std::error_code error;
@@ -70,7 +44,9 @@ fs::path add_to_history(const fs::path& folder, const nlohmann::json& record) {
     if (c != '-' && c != ':') stem += c;
   }
   stem += "-" + run;
-  const fs::path temporary = write_temporary(folder, record.dump(2) + "\n");
+  const std::optional<std::string> written = write_temporary_beside(folder / (stem + ".json"), record.dump(2) + "\n");
+  if (!written) fail(folder, "write a record in", errno);
+  const fs::path temporary = *written;
   for (int n = 1; n < 10000; ++n) {
     std::string name = stem;
     if (n > 1) name.append("-").append(std::to_string(n));  // (by append: GCC 12 warns falsely, -Wrestrict, on "-" + string)

@@ -35,18 +35,26 @@ std::string write_output_file(const std::string& path, std::string_view text) {
     ::close(fd);
     return written ? "" : failure(path, error);
   }
-  const std::filesystem::path target(path);
-  std::string temporary = (target.has_parent_path() ? target.parent_path() / "" : std::filesystem::path()).string() + "." +
-                          target.filename().string() + ".XXXXXX";
+  const std::optional<std::string> temporary = write_temporary_beside(path, text);
+  if (!temporary) return failure(path, errno);
+  if (::rename(temporary->c_str(), path.c_str()) == 0) return "";
+  const int error = errno;
+  ::unlink(temporary->c_str());
+  return failure(path, error);
+}
+
+std::optional<std::string> write_temporary_beside(const std::filesystem::path& path, std::string_view text) {
+  std::string temporary = (path.has_parent_path() ? path.parent_path() / "" : std::filesystem::path()).string() + "." +
+                          path.filename().string() + ".XXXXXX";
   const int fd = ::mkstemp(temporary.data());
-  if (fd < 0) return failure(path, errno);
+  if (fd < 0) return std::nullopt;
   bool written = harness::write_all(fd, text) && ::fsync(fd) == 0;
   int error = errno;
-  written = ::close(fd) == 0 && written;
-  if (written && ::rename(temporary.c_str(), path.c_str()) == 0) return "";
-  if (written) error = errno;
+  if (::close(fd) != 0 && written) written = false, error = errno;
+  if (written) return temporary;
   ::unlink(temporary.c_str());
-  return failure(path, error);
+  errno = error;
+  return std::nullopt;
 }
 
 }  // namespace cc::tool

@@ -2,6 +2,8 @@
 // is written whole or not at all.
 #pragma once
 
+#include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -13,5 +15,10 @@ namespace cc::tool {
 /// FIFO) is written in place. Returns "" on success, else a sentence naming the file and the
 /// reason ("cannot write out.json: No space left on device").
 std::string write_output_file(const std::string& path, std::string_view text);
+
+/// Writes `text` whole to a new temporary file beside `path` (".NAME.XXXXXX" in its folder) and
+/// syncs it, for the caller to rename or link into place. Returns the temporary's path; nothing
+/// when it failed (errno set, no file left).
+std::optional<std::string> write_temporary_beside(const std::filesystem::path& path, std::string_view text);
 
 }  // namespace cc::tool

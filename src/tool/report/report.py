@@ -225,14 +225,10 @@ def main():
         print(f"crosscheck report: {e}", file=sys.stderr)
         return 2
 
-    seen, new_per_run, first, last, times = set(), [], {}, {}, {}
-    for i, r in enumerate(records):
+    seen, new_per_run = set(), []
+    for r in records:
         groups = groups_of(r)
         new_per_run.append([g for g in groups if g not in seen])
-        for g, found in groups.items():
-            first.setdefault(g, r["started"])
-            last[g] = r["started"]
-            times[g] = times.get(g, 0) + 1
         seen.update(groups)
 
     latest = records[-1]
