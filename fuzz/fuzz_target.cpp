@@ -5,6 +5,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include "fuzz/impl_bug_groups.h"
+#include "harness/judging/disagreement.h"
 #include "harness/judging/evaluate.h"
 #include "harness/formats/fuzz_record.h"
 #include "harness/formats/input_json.h"
@@ -79,6 +81,7 @@ int test_one_input(QueryKind kind, const std::uint8_t* data, std::size_t size) {
         }
       }
       std::fprintf(stderr, "  inputs: %s\n", input_to_json(input).dump().c_str());
+      if (const auto d = disagreement_of(kind, e)) abort_in_group(kind, d->what);
       std::abort();
     case CaseClass::oracle_defect:
     case CaseClass::oracle_crash:

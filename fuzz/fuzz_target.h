@@ -9,8 +9,9 @@
 namespace cc::fuzz {
 
 /// Decodes the record at the front of the input (harness/formats/fuzz_record.h), answers it three ways
-/// and classifies it. An impl_bug prints the case and aborts, so that the fuzzer keeps the
-/// input. An oracle_defect, or a second opinion that threw or did not return, is written to
+/// and classifies it. An impl_bug prints the case and aborts from its group's function
+/// (impl_bug_groups.h), so that the fuzzer keeps the input and a service tells its bugs apart.
+/// An oracle_defect, or a second opinion that threw or did not return, is written to
 /// $CROSSCHECK_FUZZ_FINDINGS/<query>/ (when that variable is set) and fuzzing goes on.
 int test_one_input(harness::QueryKind kind, const std::uint8_t* data, std::size_t size);
 

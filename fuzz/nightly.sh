@@ -4,10 +4,12 @@
 # -merge=1); each new finding becomes a minimised case file in corpora/new/<query>/ (through
 # `crosscheck fuzz-case` and `crosscheck shrink`); and a report is written in Markdown and JSON:
 # per target the executions per second, the coverage (features) before and after, and the
-# findings by class. Ctrl-C stops the fuzzers and still merges, converts and reports what was found.
+# findings by class; with --history, the night is added to a history folder as a record of its
+# own (`crosscheck fuzz-history`), which `crosscheck report` draws beside the campaigns. Ctrl-C
+# stops the fuzzers and still merges, converts and reports what was found.
 #
 #   fuzz/nightly.sh [--minutes 10] [--jobs 2] [--report build/fuzz-report] [--targets "KIND ..."]
-#                   [--max-shrink 5] [--subject PATH.so]
+#                   [--max-shrink 5] [--subject PATH.so] [--history DIR]
 #
 # --subject fuzzes a shared library (include/crosscheck/subject.h) instead of crosscheck's own:
 # the targets load it (CROSSCHECK_SUBJECT), and only the kinds it answers are run.
@@ -23,6 +25,7 @@ report="$root/build/fuzz-report"
 targets=""  # default: every query kind (the fuzz build lists them in fuzz/targets.txt)
 max_shrink=5
 subject=""
+history=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --minutes) minutes=$2; shift 2 ;;
@@ -31,7 +34,8 @@ while [ $# -gt 0 ]; do
     --targets) targets=$2; shift 2 ;;
     --max-shrink) max_shrink=$2; shift 2 ;;
     --subject) subject=$(realpath "$2") || exit 2; shift 2 ;;
-    *) echo "usage: $0 [--minutes M] [--jobs J] [--report DIR] [--targets \"Q ...\"] [--max-shrink N] [--subject PATH.so]" >&2; exit 2 ;;
+    --history) history=$(realpath -m "$2") || exit 2; shift 2 ;;
+    *) echo "usage: $0 [--minutes M] [--jobs J] [--report DIR] [--targets \"Q ...\"] [--max-shrink N] [--subject PATH.so] [--history DIR]" >&2; exit 2 ;;
   esac
 done
 
@@ -66,6 +70,10 @@ count=$(echo $targets | wc -w)
 budget=$(( minutes * 60 / count ))
 [ "$budget" -ge 1 ] || budget=1
 started=$(date -u +%Y-%m-%dT%H:%M:%SZ)
+night_begin=$(date +%s)
+# A JSON string of text (paths and finding keys hold no control characters).
+json_string() { local s=${1//\\/\\\\}; s=${s//\"/\\\"}; printf '"%s"' "$s"; }
+json_findings=""
 
 # The features and coverage libFuzzer reports after loading a corpus: "INITED cov: C ft: F".
 coverage() { "$bin/fuzz_$1" -runs=0 "$2" 2>&1 | sed -n 's/.*INITED cov: \([0-9]*\) ft: \([0-9]*\).*/\1 \2/p' | tail -n 1; }
@@ -103,11 +111,15 @@ for t in $targets; do
   shrunk=0
   for f in "$artifacts"/* "$report/findings/$t"/*; do
     [ -f "$f" ] || continue
-    # "<input> <class> <case file> <kind of finding...>"
+    # "<input> <class> <case file> <group of its disagreement> <kind of finding...>"
     line=$("$crosscheck" fuzz-case "$t" "$f" --out "$report/cases" "${subject_flags[@]}")
     class=$(echo "$line" | awk '{print $2}')
     case_file=$(echo "$line" | awk '{print $3}')
-    key=$(echo "$line" | cut -d' ' -f4-)
+    group=$(echo "$line" | awk '{print $4}')
+    key=$(echo "$line" | cut -d' ' -f5-)
+    [ -n "$json_findings" ] && json_findings+=","
+    json_findings+=$(printf '\n    {"query": %s, "class": %s, "disagreement": %s, "group": %s, "case_file": %s}' \
+      "$(json_string "$t")" "$(json_string "$class")" "$(json_string "$group")" "$(json_string "$key")" "$(json_string "$case_file")")
     if [ -n "${by_class[$class]+x}" ]; then by_class[$class]=$(( by_class[$class] + 1 )); else by_class[other]=$(( by_class[other] + 1 )); fi
     if [ -f "$case_file" ] && [ -z "${seen[$key]+x}" ] && [ "$shrunk" -lt "$max_shrink" ]; then
       seen[$key]=1
@@ -141,8 +153,11 @@ interrupted=$([ "$stopped" = 1 ] && echo true || echo false)
   echo "|---|---|---|---|---|---|---|---|---|---|---|---|"
   printf '%s' "$markdown"
 } > "$report/report.md"
-printf '{\n  "started": "%s", "minutes": %s, "jobs": %s, "interrupted": %s,\n  "targets": {%s\n  }\n}\n' \
-  "$started" "$minutes" "$jobs" "$interrupted" "$json_targets" > "$report/report.json"
+printf '{\n  "started": "%s", "seconds": %s, "minutes": %s, "jobs": %s, "interrupted": %s, "subject": %s,\n  "targets": {%s\n  },\n  "findings": [%s\n  ]\n}\n' \
+  "$started" "$(( $(date +%s) - night_begin ))" "$minutes" "$jobs" "$interrupted" "$(json_string "$subject")" \
+  "$json_targets" "$json_findings" > "$report/report.json"
 echo "report: $report/report.md and $report/report.json"
+# The night in the history folder; a record that could not be added fails the run (exit 3).
+if [ -n "$history" ] && ! "$crosscheck" fuzz-history "$report/report.json" --history "$history"; then exit 3; fi
 impl_bugs=$(grep -o '"impl_bug": [0-9]*' "$report/report.json" | awk '{s += $2} END {print s + 0}')
 [ "$impl_bugs" -eq 0 ]

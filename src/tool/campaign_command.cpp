@@ -29,6 +29,7 @@
 #include "harness/formats/mesh_files.h"
 #include "harness/formats/input_json.h"
 #include "harness/shrinking/shrink.h"
+#include "harness/judging/disagreement.h"
 #include "harness/shrinking/signature.h"
 #include "harness/model/subject.h"
 #include "tool/output_file.h"
@@ -444,6 +445,7 @@ Json result_json(const CampaignResult& r, const Stored& s, int signal) {
       parties[p.party] = to_string(p.standing);
     }
     j["parties"] = parties;
+    if (const auto d = harness::disagreement_of(f.kind, f.evaluation)) j["disagreement"] = group_name(f.kind, d->what);
     if (std::isfinite(f.evaluation.exact.margin)) j["margin"] = f.evaluation.exact.margin;
     // A finding grouped with a stored one is like it, and its inputs follow from the seed and
     // its case number (harness::campaign_case): they are not spelled out again.

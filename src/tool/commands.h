@@ -28,5 +28,6 @@ void add_mutate_command(CLI::App& app, int& exit_code);
 void add_kind_files_command(CLI::App& app, int& exit_code);
 void add_audit_exact_command(CLI::App& app, int& exit_code);
 void add_report_command(CLI::App& app, int& exit_code);
+void add_fuzz_history_command(CLI::App& app, int& exit_code);
 
 }  // namespace cc::tool

@@ -10,6 +10,7 @@
 
 #include "harness/processes/campaign.h"
 #include "harness/formats/fuzz_record.h"
+#include "harness/judging/disagreement.h"
 #include "harness/shrinking/signature.h"
 #include "harness/model/subject.h"
 #include "tool/cases.h"
@@ -112,8 +113,10 @@ int run_fuzz_case(const FuzzCaseArgs& args) {
       std::fprintf(stderr, "crosscheck fuzz-case: %s\n", printable(error.what()).c_str());
       return kExitBadInput;
     }
-    const std::string what = std::string(to_string(e.verdict.cls)) + " " + path.string() + " " + finding_key(input, e);
-    // The input, its class, its case file, and the kind of finding it is (for grouping).
+    const std::string what = std::string(to_string(e.verdict.cls)) + " " + path.string() + " " + group_of(*kind, e) +
+                             " " + finding_key(input, e);
+    // The input, its class, its case file, the group of its disagreement (the fuzz target's abort
+    // function's, or "-") and the kind of finding it is (for grouping).
     std::printf("%s %s\n", file.c_str(), what.c_str());
   }
   return 0;

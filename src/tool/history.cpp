@@ -4,6 +4,7 @@
 
 #include <cerrno>
 #include <cstring>
+#include <ctime>
 #include <optional>
 #include <stdexcept>
 
@@ -26,6 +27,16 @@ std::string iso_utc(std::time_t t) {
   char text[32];
   std::strftime(text, sizeof text, "%Y-%m-%dT%H:%M:%SZ", &parts);
   return text;
+}
+
+std::optional<std::time_t> from_iso_utc(std::string_view text) {
+  std::tm parts{};
+  const std::string copy(text);
+  const char* end = strptime(copy.c_str(), "%Y-%m-%dT%H:%M:%SZ", &parts);
+  if (end == nullptr || *end != '\0') return std::nullopt;
+  const std::time_t t = timegm(&parts);
+  if (iso_utc(t) != copy) return std::nullopt;  // e.g. 2026-02-30, 7-digit years, a missing 0
+  return t;
 }
 
 fs::path add_to_history(const fs::path& folder, const nlohmann::json& record) {

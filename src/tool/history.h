@@ -6,6 +6,7 @@
 
 #include <ctime>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -16,6 +17,10 @@ inline constexpr int kHistoryVersion = 1;
 
 /// The record's start as it says it: ISO 8601 in UTC, "2026-12-02T19:50:00Z".
 std::string iso_utc(std::time_t t);
+
+/// The time iso_utc wrote, or nothing for text it would not write (another form, a field out of
+/// range, trailing characters).
+std::optional<std::time_t> from_iso_utc(std::string_view text);
 
 /// Adds the record (an object with "started", as iso_utc gives it, and "run") to the folder
 /// (created if missing) as a new file named by its start and run,

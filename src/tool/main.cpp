@@ -63,6 +63,7 @@ int main(int argc, char** argv) {
   cc::tool::add_kind_files_command(app, exit_code);
   cc::tool::add_audit_exact_command(app, exit_code);
   cc::tool::add_report_command(app, exit_code);
+  cc::tool::add_fuzz_history_command(app, exit_code);
   if (argc > 1 && argv[1][0] != '-' && !is_subcommand(app, argv[1])) {
     std::fprintf(stderr, "crosscheck: unknown subcommand \"%s\" (crosscheck --help lists them)\n", argv[1]);
     return cc::tool::kExitBadInput;

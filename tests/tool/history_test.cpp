@@ -6,6 +6,7 @@
 
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -39,6 +40,16 @@ TEST(History, ARecordIsNamedByItsStartAndRun) {
   EXPECT_EQ(path, folder / "20261202T195000Z-campaign.json");
   EXPECT_EQ(nlohmann::json::parse(read_text(path)), record(1));
   EXPECT_EQ(files_in(folder), 1);  // no temporary file left beside it
+}
+
+TEST(History, AStartIsReadBackOnlyInTheFormItIsWritten) {
+  EXPECT_EQ(from_iso_utc("2026-12-02T19:50:00Z"), std::optional<std::time_t>(1796241000));
+  EXPECT_EQ(from_iso_utc(iso_utc(0)), std::optional<std::time_t>(0));
+  EXPECT_EQ(from_iso_utc("2024-02-29T23:59:59Z"), std::optional<std::time_t>(1709251199));  // a leap day
+  for (const char* text : {"2026-12-02 19:50:00Z", "2026-12-02T19:50:00", "2026-12-02T19:50:00Z ", "2026-02-30T00:00:00Z",
+                           "2026-12-02T24:00:00Z", "2026-12-2T19:50:00Z", "", "tomorrow"}) {
+    EXPECT_EQ(from_iso_utc(text), std::nullopt) << text;
+  }
 }
 
 TEST(History, ANameTakenIsNeverReplaced) {

@@ -2,10 +2,12 @@
 """The page of a history folder: `crosscheck report HISTORY --out DIR` runs this.
 
 Reads every record of HISTORY (one JSON file per run, written by `crosscheck campaign
---history`) and writes DIR/index.html, self-contained (plots as embedded PNG from matplotlib,
-case pictures as inline SVG from `crosscheck triage --svg`): a header with the last run's commit,
-seed, versions and machine; a grid of query kinds against parties; trends over the runs; a card
-for each finding group new since the runs before; and a ledger of known oracle_defect groups.
+--history` and, for a night of fuzzing, `crosscheck fuzz-history`) and writes DIR/index.html,
+self-contained (plots as embedded PNG from matplotlib, case pictures as inline SVG from
+`crosscheck triage --svg`): a header with the last campaign's commit, seed, versions and machine;
+a grid of query kinds against parties in that campaign; trends over the runs; a card for each
+finding group new in the last run (campaign or fuzzing); a ledger of known oracle_defect groups;
+and the last night of fuzzing per target.
 Exit status 0 written, 2 bad input (a record that is not one, named with the place)."""
 
 import argparse
@@ -145,8 +147,12 @@ def plot_fuzz(records):
         ys = [r["targets"].get(target, {}) for r in fuzz]
         cov.plot(range(len(fuzz)), [y.get("coverage_after") for y in ys], marker="o", label=target)
         rate.plot(range(len(fuzz)), [y.get("execs_per_second") for y in ys], marker="o", label=target)
-    cov.set_title("Fuzz coverage (features)", fontsize=10)
-    rate.set_title("Executions per second", fontsize=10)
+    for axes, title in ((cov, "Fuzz coverage (libFuzzer's cov, after merging)"), (rate, "Executions per second")):
+        axes.set_xticks(range(len(fuzz)), [run_label(r, i) for i, r in enumerate(fuzz)], fontsize=7)
+        axes.set_xlim(-0.5, len(fuzz) - 0.5)
+        axes.set_xlabel("night", fontsize=8)
+        axes.grid(alpha=0.3)
+        axes.set_title(title, fontsize=10)
     rate.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1))
     return png(figure)
 
@@ -231,10 +237,13 @@ def main():
         new_per_run.append([g for g in groups if g not in seen])
         seen.update(groups)
 
-    latest = records[-1]
+    last = records[-1]
+    campaigns = [r for r in records if r["run"] == "campaign"]
+    latest = campaigns[-1] if campaigns else last
+    nights = [r for r in records if r["run"] == "fuzz"]
     parties, rows = grid_of(latest, records)
     cards = []
-    latest_groups = groups_of(latest)
+    latest_groups = groups_of(last)
     severity = {cls: i for i, (cls, _) in enumerate(CLASSES)}
     # The worst first; within a class, those with a stored case (a picture to look at), then the most often met.
     ordered = sorted(new_per_run[-1], key=lambda g: (severity.get(latest_groups[g][0]["class"], len(CLASSES)),
@@ -245,6 +254,7 @@ def main():
         stored = next((f for f in found if f.get("case_file")), found[0])
         svg, said = triage(args.crosscheck, stored.get("case_file"))
         cards.append({"group": g, "query": stored["query"], "cls": stored["class"], "what": stored.get("what", ""),
+                      "disagreement": stored.get("disagreement"), "run": last["run"],
                       "parties": stored.get("parties", {}), "margin": stored.get("margin"), "count": len(found),
                       "case_file": stored.get("case_file"), "svg": svg, "triage": said,
                       "colour": dict(CLASSES).get(stored["class"], CLEAN)})
@@ -275,7 +285,8 @@ def main():
     environment = jinja2.Environment(loader=jinja2.FileSystemLoader(os.path.dirname(os.path.abspath(__file__))),
                                      autoescape=jinja2.select_autoescape(["html", "j2"]))
     page = environment.get_template("page.html.j2").render(
-        latest=latest, runs=len(records), first_run=records[0]["started"], parties=parties, rows=rows,
+        latest=latest, last=last, night=nights[-1] if nights else None, runs=len(records),
+        first_run=records[0]["started"], parties=parties, rows=rows,
         classes=CLASSES, clean=CLEAN, cards=cards, more_cards=max(0, len(new_per_run[-1]) - MAX_CARDS),
         ledger=ledger, findings_by_cell=findings_by_cell,
         plots={"rates": plot_rates(records), "classes": plot_classes(records),
