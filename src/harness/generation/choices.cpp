@@ -22,13 +22,13 @@ DrawRecorder* record_draws(DrawRecorder* recorder) {
   return before;
 }
 
-std::uint64_t Choices::draw(std::uint64_t n, const std::source_location& site) {
+std::uint64_t Choices::draw(std::uint64_t n, DrawSite site) {
   const std::uint64_t value = choose(n);
   if (t_recorder != nullptr) t_recorder->drew(site, n, value);
   return value;
 }
 
-bool Choices::chance(int percent, const std::source_location& site) {
+bool Choices::chance(int percent, DrawSite site) {
   const bool yes = choose(100) >= static_cast<std::uint64_t>(100 - percent);
   if (t_recorder != nullptr) t_recorder->took_chance(site, percent, yes);
   return yes;

@@ -5,11 +5,39 @@
 #pragma once
 
 #include <cstdint>
-#include <source_location>
 #include <span>
+#include <version>
+#if defined(__cpp_lib_source_location)
+#include <source_location>
+#endif
 #include <vector>
 
 namespace cc::harness {
+
+/// Where a generator draws: the file, line and column of the call that took current() as its
+/// default argument. std::source_location where the standard library has it (GCC); clang 14,
+/// which builds the fuzz targets, has it not with GCC 12's library, and its builtins serve.
+class DrawSite {
+ public:
+#if defined(__cpp_lib_source_location)
+  static constexpr DrawSite current(std::source_location site = std::source_location::current()) {
+    return DrawSite(site.file_name(), site.line(), site.column());
+  }
+#else
+  static constexpr DrawSite current(const char* file = __builtin_FILE(), unsigned line = __builtin_LINE(),
+                                    unsigned column = __builtin_COLUMN()) {
+    return DrawSite(file, line, column);
+  }
+#endif
+  constexpr const char* file_name() const { return file_; }
+  constexpr unsigned line() const { return line_; }
+  constexpr unsigned column() const { return column_; }
+
+ private:
+  constexpr DrawSite(const char* file, unsigned line, unsigned column) : file_(file), line_(line), column_(column) {}
+  const char* file_;
+  unsigned line_, column_;
+};
 
 /// What a generator drew where, told while installed (record_draws): for the test that every
 /// branch of every draw is taken.
@@ -17,9 +45,9 @@ class DrawRecorder {
  public:
   virtual ~DrawRecorder() = default;
   /// A draw in [0, n) gave `value` at `site`.
-  virtual void drew(const std::source_location& site, std::uint64_t n, std::uint64_t value) = 0;
+  virtual void drew(DrawSite site, std::uint64_t n, std::uint64_t value) = 0;
   /// A chance of `percent` came out `yes` at `site`.
-  virtual void took_chance(const std::source_location& site, int percent, bool yes) = 0;
+  virtual void took_chance(DrawSite site, int percent, bool yes) = 0;
 };
 
 /// Installs `recorder` for this thread's draws (nullptr: none); returns the one it replaces.
@@ -29,9 +57,9 @@ class Choices {
  public:
   virtual ~Choices() = default;
   /// A choice in [0, n) (n >= 1); 0 is the simplest. `site`: the generator's line that draws it.
-  std::uint64_t draw(std::uint64_t n, const std::source_location& site = std::source_location::current());
+  std::uint64_t draw(std::uint64_t n, DrawSite site = DrawSite::current());
   /// A choice made with probability about percent/100; false is the simplest (a draw of 0).
-  bool chance(int percent, const std::source_location& site = std::source_location::current());
+  bool chance(int percent, DrawSite site = DrawSite::current());
 
  private:
   virtual std::uint64_t choose(std::uint64_t n) = 0;

@@ -89,7 +89,7 @@ SphereObbDistanceInput touching_on_a_grid(ValueSource& v) {
   const double unit = std::ldexp(1.0, v.small_int(40));
   const auto grid = [&v, unit](int limit) { return unit * v.small_int(limit); };
   SphereObbDistanceInput in;
-  in.box = {{grid(8), grid(8), grid(8)}, {unit * c.draw(5), unit * c.draw(5), unit * c.draw(5)}, Mat3::identity()};
+  in.box = {{grid(8), grid(8), grid(8)}, {unit * static_cast<double>(c.draw(5)), unit * static_cast<double>(c.draw(5)), unit * static_cast<double>(c.draw(5))}, Mat3::identity()};
   const Quadruple q = kQuadruples[c.draw(std::size(kQuadruples))];
   const double offset[3] = {static_cast<double>(q.a), static_cast<double>(q.b), static_cast<double>(q.c)};
   Vec3 local;

@@ -46,13 +46,13 @@ struct Site {
 
 class Tally final : public DrawRecorder {
  public:
-  void drew(const std::source_location& site, std::uint64_t n, std::uint64_t value) override {
+  void drew(DrawSite site, std::uint64_t n, std::uint64_t value) override {
     Site& s = at(site, "draw(" + std::to_string(n) + ")");
     s.n = n;
     ++s.reached;
     if (n <= 16) ++s.values[value];
   }
-  void took_chance(const std::source_location& site, int percent, bool yes) override {
+  void took_chance(DrawSite site, int percent, bool yes) override {
     Site& s = at(site, "chance(" + std::to_string(percent) + ")");
     s.n = 2;
     s.percent = percent;
@@ -62,7 +62,7 @@ class Tally final : public DrawRecorder {
   std::map<std::string, Site> sites;  // by line, column and what is drawn there (its n varies)
 
  private:
-  Site& at(const std::source_location& site, const std::string& what) {
+  Site& at(DrawSite site, const std::string& what) {
     const std::string line = line_key(site.file_name(), site.line());
     Site& s = sites[line + ":" + std::to_string(site.column()) + " " + what];
     s.line = line;
