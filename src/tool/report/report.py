@@ -199,6 +199,47 @@ def defect_of(group):
                     and not re.fullmatch(r"1e-?\d+", t))
 
 
+def new_groups_per_run(records):
+    """Per run, the groups of its findings that no earlier run had, in the order first met."""
+    seen, new_per_run = set(), []
+    for r in records:
+        groups = groups_of(r)
+        new_per_run.append([g for g in groups if g not in seen])
+        seen.update(groups)
+    return new_per_run
+
+
+def cards_order(new, groups):
+    """The new groups, the worst class first; within a class, those with a stored case (a picture
+    to look at), then the most often met."""
+    severity = {cls: i for i, (cls, _) in enumerate(CLASSES)}
+    return sorted(new, key=lambda g: (severity.get(groups[g][0]["class"], len(CLASSES)),
+                                      not any(f.get("case_file") for f in groups[g]), -len(groups[g]), g))
+
+
+def ledger_of(records, known):
+    """One row per defect of another library (its oracle_defect groups taken together over
+    features and margins): first and last run met, runs, groups, findings, and its link."""
+    defects = {}
+    for r in records:
+        for g, found in groups_of(r).items():
+            if found[0]["class"] != "oracle_defect":
+                continue
+            d = defects.setdefault(defect_of(g), {"query": found[0]["query"], "first": r["started"], "runs": set(),
+                                                  "groups": set(), "findings": 0})
+            d["last"] = r["started"]
+            d["runs"].add(r["_file"])
+            d["groups"].add(g)
+            d["findings"] += len(found)
+    ledger = []
+    for defect, d in sorted(defects.items(), key=lambda item: (item[1]["query"], item[0])):
+        link = next((k for k in known if k["match"] in defect), None)
+        ledger.append({"defect": defect, "query": d["query"], "first": d["first"], "last": d["last"],
+                       "times": len(d["runs"]), "groups": len(d["groups"]), "findings": d["findings"],
+                       "link": link.get("link") if link else None, "note": link.get("note") if link else None})
+    return ledger
+
+
 def triage(crosscheck, case_file):
     """The case's picture (inline SVG) and what triage says of it, or Nones."""
     if not crosscheck or not case_file or not os.path.isfile(case_file):
@@ -231,11 +272,7 @@ def main():
         print(f"crosscheck report: {e}", file=sys.stderr)
         return 2
 
-    seen, new_per_run = set(), []
-    for r in records:
-        groups = groups_of(r)
-        new_per_run.append([g for g in groups if g not in seen])
-        seen.update(groups)
+    new_per_run = new_groups_per_run(records)
 
     last = records[-1]
     campaigns = [r for r in records if r["run"] == "campaign"]
@@ -244,12 +281,7 @@ def main():
     parties, rows = grid_of(latest, records)
     cards = []
     latest_groups = groups_of(last)
-    severity = {cls: i for i, (cls, _) in enumerate(CLASSES)}
-    # The worst first; within a class, those with a stored case (a picture to look at), then the most often met.
-    ordered = sorted(new_per_run[-1], key=lambda g: (severity.get(latest_groups[g][0]["class"], len(CLASSES)),
-                                                     not any(f.get("case_file") for f in latest_groups[g]),
-                                                     -len(latest_groups[g]), g))
-    for g in ordered[:MAX_CARDS]:
+    for g in cards_order(new_per_run[-1], latest_groups)[:MAX_CARDS]:
         found = latest_groups[g]
         stored = next((f for f in found if f.get("case_file")), found[0])
         svg, said = triage(args.crosscheck, stored.get("case_file"))
@@ -258,24 +290,7 @@ def main():
                       "parties": stored.get("parties", {}), "margin": stored.get("margin"), "count": len(found),
                       "case_file": stored.get("case_file"), "svg": svg, "triage": said,
                       "colour": dict(CLASSES).get(stored["class"], CLEAN)})
-    # The ledger: one row per defect of another library (its oracle_defect groups taken together).
-    defects = {}
-    for r in records:
-        for g, found in groups_of(r).items():
-            if found[0]["class"] != "oracle_defect":
-                continue
-            d = defects.setdefault(defect_of(g), {"query": found[0]["query"], "first": r["started"], "runs": set(),
-                                                  "groups": set(), "findings": 0})
-            d["last"] = r["started"]
-            d["runs"].add(r["_file"])
-            d["groups"].add(g)
-            d["findings"] += len(found)
-    ledger = []
-    for defect, d in sorted(defects.items(), key=lambda item: (item[1]["query"], item[0])):
-        link = next((k for k in known if k["match"] in defect), None)
-        ledger.append({"defect": defect, "query": d["query"], "first": d["first"], "last": d["last"],
-                       "times": len(d["runs"]), "groups": len(d["groups"]), "findings": d["findings"],
-                       "link": link.get("link") if link else None, "note": link.get("note") if link else None})
+    ledger = ledger_of(records, known)
 
     findings_by_cell = {}
     for f in latest["findings"]:
