@@ -1,5 +1,5 @@
 // What a party got wrong, in a few words: the class of disagreement ("missed_touch",
-// "false_hit", ...) and, with the query kind, the group it names ("tri_tri.missed_touch"). The
+// "false_hit", ...) and, with the query kind, the group it names ("<kind>.missed_touch"). The
 // same group names a fuzz target's abort function (fuzz/impl_bug_groups.h), `fuzz-case`'s line,
 // a campaign's finding in JSON and the report's cards, so that a crash grouped by its stack and a
 // finding grouped on the page are the same group.
@@ -27,9 +27,9 @@ namespace cc::harness {
 #define CC_DISAGREEMENT_ENUMERATOR(name, ...) name,
 /// failed: the party threw, crashed, hung or gave no answer. missed_touch: it says miss where the
 /// shapes touch (exact margin 0); missed_hit: miss where they overlap; false_hit: hit where they
-/// are apart. Where the hit agrees, what comes with it is wrong: the first hit's parameters (a ray's
-/// t, a first contact time), the pairs named (meshes, broadphase), the corners of an intersection,
-/// or a distance or its closest points.
+/// are apart. Where the hit agrees, what comes with it is wrong: the first hit's parameters (a
+/// ray's t, a first contact time), the pairs named (two meshes, boxes over frames), the corners of
+/// an intersection, or a distance or its closest points.
 enum class Disagreement { CC_FOR_EACH_DISAGREEMENT(CC_DISAGREEMENT_ENUMERATOR) };
 #undef CC_DISAGREEMENT_ENUMERATOR
 
@@ -45,7 +45,7 @@ struct Disagreeing {
 /// is (agree, boundary, out of contract, undecided).
 std::optional<Disagreeing> disagreement_of(QueryKind kind, const Evaluation& e);
 
-/// "<kind>.<disagreement>", e.g. "tri_tri.missed_touch".
+/// "<kind>.<disagreement>", the kind by its name, e.g. "<kind>.false_hit".
 std::string group_name(QueryKind kind, Disagreement d);
 
 /// The group of the case's disagreement, or "-" when it has none.
