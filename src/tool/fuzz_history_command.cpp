@@ -36,8 +36,12 @@ const Json& member(const Json& object, const std::string& where, const char* key
   const std::string place = where + "/" + key;
   if (it == object.end()) throw BadReport(place, "missing");
   const bool number = type == Json::value_t::number_float;
-  if (number ? !it->is_number() : it->type() != type) throw BadReport(place, std::string("not ") + (number ? "a number" : Json(type).type_name()));
-  if (number && !(std::isfinite(it->get<double>()) && it->get<double>() >= 0)) throw BadReport(place, "not a finite number >= 0");
+  if (number ? !it->is_number() : it->type() != type) {
+    throw BadReport(place, std::string("not ") + (number ? "a number" : Json(type).type_name()));
+  }
+  if (number && !(std::isfinite(it->get<double>()) && it->get<double>() >= 0)) {
+    throw BadReport(place, "not a finite number >= 0");
+  }
   return *it;
 }
 
@@ -61,7 +65,8 @@ Json fuzz_record(const Json& report) {
   for (const auto& [target, figures] : targets.items()) {
     const std::string where = "/targets/" + target;
     if (!figures.is_object()) throw BadReport(where, "not an object");
-    for (const char* key : {"seconds", "execs_per_second", "features_before", "features_after", "coverage_before", "coverage_after"}) {
+    for (const char* key :
+         {"seconds", "execs_per_second", "features_before", "features_after", "coverage_before", "coverage_after"}) {
       member(figures, where, key, Json::value_t::number_float);
     }
     member(figures, where, "status", Json::value_t::string);
