@@ -10,6 +10,7 @@
 #include "harness/model/subject.h"
 #include "harness/processes/child.h"
 #include "harness/processes/evaluate_in_child.h"
+#include "harness/processes/subject_process.h"
 #include "harness/formats/number_text.h"
 #include "oracle/exact/exact_reference.h"
 #include "oracle/peers/peer_opinions.h"
@@ -38,6 +39,7 @@ std::optional<Evaluation> evaluate_again_within(const Input& input, double secon
   const double deadline = monotonic_seconds() + limit;  // both children share it
   // Cut short by the budget or the stop, not by the party: no answer at all.
   const auto cut_short = [&](const std::string& how) { return (stop && stop()) || (is_time_out(how) && limit < kPartyTimeLimit); };
+  ask_subject_afresh();  // a subject's server may have answered other cases before
   std::string how;
   if (auto e = evaluate_in_child(input, exact_reference(), peer_opinions(), limit, &how, stop)) return e;
   if (cut_short(how)) return std::nullopt;

@@ -162,7 +162,8 @@ TEST(SubjectCli, TheSubjectsFindingsComeFirstAndItsCasesAreNeverAnsweredByAnothe
 // A worker answers in a process with a history, replay in a fresh one: a subject whose answers
 // depend on what its process did before (right on its first 100 calls, touching boxes a miss
 // after) is wrong in the workers, right in a fresh process. Its findings are stored with the
-// fresh process's answers, the worker's in the note, so each replays unchanged.
+// fresh process's answers, the worker's in the note, so each replays unchanged, even after
+// a hundred others.
 TEST(SubjectCli, AFindingIsStoredWithTheAnswersOfAFreshProcess) {
   const TempFolder folder("crosscheck_subject_history");
   const std::string later = subject("wrong_later");
@@ -180,6 +181,15 @@ TEST(SubjectCli, AFindingIsStoredWithTheAnswersOfAFreshProcess) {
   EXPECT_EQ(replay.status, 0) << replay.out << replay.err;
   const std::string n = std::to_string(files.size());
   EXPECT_NE(replay.out.find(n + " cases replayed: " + n + " unchanged, 0 changed"), std::string::npos) << replay.out;
+
+  // Replay asks each case afresh, however many come before it: 120 copies of a finding, each
+  // as the first.
+  const fs::path copies = folder.path() / "copies";
+  fs::create_directories(copies);
+  for (int i = 0; i < 120; ++i) fs::copy_file(files.front(), copies / ("copy" + std::to_string(i) + ".json"));
+  const Outcome many = crosscheck({"replay", "--subject", later, copies.string()}, folder.path());
+  EXPECT_EQ(many.status, 0) << many.out << many.err;
+  EXPECT_NE(many.out.find("120 cases replayed: 120 unchanged, 0 changed"), std::string::npos) << many.out;
 }
 
 }  // namespace

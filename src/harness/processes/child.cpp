@@ -56,7 +56,8 @@ Child start_child(const std::function<int(int out)>& f, ChildGroup group) {
 
 namespace {
 
-// How often finish_child asks `stop`, and looks for the end of a child without a pipe.
+// How often finish_child asks `stop`, and at most how long it waits between looks for the end of a
+// child without a pipe.
 constexpr int kPollMs = 50;
 
 // Reaps pid: its end once it has ended (waiting for it when `block`), nothing while it runs.
@@ -130,6 +131,7 @@ ChildEnd finish_child(Child child, double timeout_seconds, const std::function<b
   std::string output;
   char chunk[65536];
   std::optional<ChildEnd> end;
+  int nap_ms = 1;  // without a pipe, the first looks come soon, then every kPollMs
   while (!end) {
     int wait_ms = -1;  // until the child writes or ends
     if (killed == Killed::no) {
@@ -173,7 +175,8 @@ ChildEnd finish_child(Child child, double timeout_seconds, const std::function<b
     } else if (wait_ms < 0) {
       end = reap(child.pid, true);
     } else if (!(end = reap(child.pid, false))) {
-      std::this_thread::sleep_for(std::chrono::milliseconds(std::min(wait_ms, kPollMs)));
+      std::this_thread::sleep_for(std::chrono::milliseconds(std::min(wait_ms, nap_ms)));
+      nap_ms = std::min(2 * nap_ms, kPollMs);  // a child about to end is not waited for 50 ms
     }
   }
   end->timed_out = killed == Killed::at_time_limit && end->signal == SIGKILL;

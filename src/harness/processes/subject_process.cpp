@@ -279,6 +279,10 @@ class IsolatedSubject final : public Subject {
   const SubjectIdentity& identity() const override { return identity_; }
   void set_call_seconds(double seconds) { call_seconds_ = seconds; }
   std::optional<std::string> take_printed() const { return std::exchange(printed_, std::nullopt); }
+  void end_this_processs_server() const {
+    if (server_.owner == ::getpid()) (void)end_server();
+    else forget_inherited_server();
+  }
 
   Answer ask(const Input& input) const override {
     const QueryKind kind = kind_of(input);
@@ -439,6 +443,10 @@ std::shared_ptr<Subject> load_subject(const std::string& path, double call_secon
 
 void set_call_seconds(Subject& subject, double call_seconds) {
   if (auto* isolated = dynamic_cast<IsolatedSubject*>(&subject)) isolated->set_call_seconds(call_seconds);
+}
+
+void ask_subject_afresh() {
+  if (const auto* isolated = dynamic_cast<const IsolatedSubject*>(subject_under_test())) isolated->end_this_processs_server();
 }
 
 std::optional<std::string> take_subject_output() {

@@ -39,6 +39,11 @@ class SubjectLoadError : public std::runtime_error {
 std::shared_ptr<Subject> load_subject(const std::string& path, double call_seconds,
                                       double load_seconds = kSubjectLoadSeconds);
 
+/// Ends the server this process runs for the subject under test, if it has one, so that the
+/// next question starts another: a process with no history, as a fresh command's. Nothing for a
+/// subject that load_subject did not load.
+void ask_subject_afresh();
+
 /// The first line the subject under test printed (on standard output or error, "standard
 /// output: <line>") in this process's calls since the last take; nothing if it printed none.
 /// Printing is also each such call's failure.

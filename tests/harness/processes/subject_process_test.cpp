@@ -4,7 +4,8 @@
 // hostile subject's fault (exit with status 0 or 3, abort, a crash, a hang, printing, closing or
 // writing descriptors, an answer that is neither 0 nor 1) as that call's failure: the caller
 // goes on, its own descriptors intact, and the next call is answered. In a campaign, a subject
-// that exits or prints on every call leaves the run going to its time, every case a finding.
+// that exits or prints on every call leaves the run going to its time, every case a finding;
+// asked afresh, a subject answers in a new server with no history.
 #include "harness/processes/subject_process.h"
 
 #include <fcntl.h>
@@ -241,6 +242,20 @@ TEST(SubjectProcess, EachFaultIsThatCallsFailureAndTheNextCallIsAnsweredAgain) {
   // Its crosscheck_tri_tri_intersection is no function of the interface: never looked up.
   EXPECT_FALSE(misbehaving->answers(QueryKind::tri_tri_intersection));
   EXPECT_EQ(misbehaving->identity().kinds, (std::vector<std::string>{"sphere_sphere", "aabb_aabb"}));
+}
+
+// A subject whose answers depend on its process's history (right on its first 100 calls,
+// touching boxes a miss after) is right again once asked afresh: a new server, no history.
+TEST(SubjectProcess, AskingAfreshStartsAServerWithNoHistory) {
+  const UnderTest later(load_subject(test_subject("hostile_wrong_later"), 5));
+  for (int call = 1; call <= 100; ++call) ASSERT_TRUE(ask_library(kTouching).hit) << "call " << call;
+  EXPECT_FALSE(ask_library(kTouching).hit);
+  ask_subject_afresh();
+  EXPECT_TRUE(ask_library(kTouching).hit);
+  EXPECT_TRUE(ask_library(kTouching).hit);
+  ask_subject_afresh();  // twice in a row: no server to end the second time
+  ask_subject_afresh();
+  EXPECT_TRUE(ask_library(kTouching).hit);
 }
 
 TEST(SubjectProcess, AFailureIsTheLibrarysInThatCaseAnImplBug) {
