@@ -11,6 +11,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
+#include <ctime>
 #include <functional>
 #include <fstream>
 #include <sstream>
@@ -226,6 +227,25 @@ TEST(Program, StopKillsItWithoutAPipeToo) {
   EXPECT_FALSE(end.timed_out);
   EXPECT_EQ(end.signal, SIGTERM);  // asked first; sleep does not defer it
   EXPECT_EQ(end.what(), "was stopped");
+}
+
+// Without a pipe to wait on, the parent looks for the program's end now and then: it does not
+// spin while the program runs (a spinning parent spends the program's 0.3 s on the processor).
+TEST(Program, AProgramWithoutAPipeIsWaitedForWithoutSpinning) {
+  const cc::test::TempFolder folder("child_nap");
+  ProgramIo to_a_file;
+  to_a_file.out = folder.path() / "log";
+  const auto cpu_seconds = [] {
+    timespec t{};
+    ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+  };
+  const double cpu_before = cpu_seconds();
+  const auto start = std::chrono::steady_clock::now();
+  const ChildEnd end = run_program({"sleep", "0.3"}, to_a_file, 5);
+  EXPECT_TRUE(end.succeeded()) << end.what();
+  EXPECT_GE(seconds_since(start), 0.3);
+  EXPECT_LT(cpu_seconds() - cpu_before, 0.1);
 }
 
 // A program that defers SIGTERM (as a child storing a case file does) gets SIGKILL a second later,
