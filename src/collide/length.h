@@ -41,6 +41,13 @@ struct LengthAndDirection {
   Vec3 direction;
 };
 inline LengthAndDirection length_and_direction(const Vec3& v) {
+  // The common case first: |v|^2 in [2^-998, 2^1000] puts v's largest component in [2^-500,
+  // 2^500], where MeasuredVector keeps v as it is: the same answer, bit for bit.
+  if (const double s = fp::sum3(v.x * v.x, v.y * v.y, v.z * v.z); s >= 0x1p-998 && s <= 0x1p1000) {
+    const double n = std::sqrt(s);
+    const double inverse = 1 / n;
+    return {n, {v.x * inverse, v.y * inverse, v.z * inverse}};
+  }
   const MeasuredVector m(v);
   const double n = m.root();
   if (!(n > 0)) return {};

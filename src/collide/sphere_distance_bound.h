@@ -2,6 +2,7 @@
 #pragma once
 
 #include "collide/fp.h"
+#include "collide/record_sink.h"
 #include "collide/obb.h"
 #include "collide/separation.h"
 #include "collide/sphere.h"

@@ -57,7 +57,8 @@ inline bool lexicographic_less(const Vec3& a, const Vec3& b) {
 }
 
 /// True when no component is NaN or infinite.
-inline bool finite(const Vec3& a) { return fp::finite(a.x) && fp::finite(a.y) && fp::finite(a.z); }
+/// (x - x is 0 for a finite x and NaN else: one comparison, no branch per component.)
+inline bool finite(const Vec3& a) { return (a.x - a.x) + (a.y - a.y) + (a.z - a.z) == 0; }
 
 /// A 3x3 matrix stored as three columns.
 struct Mat3 {
@@ -91,6 +92,9 @@ inline Vec3 transpose_times(const Mat3& m, const Vec3& v) {
 }
 
 /// True when no entry is NaN or infinite.
-inline bool finite(const Mat3& m) { return finite(m.col[0]) && finite(m.col[1]) && finite(m.col[2]); }
+inline bool finite(const Mat3& m) {
+  const Vec3 zero = (m.col[0] - m.col[0]) + (m.col[1] - m.col[1]) + (m.col[2] - m.col[2]);
+  return finite(zero);
+}
 
 }  // namespace cc

@@ -56,10 +56,17 @@ TEST(DistanceSphereSphere, TinyAndHugeScales) {
 }
 
 TEST(DistanceSphereSphere, OutsideTheDomainIsNaN) {
-  for (const Sphere& bad : {Sphere{{kNan, 0, 0}, 1}, Sphere{{0, 0, 0}, -1}, Sphere{{0, 0, 0}, HUGE_VAL}}) {
-    const Separation s = distance_sphere_sphere(bad, {{0, 0, 0}, 1});
-    EXPECT_TRUE(std::isnan(s.distance));
-    EXPECT_TRUE(std::isinf(s.distance_error));
+  // Each value of either ball: NaN, infinite, a negative radius.
+  const double kInf = HUGE_VAL;
+  for (const Sphere& bad : {Sphere{{kNan, 0, 0}, 1}, Sphere{{0, -kInf, 0}, 1}, Sphere{{0, 0, kNan}, 1},
+                            Sphere{{0, 0, 0}, -1}, Sphere{{0, 0, 0}, -0x1p-1074}, Sphere{{0, 0, 0}, kInf},
+                            Sphere{{0, 0, 0}, kNan}}) {
+    for (const bool first : {true, false}) {
+      const Sphere good{{0, 0, 0}, 1};
+      const Separation s = first ? distance_sphere_sphere(bad, good) : distance_sphere_sphere(good, bad);
+      EXPECT_TRUE(std::isnan(s.distance)) << bad.radius << (first ? " first" : " second");
+      EXPECT_TRUE(std::isinf(s.distance_error));
+    }
   }
 }
 
@@ -121,8 +128,24 @@ TEST(DistanceSphereObb, RotatedBoxesAgreeWithTheAxisAlignedOne) {
 }
 
 TEST(DistanceSphereObb, OutsideTheDomainIsNaN) {
-  EXPECT_TRUE(std::isnan(distance_sphere_obb({{0, 0, 0}, 1}, {{0, 0, 0}, {-1, 1, 1}, Mat3::identity()}).distance));
+  // A negative half extent on each axis, a NaN or an infinity in each part of either shape.
+  for (int i = 0; i < 3; ++i) {
+    Obb flipped = kBox;
+    flipped.half[i] = -flipped.half[i];
+    EXPECT_TRUE(std::isnan(distance_sphere_obb({{0, 0, 0}, 1}, flipped).distance)) << i;
+    Obb bad_axes = kBox;
+    bad_axes.axes.col[i][2 - i] = kNan;
+    EXPECT_TRUE(std::isnan(distance_sphere_obb({{0, 0, 0}, 1}, bad_axes).distance)) << i;
+    Obb bad_half = kBox;
+    bad_half.half[i] = HUGE_VAL;
+    EXPECT_TRUE(std::isnan(distance_sphere_obb({{0, 0, 0}, 1}, bad_half).distance)) << i;
+    Obb bad_center = kBox;
+    bad_center.center[i] = -HUGE_VAL;
+    EXPECT_TRUE(std::isnan(distance_sphere_obb({{0, 0, 0}, 1}, bad_center).distance)) << i;
+  }
   EXPECT_TRUE(std::isnan(distance_sphere_obb({{kNan, 0, 0}, 1}, kBox).distance));
+  EXPECT_TRUE(std::isnan(distance_sphere_obb({{0, 0, 0}, -1}, kBox).distance));
+  EXPECT_TRUE(std::isnan(distance_sphere_obb({{0, 0, 0}, HUGE_VAL}, kBox).distance));
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <limits>
+
 namespace cc {
 namespace {
 
@@ -30,6 +32,27 @@ TEST(UnitScaled, BringsTheLargestComponentIntoOneToTwo) {
   EXPECT_EQ(s.z, 0.0);
   EXPECT_EQ(unit_scaled(Vec3{}), Vec3{});
   EXPECT_EQ(unit_scaled(Vec3{6, 3, -1}), (Vec3{1.5, 0.75, -0.25}));
+}
+
+TEST(Finite, IsFalseForANaNOrAnInfinityInAnyComponentAndTrueForEveryFiniteValue) {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  for (const double finite_value : {0.0, -0.0, 1.0, -0x1.fffffffffffffp1023, 0x1.fffffffffffffp1023, 0x1p-1074}) {
+    EXPECT_TRUE(finite(Vec3{finite_value, -finite_value, finite_value})) << finite_value;
+    EXPECT_TRUE(finite(Mat3::from_columns({finite_value, 0, 0}, {0, finite_value, 0}, {0, 0, -finite_value})));
+  }
+  for (const double bad : {nan, -nan, inf, -inf}) {
+    for (int i = 0; i < 3; ++i) {
+      Vec3 v{1, 2, 3};
+      v[i] = bad;
+      EXPECT_FALSE(finite(v)) << bad << " at " << i;
+      for (int column = 0; column < 3; ++column) {
+        Mat3 m = Mat3::identity();
+        m.col[column] = v;
+        EXPECT_FALSE(finite(m)) << bad << " at " << i << " in column " << column;
+      }
+    }
+  }
+  EXPECT_FALSE(finite(Vec3{inf, -inf, 0}));  // infinities of both signs do not cancel
 }
 
 TEST(Mat3, TransposeTimesGivesCoordinatesAlongTheColumns) {
