@@ -2,6 +2,10 @@
 // (separation.h).
 #pragma once
 
+#include <algorithm>
+#include <cmath>
+
+#include "collide/length.h"
 #include "collide/obb.h"
 #include "collide/separation.h"
 #include "collide/sphere.h"
@@ -37,11 +41,15 @@ inline Separation distance_sphere_obb(const Sphere& a, const Obb& b);
 // costs as much as the work (and the caller keeps only what it reads).
 namespace detail {
 
-// Every input finite and the radii >= 0, in one comparison and no branch per value (x - x is
-// 0 for a finite x, NaN else).
+// Every input finite, the radii and half extents >= 0 (the axes' orthonormality is the
+// caller's), with no branch per value (x - x is 0 for a finite x, NaN else).
 inline bool in_domain(const Sphere& a, const Sphere& b) {
   const Vec3 zero = (a.center - a.center) + (b.center - b.center) + Vec3{a.radius - a.radius, b.radius - b.radius, 0};
-  return zero.x + zero.y + zero.z == 0 && std::min(a.radius, b.radius) >= 0;
+  return finite(zero) && std::min(a.radius, b.radius) >= 0;
+}
+inline bool in_domain(const Sphere& a, const Obb& b) {
+  const Vec3 zero = (a.center - a.center) + (b.center - b.center) + (b.half - b.half) + Vec3{a.radius - a.radius, 0, 0};
+  return finite(zero) && finite(b.axes) && std::min({a.radius, b.half.x, b.half.y, b.half.z}) >= 0;
 }
 
 template <class Records>
@@ -61,10 +69,7 @@ Separation sphere_sphere(const Sphere& a, const Sphere& b, Records& records) {
 
 template <class Records>
 Separation sphere_obb(const Sphere& a, const Obb& b, Records& records) {
-  const Vec3 zero = (a.center - a.center) + (b.center - b.center) + (b.half - b.half) + Vec3{a.radius - a.radius, 0, 0};
-  if (!(finite(zero) && finite(b.axes) && std::min({a.radius, b.half.x, b.half.y, b.half.z}) >= 0)) {
-    return Separation::outside_the_domain();
-  }
+  if (!in_domain(a, b)) return Separation::outside_the_domain();
   const Vec3 d = a.center - b.center;
   const Vec3 p = transpose_times(b.axes, d);  // the centre in the box's frame
   const bool inside = std::fabs(p.x) <= b.half.x && std::fabs(p.y) <= b.half.y && std::fabs(p.z) <= b.half.z;

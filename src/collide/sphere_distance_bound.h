@@ -2,8 +2,8 @@
 #pragma once
 
 #include "collide/fp.h"
-#include "collide/record_sink.h"
 #include "collide/obb.h"
+#include "collide/record_sink.h"
 #include "collide/separation.h"
 #include "collide/sphere.h"
 

@@ -279,7 +279,7 @@ class IsolatedSubject final : public Subject {
   const SubjectIdentity& identity() const override { return identity_; }
   void set_call_seconds(double seconds) { call_seconds_ = seconds; }
   std::optional<std::string> take_printed() const { return std::exchange(printed_, std::nullopt); }
-  void end_this_processs_server() const {
+  void end_server_of_this_process() const {
     if (server_.owner == ::getpid()) (void)end_server();
     else forget_inherited_server();
   }
@@ -446,7 +446,7 @@ void set_call_seconds(Subject& subject, double call_seconds) {
 }
 
 void ask_subject_afresh() {
-  if (const auto* isolated = dynamic_cast<const IsolatedSubject*>(subject_under_test())) isolated->end_this_processs_server();
+  if (const auto* isolated = dynamic_cast<const IsolatedSubject*>(subject_under_test())) isolated->end_server_of_this_process();
 }
 
 std::optional<std::string> take_subject_output() {
