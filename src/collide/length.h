@@ -14,17 +14,25 @@ inline Vec3 scaled(const Vec3& v, int e) { return {fp::scale2(v.x, -e), fp::scal
 /// v as its length is measured: v itself when its largest component lies in [2^-500, 2^500]
 /// (no square overflows, the largest is normal, and those that underflow err by 2^-1074
 /// against a sum of at least 2^-1000), else v times 2^-exponent with its largest component in
-/// [1, 2) (exact). For finite v; a zero v is itself.
+/// [1, 2) (exact). For finite v; a zero v is itself. The common case is told by the sum of
+/// squares alone: one in [2^-998, 2^1000] puts the largest component in [2^-500, 2^500].
 struct MeasuredVector {
   Vec3 v;
   int exponent = 0;
-  explicit MeasuredVector(const Vec3& w) : v(w) {
+  double sum_of_squares;  // of v, in an order-free sum (fp::sum3)
+  explicit MeasuredVector(const Vec3& w) : v(w), sum_of_squares(squares(w)) {
+    if (sum_of_squares >= 0x1p-998 && sum_of_squares <= 0x1p1000) return;
     const double m = max_abs(w);
-    if (m > 0 && (m < 0x1p-500 || m > 0x1p500)) exponent = fp::exponent_of(m), v = scaled(w, exponent);
+    if (m > 0 && (m < 0x1p-500 || m > 0x1p500)) {
+      exponent = fp::exponent_of(m), v = scaled(w, exponent), sum_of_squares = squares(v);
+    }
   }
   /// The measured vector's length (within 2.6u: a three-term sum of squares 3u, the square root
   /// u/2 more).
-  double root() const { return std::sqrt(fp::sum3(v.x * v.x, v.y * v.y, v.z * v.z)); }
+  double root() const { return std::sqrt(sum_of_squares); }
+
+ private:
+  static double squares(const Vec3& u) { return fp::sum3(u.x * u.x, u.y * u.y, u.z * u.z); }
 };
 
 /// |v| for finite v: within 2.6u, but for the scaling back, exact unless the length is subnormal.
@@ -41,13 +49,6 @@ struct LengthAndDirection {
   Vec3 direction;
 };
 inline LengthAndDirection length_and_direction(const Vec3& v) {
-  // The common case first: |v|^2 in [2^-998, 2^1000] puts v's largest component in [2^-500,
-  // 2^500], where MeasuredVector keeps v as it is: the same answer, bit for bit.
-  if (const double s = fp::sum3(v.x * v.x, v.y * v.y, v.z * v.z); s >= 0x1p-998 && s <= 0x1p1000) {
-    const double n = std::sqrt(s);
-    const double inverse = 1 / n;
-    return {n, {v.x * inverse, v.y * inverse, v.z * inverse}};
-  }
   const MeasuredVector m(v);
   const double n = m.root();
   if (!(n > 0)) return {};

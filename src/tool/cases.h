@@ -24,10 +24,10 @@ inline constexpr double kPartyTimeLimit = 20;
 /// reference first in a child (harness::evaluate_in_child, under kPartyTimeLimit), so that a
 /// party that crashes or hangs neither ends nor damages the caller, and no call leaves anything
 /// behind in it (each case is answered as a fresh process answers it). A subject under test is
-/// asked in its own process (harness/processes/subject_process.h), a fresh one for each case. When the child dies,
-/// crosscheck's library is asked alone in a child, and the case is rebuilt as the campaign
-/// rebuilds it (harness::evaluation_after_death): in the library if it fails there, else in
-/// the second opinions.
+/// asked in its own process (harness/processes/subject_process.h), a fresh one for each case.
+/// When the child dies, crosscheck's library is asked alone in a child, and the case is rebuilt
+/// as the campaign rebuilds it (harness::evaluation_after_death): in the library if it fails
+/// there, else in the second opinions.
 harness::Evaluation evaluate_surviving_crashes(const harness::Input& input);
 
 /// The same, for a case already answered elsewhere (a campaign's worker), within `seconds` and
