@@ -24,7 +24,7 @@ int cases_for(QueryKind kind) {
   switch (kind) {
     case QueryKind::ray_aabb:
     case QueryKind::sphere_sphere: return 3000;
-    case QueryKind::mesh_mesh: return 40;
+    case QueryKind::mesh_mesh: return 80;
     case QueryKind::ray_mesh: return 200;
     default: return 1000;
   }

@@ -15,7 +15,9 @@
 
 #include "harness/formats/input_json.h"
 #include "harness/formats/number_text.h"
+#include "harness/generation/generate.h"
 #include "harness/generation/touch.h"
+#include "harness/model/mesh_query.h"
 #include "oracle/exact/exact_reference.h"
 #include "case_budget.h"
 #include "properties/property.h"
@@ -82,6 +84,72 @@ TEST_P(Touch, MovedToTouchIsNeverApart) {
 
 INSTANTIATE_TEST_SUITE_P(EveryQuery, Touch, ::testing::ValuesIn(kAllQueryKinds),
                          [](const auto& p) { return std::string(name(p.param)); });
+
+// Inputs a case file may hold with nothing to move: a k-DOP of no points, a mesh of no vertices,
+// a broadphase of no frames. make_touching leaves them as they are (and does not crash on them).
+TEST(TouchNothing, AnInputWithNothingToTouchIsLeftAsItIs) {
+  int kdops = 0, meshes = 0, broadphases = 0;
+  const bool passed = check_property_with_choices("an input with nothing to touch is left as it is", 300, [&](Choices& choices) {
+    GenerateOptions options;
+    options.mesh_folder = fcl_mesh_folder() / "absent";  // procedural meshes: small and quick
+    const QueryKind kinds[] = {QueryKind::kdop_kdop, QueryKind::broadphase, QueryKind::mesh_mesh};
+    Input input = generate(kinds[choices.draw(3)], choices, options);
+    if (auto* k = std::get_if<KdopKdopInput>(&input)) {
+      (choices.chance(50) ? k->a : k->b).clear();
+      ++kdops;
+    } else if (auto* b = std::get_if<BroadphaseInput>(&input)) {
+      b->frames.clear();
+      ++broadphases;
+    } else {
+      MeshPair& m = std::get<MeshMeshInput>(input).meshes;
+      (choices.chance(50) ? m.a : m.b) = triangles_mesh(Mesh{});
+      ++meshes;
+    }
+    const Input before = input;
+    ValueSource values(choices, {});
+    make_touching(input, values);
+    RC_ASSERT(input == before);
+  });
+  EXPECT_TRUE(passed);
+  EXPECT_GT(kdops, 0);
+  EXPECT_GT(meshes, 0);
+  EXPECT_GT(broadphases, 0);
+}
+
+// A broadphase whose frames never hold two boxes (one slot, or boxes handed over frame to frame,
+// as a fuzz record's masks may have them): make_touching gives a frame a second box, face to
+// face with one it has.
+TEST(TouchNothing, ABroadphaseOfOneBoxAtATimeGetsASecondBoxTouchingIt) {
+  const exact::ExactRationalReference exact;
+  int one_slot = 0, handed_over = 0;
+  const bool passed = check_property_with_choices("a broadphase of one box at a time gets a touching second", 300, [&](Choices& choices) {
+    auto in = std::get<BroadphaseInput>(generate(QueryKind::broadphase, choices, {}));
+    if (choices.chance(50)) {
+      for (auto& frame : in.frames) frame.resize(1);
+      ++one_slot;
+    } else {  // frame f holds slot f's box alone, if any: some frames hold none
+      for (std::size_t f = 0; f < in.frames.size(); ++f) {
+        for (std::size_t i = 0; i < in.frames[f].size(); ++i) {
+          if (i != f) in.frames[f][i].reset();
+        }
+      }
+      ++handed_over;
+    }
+    Input input = in;
+    ValueSource values(choices, {});
+    make_touching(input, values);
+    const auto& touched = std::get<BroadphaseInput>(input);
+    RC_ASSERT(std::ranges::any_of(touched.frames, [](const auto& frame) {
+      return std::ranges::count_if(frame, [](const auto& box) { return box.has_value(); }) >= 2;
+    }));
+    const ExactVerdict v = exact.judge(input);
+    if (v.contract != Contract::in || !v.decided || std::isnan(v.margin)) return;
+    RC_ASSERT(std::fabs(v.margin) <= kRounding);
+  });
+  EXPECT_TRUE(passed);
+  EXPECT_GT(one_slot, 0);
+  EXPECT_GT(handed_over, 0);
+}
 
 }  // namespace
 }  // namespace cc::test

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <optional>
 
 #include "harness/model/parts.h"
 #include "harness/generation/rotation.h"
@@ -14,6 +15,14 @@ namespace {
 constexpr int kKs[] = {6, 14, 16, 18, 24, 26};
 constexpr std::uint8_t kTminInfinite = 0x10, kTmaxInfinite = 0x20;
 constexpr std::size_t kMaxPoints = 8, kMaxSoup = 4, kMaxBoxes = 8, kMaxFrames = 4, kMaxParts = 8;
+
+// The index of a rotation in table_rotation's table, if it is one of them.
+std::optional<std::size_t> table_rotation_index(const Mat3& m) {
+  for (std::size_t i = 0; i < 32; ++i) {
+    if (table_rotation(i) == m) return i;
+  }
+  return std::nullopt;
+}
 
 // A record being written: the tag's flags, the header bytes, the values.
 struct Writer {

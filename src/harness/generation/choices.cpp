@@ -12,25 +12,37 @@ std::uint64_t splitmix(std::uint64_t& x) {
 
 std::uint64_t rotl(std::uint64_t x, int k) { return (x << k) | (x >> (64 - k)); }
 
-thread_local DrawRecorder* t_recorder = nullptr;
+class NoDrawRecorder final : public DrawRecorder {
+ public:
+  void drew(DrawSite, std::uint64_t, std::uint64_t) override {}
+  void took_chance(DrawSite, int, bool) override {}
+};
+
+// Never null: a draw tells whichever recorder is installed, without a test of its own.
+thread_local DrawRecorder* t_recorder = &no_draw_recorder();
 
 }  // namespace
 
-DrawRecorder* record_draws(DrawRecorder* recorder) {
-  DrawRecorder* before = t_recorder;
-  t_recorder = recorder;
+DrawRecorder& no_draw_recorder() {
+  static NoDrawRecorder none;
+  return none;
+}
+
+DrawRecorder& record_draws(DrawRecorder& recorder) {
+  DrawRecorder& before = *t_recorder;
+  t_recorder = &recorder;
   return before;
 }
 
 std::uint64_t Choices::draw(std::uint64_t n, DrawSite site) {
   const std::uint64_t value = choose(n);
-  if (t_recorder != nullptr) t_recorder->drew(site, n, value);
+  t_recorder->drew(site, n, value);
   return value;
 }
 
 bool Choices::chance(int percent, DrawSite site) {
   const bool yes = choose(100) >= static_cast<std::uint64_t>(100 - percent);
-  if (t_recorder != nullptr) t_recorder->took_chance(site, percent, yes);
+  t_recorder->took_chance(site, percent, yes);
   return yes;
 }
 

@@ -50,8 +50,11 @@ class DrawRecorder {
   virtual void took_chance(DrawSite site, int percent, bool yes) = 0;
 };
 
-/// Installs `recorder` for this thread's draws (nullptr: none); returns the one it replaces.
-DrawRecorder* record_draws(DrawRecorder* recorder);
+/// The recorder installed at first: it keeps nothing.
+DrawRecorder& no_draw_recorder();
+
+/// Installs `recorder` for this thread's draws; returns the one it replaces (to put back).
+DrawRecorder& record_draws(DrawRecorder& recorder);
 
 class Choices {
  public:

@@ -44,8 +44,13 @@ RigidTransform fcl_style_pose(Choices& c) {
 void bisect_to_contact(MeshPair& m, Choices& c) {
   touch_at_vertices(m, c);
   const Vec3 start = m.pose_b.translation;
+  // Moved this far, b's origin is at least reach_a + reach_b + 1 from a's (the vertices met, each
+  // within its mesh's reach of its origin): the meshes are apart.
   const double far = 2 * (reach(*m.a.mesh) + reach(*m.b.mesh)) + 1;
-  Vec3 direction{between(c, -1, 1), between(c, -1, 1), between(c, -1, 1)};
+  // A generic direction, or one in a coordinate plane or along an axis (each component 0 a
+  // quarter of the time; none at all: along x).
+  Vec3 direction;
+  for (int k = 0; k < 3; ++k) direction[k] = c.chance(25) ? 0.0 : between(c, -1, 1);
   if (norm1(direction) == 0) direction = {1, 0, 0};
   direction = (1 / std::sqrt(dot(direction, direction))) * direction;
   const auto collides_at = [&](double s) {
@@ -54,7 +59,7 @@ void bisect_to_contact(MeshPair& m, Choices& c) {
     return !library_collide(trial, CollisionMode::first_hit).pairs.empty();
   };
   double in = 0, out = far;
-  if (!collides_at(in) || collides_at(out)) return;  // nothing to bisect (no pair at the start)
+  if (!collides_at(in)) return;  // nothing to bisect (no pair at the start)
   for (int step = 0; step < 64; ++step) {
     const double mid = 0.5 * (in + out);
     if (mid == in || mid == out) break;

@@ -86,9 +86,8 @@ Mat3 perturb_to_tolerance(ValueSource& v, const Mat3& rotation) {
   Mat3 s;
   for (int i = 0; i < 3; ++i) {
     for (int j = i; j < 3; ++j) {
-      const double entry = (c.chance(50) ? -0.5 : 0.5) * e;
-      s(i, j) += entry;
-      if (i != j) s(j, i) += entry;
+      s(i, j) += (c.chance(50) ? -0.5 : 0.5) * e;
+      s(j, i) = s(i, j);  // symmetric (on the diagonal, itself)
     }
   }
   Mat3 out;

@@ -16,7 +16,8 @@ double draw_size(ValueSource& values);
 /// Half extents with aspect ratios up to 2^40 (size on some axes, down to size 2^-40 on
 /// others), sometimes 0 (flat boxes, segments, points).
 Vec3 draw_aspect_extents(ValueSource& values, double size);
-/// A generic direction, not normalised (components up to 2 in magnitude, some 0).
+/// A generic direction, not normalised, never zero: each component 0 or of magnitude in
+/// [2^-3, 2).
 Vec3 draw_direction(ValueSource& values);
 /// A translation up to 2^40 times `size` in a generic direction (or none).
 Vec3 draw_far_offset(ValueSource& values, double size);

@@ -66,13 +66,6 @@ const Mat3& table_rotation(std::size_t index) {
   return table[index % table.size()];
 }
 
-std::optional<std::size_t> table_rotation_index(const Mat3& m) {
-  for (std::size_t i = 0; i < 32; ++i) {
-    if (table_rotation(i) == m) return i;
-  }
-  return std::nullopt;
-}
-
 Mat3 multiply(const Mat3& a, const Mat3& b) {
   Mat3 m;
   for (int j = 0; j < 3; ++j) m.col[j] = a * b.col[j];
@@ -102,8 +95,8 @@ Mat3 draw_rotation(ValueSource& values) {
       const double angle = 2 * M_PI * unit_interval(c);
       return about_axis(static_cast<int>(c.draw(3)), std::cos(angle), std::sin(angle));
     }
-    default: {
-      const auto q = [&c] { return 2 * unit_interval(c) - 1; };
+    default: {  // from a quaternion, each component 0 a quarter of the time (all four: none)
+      const auto q = [&c] { return c.chance(25) ? 0.0 : 2 * unit_interval(c) - 1; };
       double w = q(), x = q(), y = q(), z = q();
       if (w == 0 && x == 0 && y == 0 && z == 0) w = 1;
       return from_quaternion(w, x, y, z);

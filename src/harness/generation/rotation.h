@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstddef>
-#include <optional>
 
 #include "collide/vec3.h"
 #include "harness/generation/values.h"
@@ -12,7 +11,7 @@ namespace cc::harness {
 
 /// A rotation: identity, a signed permutation (exactly orthonormal), a small rotation about a
 /// coordinate axis with dyadic entries (orthonormal to within 2^-50), a rotation about an axis
-/// by a generic angle, or a random unit quaternion's matrix (orthonormal to a few u).
+/// by a generic angle, or a random quaternion's matrix (orthonormal to a few u; some components 0).
 Mat3 draw_rotation(ValueSource& values);
 
 /// A matrix close to `base`: equal, an entry nudged by a few ULPs, or composed with a tiny
@@ -28,8 +27,6 @@ Mat3 from_quaternion(double w, double x, double y, double z);
 /// A fixed table of 32 rotations: the 24 rotations of the cube (signed permutations with
 /// determinant 1, exact) and 8 generic ones; for records that name a rotation by a byte.
 const Mat3& table_rotation(std::size_t index);
-/// The index of a rotation in the table, if it is one of them.
-std::optional<std::size_t> table_rotation_index(const Mat3& m);
 
 /// The product a * b.
 Mat3 multiply(const Mat3& a, const Mat3& b);

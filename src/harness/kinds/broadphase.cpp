@@ -99,7 +99,8 @@ Answer full_sorts(const BroadphaseInput& in) {
   return a;
 }
 
-constexpr std::string_view kConfigurations[] = {"touching", "identical", "flat box", "added and removed", "many boxes"};
+constexpr std::string_view kConfigurations[] = {"touching",   "identical",          "flat box", "added and removed",
+                                                "many boxes", "one box at a time"};
 
 }  // namespace
 
@@ -115,8 +116,11 @@ const std::vector<Party<BroadphaseInput>>& Query<BroadphaseInput>::library_parti
 BroadphaseInput Query<BroadphaseInput>::generate(ValueSource& v, const GenerateOptions& options) {
   Choices& c = v.choices();
   const bool big = c.chance(5);
-  const std::size_t n = big ? 40 + c.draw(80) : 2 + c.draw(24);
-  const std::size_t frames = big ? 4 + c.draw(12) : 1 + c.draw(8);
+  // Now and then a relay: box i in frame i alone, no two boxes ever in the scene together,
+  // wherever they lie (and a frame or two with none at the end).
+  const bool relay = !big && c.chance(5);
+  const std::size_t n = big ? 40 + c.draw(80) : 2 + c.draw(relay ? 6 : 24);
+  const std::size_t frames = big ? 4 + c.draw(12) : relay ? n + c.draw(3) : 1 + c.draw(8);
   std::vector<Aabb> boxes;
   for (std::size_t i = 0; i < n; ++i) {
     if (!boxes.empty() && c.chance(15)) {
@@ -132,6 +136,10 @@ BroadphaseInput Query<BroadphaseInput>::generate(ValueSource& v, const GenerateO
   // When each box is in the scene: from an added frame to a removed one (and maybe back).
   std::vector<std::size_t> added(n, 0), removed(n, frames), readded(n, frames);
   for (std::size_t i = 0; i < n; ++i) {
+    if (relay) {
+      added[i] = i, removed[i] = i + 1;
+      continue;
+    }
     if (frames > 1 && c.chance(20)) added[i] = c.draw(frames);
     if (frames > 1 && c.chance(20)) removed[i] = added[i] + 1 + c.draw(frames - added[i]);
     if (removed[i] < frames && c.chance(50)) readded[i] = removed[i] + c.draw(frames - removed[i]);
@@ -205,7 +213,7 @@ Features Query<BroadphaseInput>::features(const BroadphaseInput& in) {
 std::span<const std::string_view> Query<BroadphaseInput>::configurations() { return kConfigurations; }
 
 void Query<BroadphaseInput>::recognise(const BroadphaseInput& in, Configurations& found) {
-  bool touching = false, identical = false, flat = false, added_and_removed = false;
+  bool touching = false, identical = false, flat = false, added_and_removed = false, one_at_a_time = in.frames.size() > 1;
   const std::size_t slots = in.frames.empty() ? 0 : in.frames[0].size();
   for (std::size_t i = 0; i < slots; ++i) {
     bool present = false, absent = false;
@@ -213,6 +221,7 @@ void Query<BroadphaseInput>::recognise(const BroadphaseInput& in, Configurations
     added_and_removed |= present && absent;
   }
   for (const auto& frame : in.frames) {
+    one_at_a_time &= std::ranges::count_if(frame, [](const auto& box) { return box.has_value(); }) <= 1;
     for (std::size_t i = 0; i < frame.size(); ++i) {
       if (!frame[i]) continue;
       flat |= zero_extents(frame[i]->hi - frame[i]->lo) > 0;
@@ -231,6 +240,7 @@ void Query<BroadphaseInput>::recognise(const BroadphaseInput& in, Configurations
   found.add("flat box", flat);
   found.add("added and removed", added_and_removed);
   found.add("many boxes", slots >= 40);
+  found.add("one box at a time", one_at_a_time);
 }
 
 std::span<const BoundTerm> Query<BroadphaseInput>::bound_terms() { return {}; }

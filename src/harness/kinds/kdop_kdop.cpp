@@ -64,8 +64,8 @@ KdopKdopInput kdops_at_the_bound(ValueSource& v, const GenerateOptions& options)
 
 // B's points moved so that the k-DOPs touch on one slab (with `nudged`, a few ULPs off).
 void shift_to_touch(KdopKdopInput& in, ValueSource& v, bool nudged) {
-  const auto dirs = kdop_directions(in.k);
-  if (dirs.empty() || in.a.empty() || in.b.empty()) return;
+  const auto dirs = kdop_directions(in.k);  // never empty: k is one of the six, from every source
+  if (in.a.empty() || in.b.empty()) return;
   const KdopDirection d = dirs[v.choices().draw(dirs.size())];
   const Vec3 dir{static_cast<double>(d.x), static_cast<double>(d.y), static_cast<double>(d.z)};
   // B's point least along the direction moved onto A's point most along it: the slabs along the

@@ -91,7 +91,7 @@ RayMeshInput ray_at_the_bound(ValueSource& v, const GenerateOptions& options) {
     const Vec3 direction = draw_direction(v);
     const Vec3 nudge = std::ldexp(1.0, -static_cast<int>(8 + c.draw(45))) * direction;
     d = (face.v[c.draw(3)] - target) + nudge;
-    if (!(max_abs(d) > 0)) d = draw_direction(v);
+    if (!(max_abs(d) > 0)) d = draw_direction(v);  // GCOVR_EXCL_BR_LINE: only if the nudge cancels exactly
   }
   const double distance = std::ldexp(1.0, v.small_int(40)) * size / max_abs(d);
   const bool behind = c.chance(25);

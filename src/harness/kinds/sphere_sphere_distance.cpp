@@ -27,11 +27,10 @@ SphereSphereDistanceInput at_a_gap(ValueSource& v) {
   const double size = draw_size(v);
   const Sphere a{v.point() + draw_far_offset(v, size), c.chance(15) ? 0.0 : size};
   const double rb = c.chance(15) ? 0.0 : std::ldexp(size, v.small_int(40));
-  const Vec3 w = draw_direction(v);
+  const Vec3 w = draw_direction(v);  // never zero
   const double length = std::sqrt(dot(w, w));
   double reach = a.radius + rb + draw_gap(c) * size;
   if (c.chance(20)) reach = std::fabs(a.radius - rb) * static_cast<double>(c.draw(5)) / 4;  // nested, inner ones touching
-  if (!(length > 0)) return {a, {a.center, rb}};
   return {a, {a.center + (std::max(reach, 0.0) / length) * w, rb}};
 }
 

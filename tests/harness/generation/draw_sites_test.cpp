@@ -96,7 +96,7 @@ std::set<std::string> drawing_lines() {
 const Tally& campaign_draws() {
   static const Tally tally = [] {
     Tally t;
-    DrawRecorder* before = record_draws(&t);
+    DrawRecorder& before = record_draws(t);
     for (QueryKind kind : kAllQueryKinds) {
       const int n = test::case_budget(kind, 3000);
       for (int i = 0; i < n; ++i) {
