@@ -220,34 +220,65 @@ folder_lines.append(f"| **all of src/ and oracle/** | {n} | {cell(lc, lt)} | {ce
 # Generators: every file of src/harness/generation/ whole; in src/harness/kinds/, the functions
 # that draw from a ValueSource or are named generate* (with their lambdas), by line range: from a
 # function's first line to the next function that is not nested in it.
-def branches(lines, lo, hi):
+def branches(lines, lo, hi, name=None):
     covered = total = 0
     for line in lines:
-        if lo <= line["line_number"] < hi:
+        if lo <= line["line_number"] < hi and (name is None or decides(name, line["line_number"])):
             for b in line.get("branches", []):
                 total += 1
                 covered += b["count"] > 0
     return covered, total
 
+# A line that decides: an if, a loop, a switch, a conditional expression or a short-circuit
+# operator in its code (not its comment). gcov also gives branches to lines that decide nothing
+# in the source: the compiler's, inlined from the standard library (a shared_ptr's reference
+# count, an optional's destructor, a static's guard).
+source_cache = {}
+def source_line(name, number):
+    if name not in source_cache:
+        try:
+            source_cache[name] = open(os.path.join(root, name), encoding="utf-8").read().splitlines()
+        except OSError:
+            source_cache[name] = []
+    lines = source_cache[name]
+    return lines[number - 1].strip() if 0 < number <= len(lines) else ""
+
+def decides(name, number):
+    code = source_line(name, number).split("//", 1)[0]
+    return re.search(r"\b(if|for|while|switch|case|default)\b|\?|&&|\|\|", code) is not None
+
 def is_generator(name):
     return "ValueSource&" in name or re.search(r"(^|::|\s)generate\w*\(", name) is not None
 
-gen_rows = ["| file | generator functions | branches |", "|---|---|---:|"]
+def missed(name, lines, lo, hi):
+    for line in lines:
+        if lo <= line["line_number"] < hi:
+            n = sum(b["count"] == 0 for b in line.get("branches", []))
+            if n:
+                missed_rows.append((name, line["line_number"], n, len(line["branches"])))
+
+gen_rows = ["| file | generator functions | branches | on lines that decide |", "|---|---|---:|---:|"]
 kind_rows = []
+missed_rows = []
 for f in sorted(detail["files"], key=lambda f: rel(f["file"])):
     name = rel(f["file"])
     lines = f["lines"]
     if name.startswith("src/harness/generation/"):
         c, t = branches(lines, 0, 1 << 30)
-        gen_rows.append(f"| `{name}` | whole file | {cell(c, t)} |")
+        dc, dt = branches(lines, 0, 1 << 30, name)
+        missed(name, lines, 0, 1 << 30)
+        gen_rows.append(f"| `{name}` | whole file | {cell(c, t)} | {cell(dc, dt)} |")
     elif name.startswith("src/harness/kinds/") and name.endswith(".cpp"):
         funcs = sorted({(fn["lineno"], fn["name"]) for fn in f.get("functions", [])})
-        picked, c, t = [], 0, 0
+        picked, c, t, dc, dt = [], 0, 0, 0, 0
         for i, (start, fname) in enumerate(funcs):
             if not is_generator(fname) or any(fname.startswith(p + "::") for _, p in funcs if p != fname and is_generator(p)):
                 continue
             end = next((s for s, n2 in funcs[i + 1:] if s > start and not n2.startswith(fname + "::")), 1 << 30)
             fc, ft = branches(lines, start, end)
+            fdc, fdt = branches(lines, start, end, name)
+            dc += fdc; dt += fdt
+            missed(name, lines, start, end)
             short = fname.split("(anonymous namespace)::")[-1].replace("cc::harness::", "")
             depth = 0  # the name without its parameters: up to the first '(' outside <...>
             for k, ch in enumerate(short):
@@ -256,8 +287,21 @@ for f in sorted(detail["files"], key=lambda f: rel(f["file"])):
                     short = short[:k]; break
             picked.append(short); c += fc; t += ft
         if picked:
-            kind_rows.append(f"| `{name}` | {', '.join(f'`{p}`' for p in sorted(set(picked)))} | {cell(c, t)} |")
+            kind_rows.append(f"| `{name}` | {', '.join(f'`{p}`' for p in sorted(set(picked)))} | {cell(c, t)} | {cell(dc, dt)} |")
 gen_rows += kind_rows
+
+# The branches of those rows not taken, each with its line; and the lines whose branches a marker
+# leaves out of the count (GCOVR_EXCL_BR_LINE), each with the reason written beside it.
+missed_lines = [f"- `{n}:{l}`: {m} of {t} not taken{'' if decides(n, l) else ' (the compiler’s: the line decides nothing)'}: `{source_line(n, l)}`"
+                for n, l, m, t in sorted(set(missed_rows))]
+marked_lines = []
+for folder in ["src/harness/generation", "src/harness/kinds"]:
+    for entry in sorted(os.listdir(os.path.join(root, folder))):
+        name = f"{folder}/{entry}"
+        for number, text in enumerate(open(os.path.join(root, name), encoding="utf-8").read().splitlines(), 1):
+            if "GCOVR_EXCL" in text:
+                code, _, reason = text.partition("// GCOVR_EXCL_BR_LINE")
+                marked_lines.append(f"- `{name}:{number}`: `{code.strip()}`: {reason.lstrip(': ').strip()}")
 
 cpu = "unknown"
 try:
@@ -302,9 +346,21 @@ Generated by `bench/coverage.sh`; do not edit by hand.
 
 Branches of `src/harness/generation/` per file, and of the generator functions of each kind in
 `src/harness/kinds/` (those that draw from a `ValueSource` or are named `generate*`, with the
-lambdas inside them), reached by {which}.
+lambdas inside them), reached by {which}: all that gcov counts, and those on lines that decide
+(an `if`, a loop, a `switch`, `?:`, `&&` or `||` in the line's code). gcov gives branches to
+lines that decide nothing in the source too: the compiler's, inlined from the standard library (a
+`shared_ptr`'s reference count, an `optional`'s destructor, a static's guard).
 
 {chr(10).join(gen_rows)}
+
+Branches of those not taken ({len(missed_lines)} lines):
+
+{chr(10).join(missed_lines) if missed_lines else "- none"}
+
+Lines whose branches are left out of the count as defensive (a `GCOVR_EXCL_BR_LINE` marker, with
+its reason; {len(marked_lines)} lines):
+
+{chr(10).join(marked_lines) if marked_lines else "- none"}
 """
 open(sys.argv[3], "w").write(page)
 EOF
