@@ -166,15 +166,15 @@ struct Search {
     return false;
   }
 
-  // The closest pair of each pair of edges, first that of the edges whose midpoints are
-  // nearest, then those of the others but for edges whose bounding boxes lie no nearer than the
-  // nearest pair so far (they hold no nearer pair, up to the boxes' rounding). Whether one is
-  // proven closest: it meets, or its direction separates the triangles with it at their
-  // extremes (the vertex off each edge no further along it than its witness on a, no nearer
-  // than its witness on b; the edges themselves lie so, their witnesses being their closest
-  // pair).
-  bool edge_pairs() {
-    int first = 0;
+  // The edge pairs: first that of the edges whose midpoints are nearest (first_edge_pair), then
+  // the others (other_edge_pairs) but for edges whose bounding boxes lie no nearer than the
+  // nearest pair so far (they hold no nearer pair, up to the boxes' rounding). Each returns
+  // whether a pair is proven closest: it meets, or its direction separates the triangles with it
+  // at their extremes (the vertex off each edge no further along it than its witness on a, no
+  // nearer than its witness on b; the edges themselves lie so, their witnesses being their
+  // closest pair).
+  int first = 0;  // the pair with the nearest midpoints, 3i + j
+  bool first_edge_pair() {
     double nearest = kInf;
     for (int k = 0; k < 9; ++k) {
       const int i = k / 3, j = k % 3;
@@ -182,7 +182,9 @@ struct Search {
       const double sq = plain_dot(d, d);
       if (sq < nearest) nearest = sq, first = k;
     }
-    if (edge_pair(first)) return true;
+    return edge_pair(first);
+  }
+  bool other_edge_pairs() {
     Vec3 lo_a[3], hi_a[3], lo_b[3], hi_b[3];
     for (int i = 0; i < 3; ++i) {
       lo_a[i] = min(a.v[i], a.v[next(i)]), hi_a[i] = max(a.v[i], a.v[next(i)]);
@@ -197,7 +199,7 @@ struct Search {
   }
 
   // The closest pair of edges i = k / 3 of a and j = k % 3 of b, kept when nearer than every pair
-  // before it; whether it is proven closest (edge_pairs).
+  // before it; whether it is proven closest (first_edge_pair).
   bool edge_pair(int k) {
     const int i = k / 3, j = k % 3;
     const auto [s, t] = detail::closest_parameters(a.e[i], b.e[j], a.v[i] - b.v[j], a.length2[i], b.length2[j],
@@ -220,22 +222,24 @@ bool straddles(const double h[3]) { return !((h[0] > 0 && h[1] > 0 && h[2] > 0) 
 //  - each triangle through the other's plane (the heights of its vertices over it of both signs,
 //    or 0), as where they meet: the crossings of edges through the other triangle; one whose
 //    witnesses meet is taken;
+//  - the edge pair with the nearest midpoints, taken where it meets or separates the triangles
+//    with its witnesses at their extremes (most apart pairs end here);
 //  - b wholly on one side of a's plane and its vertex nearest it over a's face (or the same with
 //    a and b exchanged): that vertex and its foot, a closest pair;
-//  - the edge pairs: one that meets or separates the triangles with its witnesses at their
-//    extremes is taken;
+//  - the other edge pairs, taken as the first;
 //  - else the nearest of all the candidates.
 Choice witnesses(const Local& a, const Local& b, double meets) {
-  Search search{a, b, meets, {}};
+  Search search{a, b, meets, {}, 0};
   double ha[3], hb[3];  // a's vertices over b's plane, b's over a's
   for (int k = 0; k < 3; ++k) hb[k] = plain_dot(b.v[k] - a.v[0], a.n), ha[k] = plain_dot(a.v[k] - b.v[0], b.n);
   const bool through = straddles(ha) && straddles(hb);
   if (through && (search.crossings(a, b, ha, false) || search.crossings(b, a, hb, true))) return search.best;
+  if (search.first_edge_pair()) return search.best;
   Place foot;
   int vertex = 0;
   if (!through && Search::vertex_over_face(a, b, hb, foot, vertex)) return {foot, {vertex, 0, 0}, -1, 0};
   if (!through && Search::vertex_over_face(b, a, ha, foot, vertex)) return {{vertex, 0, 0}, foot, -2, 0};
-  if (search.edge_pairs()) return search.best;
+  if (search.other_edge_pairs()) return search.best;
   search.vertices(a, b, false);
   search.vertices(b, a, true);
   if (!through) {
