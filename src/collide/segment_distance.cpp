@@ -19,26 +19,8 @@ std::pair<double, double> closest_segment_parameters(const Segment& a, const Seg
     const int e = fp::exponent_of(m);
     da = scaled(da, e), db = scaled(db, e), r = scaled(r, e);
   }
-  const double length2_a = dot(da, da), length2_b = dot(db, db);
-  // The parameter of b's point nearest a's point at s, and of a's point nearest b's point at t,
-  // each clamped to its segment (0 on a point segment).
-  const auto on_b_nearest = [&](double s) {
-    return length2_b > 0 ? std::clamp(dot(r + s * da, db) / length2_b, 0.0, 1.0) : 0.0;
-  };
-  const auto on_a_nearest = [&](double t) {
-    return length2_a > 0 ? std::clamp(dot(t * db - r, da) / length2_a, 0.0, 1.0) : 0.0;
-  };
-  // The distance is a convex quadratic in (s, t). Its minimiser on the lines, s0 = ((r x db).n) /
-  // n.n with n = da x db (0 for parallel or point segments, where every s is as good), is
-  // clamped to a; then b's point nearest it, then a's point nearest that: in exact arithmetic,
-  // the minimiser over the two segments. The cross products (Lagrange's identity) keep nearly
-  // parallel segments accurate: n errs by u |da| |db| per component, where
-  // |da|^2 |db|^2 - (da.db)^2 would err by u |da|^2 |db|^2 against the tiny |n|^2.
-  const Vec3 n = cross(da, db);
-  const double n2 = dot(n, n);
-  const double s0 = n2 > 0 ? std::clamp(dot(n, cross(db, r)) / n2, 0.0, 1.0) : 0.0;
-  const double t = on_b_nearest(s0);
-  return {on_a_nearest(t), t};
+  const auto fp_dot = [](const Vec3& x, const Vec3& y) { return dot(x, y); };
+  return detail::closest_parameters(da, db, r, dot(da, da), dot(db, db), fp_dot);
 }
 
 double segment_gap_along(const Segment& a, const Segment& b, const Vec3& direction) {
