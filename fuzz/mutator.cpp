@@ -20,6 +20,13 @@ constexpr double kSpecial[] = {0.0, -0.0, 1.0, -1.0, 0.5, 2.0, 0x1p-30, 0x1p30, 
                                0x1p300, 0x1p-300, std::numeric_limits<double>::infinity(),
                                -std::numeric_limits<double>::infinity(), std::numeric_limits<double>::quiet_NaN()};
 
+// The mutated record in place of the input, or libFuzzer's own mutation when it does not fit.
+std::size_t written(const std::vector<std::uint8_t>& bytes, std::uint8_t* data, std::size_t size, std::size_t max_size) {
+  if (bytes.size() > max_size) return LLVMFuzzerMutate(data, size, max_size);
+  std::memcpy(data, bytes.data(), bytes.size());
+  return bytes.size();
+}
+
 }  // namespace
 
 std::size_t mutate(QueryKind kind, std::uint8_t* data, std::size_t size, std::size_t max_size, unsigned int seed) {
@@ -42,23 +49,21 @@ std::size_t mutate(QueryKind kind, std::uint8_t* data, std::size_t size, std::si
       x = -x;
       break;
     }
-    case 4: {  // move one shape so that it touches the other
+    case 4: {  // move one shape so that it touches the other: its own record, as touch may
+               // change the shape (a second box put into a frame of a broadphase)
       ValueSource source(c, {});
       make_touching(mutated, source);
-      values = record_values(mutated);
-      break;
+      return written(encode_record(mutated), data, size, max_size);
     }
     default: return LLVMFuzzerMutate(data, size, max_size);
   }
   mutated = with_record_values(input, values);
   std::vector<std::uint8_t> bytes = encode_record(mutated);
-  if (bytes.size() > max_size) return LLVMFuzzerMutate(data, size, max_size);
   // Keep the flags and the header bytes of the original record (they read the same); the rest is
   // the mutated values.
   const std::size_t header = bytes.size() - 8 * record_values(mutated).size();
   for (std::size_t i = 0; i < header && i < size; ++i) bytes[i] = data[i];
-  std::memcpy(data, bytes.data(), bytes.size());
-  return bytes.size();
+  return written(bytes, data, size, max_size);
 }
 
 }  // namespace cc::fuzz
