@@ -66,18 +66,21 @@ TEST(MarginBisection, ReturnsAParameterOnTheSideAskedFor) {
     const double crossing = crossings[c.draw(std::size(crossings))];
     const double slope = std::ldexp(1.0, static_cast<int>(c.draw(81)) - 40) * (c.chance(20) ? 0x1p900 : 1.0);
     const double target = c.chance(50) ? 0.0 : std::ldexp(c.chance(50) ? 1.0 : -1.0, -40 - static_cast<int>(c.draw(14)));
-    // The band a domain-leaving shape leaves over: beyond the crossing, reached or not.
+    // The band a domain-leaving shape leaves over: beyond the crossing, reached or not, to the
+    // end or (a fifth of the time) over a stretch of 2^-12, with the domain beyond it again.
     const double band = crossing + std::ldexp(1.0, -static_cast<int>(c.draw(10)));
+    const double band_end = c.chance(20) ? band + 0x1p-12 : INFINITY;
     const Told told([=](double s) {
       const double m = slope * (crossing - s);  // > 0 (inside) below the crossing
+      const bool banded = s > band && s < band_end;
       ExactVerdict v = margin(m);
       switch (shape) {
         case line: break;
         case step: v.margin = s < crossing ? 1.0 : s > crossing ? -1.0 : 0.0; break;
-        case infinite_beyond: v.margin = s > band ? -INFINITY : m; break;
-        case nan_band: v.margin = s > band ? NAN : m; break;
-        case undecided_band: v.decided = !(s > band); break;
-        case out_of_contract_band: v.contract = s > band ? Contract::unspecified : Contract::in; break;
+        case infinite_beyond: v.margin = banded ? -INFINITY : m; break;
+        case nan_band: v.margin = banded ? NAN : m; break;
+        case undecided_band: v.decided = !banded; break;
+        case out_of_contract_band: v.contract = banded ? Contract::unspecified : Contract::in; break;
         case flat: v.margin = 0.25; break;
         case kShapes: break;
       }
