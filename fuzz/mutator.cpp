@@ -33,7 +33,6 @@ std::size_t mutate(QueryKind kind, std::uint8_t* data, std::size_t size, std::si
   RandomChoices c(seed);
   const Input input = decode_record(kind, {data, size});
   std::vector<double> values = record_values(input);
-  Input mutated = input;
   const auto pick = [&] { return static_cast<std::size_t>(c.draw(values.size())); };
   switch (values.empty() ? 5 : c.draw(7)) {
     case 0: values[pick()] = values[pick()]; break;  // copy one coordinate into another
@@ -52,12 +51,13 @@ std::size_t mutate(QueryKind kind, std::uint8_t* data, std::size_t size, std::si
     case 4: {  // move one shape so that it touches the other: its own record, as touch may
                // change the shape (a second box put into a frame of a broadphase)
       ValueSource source(c, {});
-      make_touching(mutated, source);
-      return written(encode_record(mutated), data, size, max_size);
+      Input touched = input;
+      make_touching(touched, source);
+      return written(encode_record(touched), data, size, max_size);
     }
     default: return LLVMFuzzerMutate(data, size, max_size);
   }
-  mutated = with_record_values(input, values);
+  const Input mutated = with_record_values(input, values);
   std::vector<std::uint8_t> bytes = encode_record(mutated);
   // Keep the flags and the header bytes of the original record (they read the same); the rest is
   // the mutated values.

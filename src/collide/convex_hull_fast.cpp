@@ -22,11 +22,10 @@ double cross2(double ax, double ay, double bx, double by) { return ax * by - ay 
 
 constexpr int kNext[3] = {1, 2, 0};  // (e + 1) % 3
 
-// x . y summed in order. The facets and their distances are a fitting heuristic with a
-// tolerance (what the hull keeps is certified by orientations, below), so they need not be
-// symmetric in the coordinates as the library's tests are (fp::sum3); they are the hull's
-// most frequent operations.
-double plain_dot(const Vec3& x, const Vec3& y) { return x.x * y.x + x.y * y.y + x.z * y.z; }
+// Dot products here sum in order (dot_in_order). The facets and their distances are a fitting
+// heuristic with a tolerance (what the hull keeps is certified by orientations, below), so they
+// need not be symmetric in the coordinates as the library's tests are (fp::sum3); they are the
+// hull's most frequent operations.
 
 // The buffers are kept from one hull to the next (one object per thread): a hierarchy computes
 // a hull per node, most of them of a few points.
@@ -84,7 +83,7 @@ class QuickHull {
     far = 0;
     double side = 0;
     for (Index i = 0; i < n; ++i) {
-      const double h = plain_dot(normal, q_[i] - q_[a]);
+      const double h = dot_in_order(normal, q_[i] - q_[a]);
       if (std::fabs(h) > far) far = std::fabs(h), d = i, side = h;
     }
     if (far <= eps_) return flat(normal, hull);
@@ -142,19 +141,19 @@ class QuickHull {
     bool alive = true;
   };
 
-  static double norm_squared(const Vec3& v) { return plain_dot(v, v); }
+  static double norm_squared(const Vec3& v) { return dot_in_order(v, v); }
   static Vec3 unit(const Vec3& v) {
     const double n = std::sqrt(norm_squared(v));
     return n > 0 ? (1 / n) * v : Vec3{0, 0, 0};
   }
-  [[gnu::always_inline]] double distance(const Face& f, Index i) const { return plain_dot(f.n, q_[i]) - f.offset; }
+  [[gnu::always_inline]] double distance(const Face& f, Index i) const { return dot_in_order(f.n, q_[i]) - f.offset; }
 
   [[gnu::always_inline]] int add_face(Index a, Index b, Index c) {
     Face& f = faces_.emplace_back();
     f.v = {a, b, c};
     f.adj = {-1, -1, -1};
     f.n = unit(cross(q_[b] - q_[a], q_[c] - q_[a]));
-    f.offset = plain_dot(f.n, q_[a]);
+    f.offset = dot_in_order(f.n, q_[a]);
     return static_cast<int>(faces_.size() - 1);
   }
 
@@ -318,7 +317,7 @@ class QuickHull {
     const Vec3 e2 = cross(normal, e1);
     std::vector<Planar>& q = planar_;
     q.clear();
-    for (Index i = 0; i < q_.size(); ++i) q.push_back({plain_dot(q_[i], e1), plain_dot(q_[i], e2), i});
+    for (Index i = 0; i < q_.size(); ++i) q.push_back({dot_in_order(q_[i], e1), dot_in_order(q_[i], e2), i});
     std::sort(q.begin(), q.end(), [](const Planar& a, const Planar& b) { return a.u != b.u ? a.u < b.u : a.v < b.v; });
     std::vector<Planar>& chain = chain_;
     chain.resize(2 * q.size());

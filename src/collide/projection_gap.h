@@ -28,7 +28,7 @@ inline double projection_gap(std::span<const Vec3> a, std::span<const Vec3> b, c
   // holds for any order; the gap then follows the axes' order only within it).
   if (a.empty() || b.empty()) return 0;
   const Vec3 unit = unit_scaled(direction);  // a direction only: no underflow in its products
-  const auto along = [&unit](const Vec3& v) { return unit.x * v.x + unit.y * v.y + unit.z * v.z; };
+  const auto along = [&unit](const Vec3& v) { return dot_in_order(unit, v); };
   const double scale = std::sqrt(along(unit));  // within 2u (the 3.6u below counts 2.6u)
   if (!(scale > 0) || !std::isfinite(scale)) return 0;
   constexpr double inf = std::numeric_limits<double>::infinity();

@@ -22,12 +22,8 @@ constexpr int other(int i) { return i == 0 ? 2 : i - 1; }  // the vertex off edg
 Vec3 min(const Vec3& p, const Vec3& q) { return {std::min(p.x, q.x), std::min(p.y, q.y), std::min(p.z, q.z)}; }
 Vec3 max(const Vec3& p, const Vec3& q) { return {std::max(p.x, q.x), std::max(p.y, q.y), std::max(p.z, q.z)}; }
 
-// max(|x|, |y|, |z|).
-double largest(const Vec3& p) { return std::max(std::max(std::fabs(p.x), std::fabs(p.y)), std::fabs(p.z)); }
-
-// x . y summed left to right: for choosing the witnesses only (their bounds do not depend on
-// the choice), where fp::sum3's symmetry buys nothing.
-double plain_dot(const Vec3& x, const Vec3& y) { return x.x * y.x + x.y * y.y + x.z * y.z; }
+// Dot products here sum left to right (dot_in_order): they choose the witnesses only, whose
+// bounds do not depend on the choice, where fp::sum3's symmetry buys nothing.
 
 // Where a witness lies on its triangle, in the forms its bound is derived for
 // (triangle_distance_bound.h): on edge `edge`, v[edge] + s (v[edge + 1] - v[edge]) with s in
@@ -61,11 +57,11 @@ struct Local {
     const auto scale = [&](const Vec3& x) { return factor != 0 ? factor * x : scaled(x, exponent); };
     for (int i = 0; i < 3; ++i) {
       v[i] = scale(offsets[i]), e[i] = scale(t.v[next(i)] - t.v[i]);
-      length2[i] = plain_dot(e[i], e[i]);
+      length2[i] = dot_in_order(e[i], e[i]);
     }
     const Vec3 e2 = -e[2];
     n = cross(e[0], e2);
-    const double nn = plain_dot(n, n);
+    const double nn = dot_in_order(n, n);
     // w = s e1 + t e2 + h n: (e2 x n) . e1 = n . n and (e2 x n) . e2 = 0 give s, (n x e1) the same
     // for t. Below 2^-1000 (a sliver far thinner than the pair), the triangle is taken as its edges.
     face = nn >= 0x1p-1000;
@@ -78,7 +74,7 @@ struct Local {
   // The face coordinates of local point x, when they put its foot on the face.
   bool foot(const Vec3& x, Place& at) const {
     const Vec3 w = x - v[0];
-    const double s = plain_dot(w, gs), t = plain_dot(w, gt);
+    const double s = dot_in_order(w, gs), t = dot_in_order(w, gt);
     if (!(s >= 0 && t >= 0 && s + t <= 1)) return false;
     at = {-1, s, t};
     return true;
@@ -110,7 +106,7 @@ struct Search {
   // Keeps the pair when nearer than every one before it; whether it is kept.
   bool keep(const Place& on_a, const Place& on_b, int features) {
     const Vec3 d = b.at(on_b) - a.at(on_a);
-    const double sq = plain_dot(d, d);
+    const double sq = dot_in_order(d, d);
     if (!(sq < best.square)) return false;
     best = {on_a, on_b, features, sq};
     return true;
@@ -179,7 +175,7 @@ struct Search {
     for (int k = 0; k < 9; ++k) {
       const int i = k / 3, j = k % 3;
       const Vec3 d = (b.v[j] + b.v[next(j)]) - (a.v[i] + a.v[next(i)]);
-      const double sq = plain_dot(d, d);
+      const double sq = dot_in_order(d, d);
       if (sq < nearest) nearest = sq, first = k;
     }
     return edge_pair(first);
@@ -193,7 +189,7 @@ struct Search {
     for (int k = 0; k < 9; ++k) {
       const int i = k / 3, j = k % 3;
       const Vec3 gap = max(max(lo_b[j] - hi_a[i], lo_a[i] - hi_b[j]), Vec3{});
-      if (k != first && plain_dot(gap, gap) < best.square && edge_pair(k)) return true;
+      if (k != first && dot_in_order(gap, gap) < best.square && edge_pair(k)) return true;
     }
     return false;
   }
@@ -203,13 +199,13 @@ struct Search {
   bool edge_pair(int k) {
     const int i = k / 3, j = k % 3;
     const auto [s, t] = detail::closest_parameters(a.e[i], b.e[j], a.v[i] - b.v[j], a.length2[i], b.length2[j],
-                                                    [](const Vec3& x, const Vec3& y) { return plain_dot(x, y); });
+                                                    [](const Vec3& x, const Vec3& y) { return dot_in_order(x, y); });
     const Place on_a{i, s, 0}, on_b{j, t, 0};
     // A proven pair is a closest one, so nearer than any before it: only a kept pair is tried.
     if (!keep(on_a, on_b, k)) return false;
     if (best.square <= meets) return true;
     const Vec3 pa = a.at(on_a), pb = b.at(on_b), v = pb - pa;
-    return plain_dot(v, a.v[other(i)] - pa) <= 0 && plain_dot(v, b.v[other(j)] - pb) >= 0;
+    return dot_in_order(v, a.v[other(i)] - pa) <= 0 && dot_in_order(v, b.v[other(j)] - pb) >= 0;
   }
 };
 
@@ -231,7 +227,7 @@ bool straddles(const double h[3]) { return !((h[0] > 0 && h[1] > 0 && h[2] > 0) 
 Choice witnesses(const Local& a, const Local& b, double meets) {
   Search search{a, b, meets, {}, 0};
   double ha[3], hb[3];  // a's vertices over b's plane, b's over a's
-  for (int k = 0; k < 3; ++k) hb[k] = plain_dot(b.v[k] - a.v[0], a.n), ha[k] = plain_dot(a.v[k] - b.v[0], b.n);
+  for (int k = 0; k < 3; ++k) hb[k] = dot_in_order(b.v[k] - a.v[0], a.n), ha[k] = dot_in_order(a.v[k] - b.v[0], b.n);
   const bool through = straddles(ha) && straddles(hb);
   if (through && (search.crossings(a, b, ha, false) || search.crossings(b, a, hb, true))) return search.best;
   if (search.first_edge_pair()) return search.best;
@@ -264,8 +260,8 @@ Separation triangle_triangle(const Triangle& a, const Triangle& b, Records& reco
   const Vec3 offsets_b[3] = {b.v[0] - a.v[0], b.v[1] - a.v[0], b.v[2] - a.v[0]};
   double extent = 0, magnitude = 0;
   for (int i = 0; i < 3; ++i) {
-    extent = std::max(extent, std::max(largest(offsets_a[i]), largest(offsets_b[i])));
-    magnitude = std::max(magnitude, std::max(largest(a.v[i]), largest(b.v[i])));
+    extent = std::max(extent, std::max(max_abs(offsets_a[i]), max_abs(offsets_b[i])));
+    magnitude = std::max(magnitude, std::max(max_abs(a.v[i]), max_abs(b.v[i])));
   }
   const int exponent = extent > 0 ? fp::exponent_of(extent) : 0;
   // 2^-exponent as one factor where it is a normal double, else 0 (scaled one value at a time).

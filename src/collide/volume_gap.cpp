@@ -9,7 +9,6 @@
 namespace cc {
 namespace {
 
-double dot3(const Vec3& x, const Vec3& y) { return x.x * y.x + x.y * y.y + x.z * y.z; }
 double sum_abs(const Vec3& v) { return std::fabs(v.x) + std::fabs(v.y) + std::fabs(v.z); }
 
 // The gap along a direction n, given its numerator |n . d| - sum h_i |n . a_i| - sum h_j |n . b_j|
@@ -46,9 +45,9 @@ double volume_gap(const Obb& a, const Obb& b) {
   // Every dot the seven directions need, once: a_i . a_j, b_i . b_j, a_i . b_j, a_i . d, b_j . d.
   double aa[3][3], bb[3][3], ab[3][3], ad[3], bd[3];
   for (int i = 0; i < 3; ++i) {
-    for (int j = i; j < 3; ++j) aa[i][j] = aa[j][i] = dot3(ax[i], ax[j]), bb[i][j] = bb[j][i] = dot3(bx[i], bx[j]);
-    for (int j = 0; j < 3; ++j) ab[i][j] = dot3(ax[i], bx[j]);
-    ad[i] = dot3(ax[i], d), bd[i] = dot3(bx[i], d);
+    for (int j = i; j < 3; ++j) aa[i][j] = aa[j][i] = dot_in_order(ax[i], ax[j]), bb[i][j] = bb[j][i] = dot_in_order(bx[i], bx[j]);
+    for (int j = 0; j < 3; ++j) ab[i][j] = dot_in_order(ax[i], bx[j]);
+    ad[i] = dot_in_order(ax[i], d), bd[i] = dot_in_order(bx[i], d);
   }
   double s = sum_abs(d);
   for (int i = 0; i < 3; ++i) s += a.half[i] * sum_abs(ax[i]) + b.half[i] * sum_abs(bx[i]);
@@ -59,7 +58,7 @@ double volume_gap(const Obb& a, const Obb& b) {
     return b.half[0] * std::fabs(along_b[0]) + b.half[1] * std::fabs(along_b[1]) + b.half[2] * std::fabs(along_b[2]);
   };
   // The line of the centres.
-  double best = gap_along(dot3(d, d) - radius_a(ad) - radius_b(bd), dot3(d, d), max_abs(d), s, d);
+  double best = gap_along(dot_in_order(d, d) - radius_a(ad) - radius_b(bd), dot_in_order(d, d), max_abs(d), s, d);
   for (int i = 0; i < 3; ++i) {
     // a's axis i, and b's.
     const double ba[3] = {ab[0][i], ab[1][i], ab[2][i]};
