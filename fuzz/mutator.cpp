@@ -49,7 +49,7 @@ std::size_t mutate(QueryKind kind, std::uint8_t* data, std::size_t size, std::si
       break;
     }
     case 4: {  // move one shape so that it touches the other: its own record, as touch may
-               // change the shape (a second box put into a frame of a broadphase)
+               // change the record's shape (a second box put into a frame that had one)
       ValueSource source(c, {});
       Input touched = input;
       make_touching(touched, source);
