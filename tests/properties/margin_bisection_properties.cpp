@@ -57,12 +57,14 @@ ExactVerdict margin(double m) {
 enum Shape { line, step, infinite_beyond, nan_band, undecided_band, out_of_contract_band, flat, kShapes };
 
 TEST(MarginBisection, ReturnsAParameterOnTheSideAskedFor) {
-  int met[kShapes] = {}, adjacent = 0, none = 0, found = 0, gridded = 0;
+  int met[kShapes] = {}, adjacent = 0, none = 0, found = 0, gridded = 0, overflowing = 0;
   const bool passed = check_property_with_choices("bisect_to_margin returns a parameter on the side asked for", 3000,
                                                   [&](Choices& c) {
     const auto shape = static_cast<Shape>(c.draw(kShapes));
-    const double crossings[] = {0.0, std::numeric_limits<double>::denorm_min(), 0x1p-1060, 1.3, 0x1p-30,
-                                static_cast<double>(c.draw(1000)) / 997};
+    // Among the subnormals: crossings at even and odd multiples of the smallest, so that the
+    // midpoint of the last two ends rounds onto either of them.
+    const double d = std::numeric_limits<double>::denorm_min();
+    const double crossings[] = {0.0, d, 3 * d, 0x1p-1060, 1.3, 0x1p-30, static_cast<double>(c.draw(1000)) / 997};
     const double crossing = crossings[c.draw(std::size(crossings))];
     const double slope = std::ldexp(1.0, static_cast<int>(c.draw(81)) - 40) * (c.chance(20) ? 0x1p900 : 1.0);
     const double target = c.chance(50) ? 0.0 : std::ldexp(c.chance(50) ? 1.0 : -1.0, -40 - static_cast<int>(c.draw(14)));
@@ -87,7 +89,9 @@ TEST(MarginBisection, ReturnsAParameterOnTheSideAskedFor) {
       return v;
     });
     // The ends: either side of the crossing (near it or far), both below it, equal, or reversed.
-    const double near = std::ldexp(1.0, -static_cast<int>(c.draw(60)));
+    // A tenth of the time the first is 2^60..2^70 away, so that with the steepest slopes the
+    // secant's product overflows while the search looks for the crossing.
+    const double near = std::ldexp(1.0, c.chance(10) ? 60 + static_cast<int>(c.draw(11)) : -static_cast<int>(c.draw(60)));
     double s0 = crossing - near, s1 = crossing + std::ldexp(1.0, -static_cast<int>(c.draw(60)));
     switch (c.draw(4)) {
       case 0: s1 = s0 - near; break;  // both below: the crossing is looked for
@@ -100,6 +104,9 @@ TEST(MarginBisection, ReturnsAParameterOnTheSideAskedFor) {
     const bool on_a_grid = c.chance(20);
     const Family family = on_a_grid ? Family(slid_on_a_grid) : Family(slid);
     ++met[shape];
+    // Ends on one side whose secant's product (margin times step) overflows.
+    const double f1 = slope * (crossing - s1);
+    overflowing += shape == line && s1 < s0 && std::isfinite(f1) && std::isinf(f1 * (s1 - s0));
     gridded += on_a_grid;
     const auto s = bisect_to_margin(family, s0, s1, target, side, told, budget);
     const bool budget_left = told.judgements < budget;
@@ -127,6 +134,7 @@ TEST(MarginBisection, ReturnsAParameterOnTheSideAskedFor) {
   EXPECT_GT(found, 300);
   EXPECT_GT(none, 100);
   EXPECT_GT(gridded, 100);
+  EXPECT_GT(overflowing, 0);
 }
 
 }  // namespace

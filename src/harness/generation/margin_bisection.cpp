@@ -84,55 +84,56 @@ std::optional<double> bisect_to_margin(const Family& family, double s0, double s
   Point a{s0, *f0, search.at(s0)}, b{s1, *f1, search.at(s1)};
   if (!inside(a.f)) std::swap(a, b);
   std::optional<Point> before_a, before_b;  // the previous point on each side
-  std::optional<double> landing;            // a secant's landing, galloped away from
-  bool landing_inside = false;
+  double landing = 0;                       // a secant's landing, galloped away from while galloping
+  bool galloping = false, landing_inside = false;
   int gallop = 0;
-  const auto secant = [](const Point& p, const Point& q) { return p.s - p.f * (p.s - q.s) / (p.f - q.f); };
-  int gallop_steps = 0;  // galloping steps taken, identical cases included
   for (int step = 0;; ++step) {
     double m = between(a.s, b.s);
     if (m == a.s) break;  // adjacent
     const double lo = std::min(a.s, b.s), hi = std::max(a.s, b.s);
     const auto within = [lo, hi](double x) { return x > lo && x < hi; };
+    // The secant through an end and the previous point on its side, when it lands inside.
+    const auto secant_from = [&](const Point& p, const std::optional<Point>& q) -> std::optional<double> {
+      if (!q || !std::isfinite(p.f) || !std::isfinite(q->f) || p.f == q->f) return std::nullopt;
+      const double x = p.s - p.f * (p.s - q->s) / (p.f - q->f);
+      return within(x) ? std::optional(x) : std::nullopt;
+    };
     bool secant_step = false;
-    if (landing) {
+    if (galloping) {
       const double other = landing_inside ? b.s : a.s;
-      const double ulp = std::fabs(std::nextafter(*landing, other) - *landing);
-      const double next = *landing + std::copysign(std::ldexp(ulp, 2 * ++gallop), other - *landing);
-      if (within(next) && gallop <= 4 && ++gallop_steps < 64) {
+      const double ulp = std::fabs(std::nextafter(landing, other) - landing);
+      const double next = landing + std::copysign(std::ldexp(ulp, 2 * ++gallop), other - landing);
+      // Past four steps, or outside the bracket, the landing was far off: back to secants. (Each
+      // step is judged or moves an end inward, so galloping ends.)
+      if (within(next) && gallop <= 4) {
         m = next;
       } else {
-        landing.reset();  // the landing was far off: back to secants
+        galloping = false;
       }
     }
-    if (!landing && step % 4 != 3) {
-      for (const auto& [p, q] : {std::pair{b, before_b}, std::pair{a, before_a}}) {
-        if (!q || !std::isfinite(p.f) || !std::isfinite(q->f) || p.f == q->f) continue;
-        const double x = secant(p, *q);
-        if (within(x)) {
-          m = x, secant_step = true;
-          break;
-        }
-      }
+    if (!galloping && step % 4 != 3) {
+      std::optional<double> x = secant_from(b, before_b);
+      if (!x) x = secant_from(a, before_a);
+      if (x) m = *x, secant_step = true;
     }
     if (search.exhausted()) break;  // the ends are on their sides, only not adjacent
     // The family rounds: a parameter may give an end's very case, which needs no judgement.
     Input input = search.at(m);
     if (input == a.input || input == b.input) {
       (input == a.input ? a : b).s = m;
-      if (landing) --gallop;
+      if (galloping) --gallop;
       continue;
     }
     const auto fm = search.value(input);
     if (!fm) return std::nullopt;
-    const bool crossed = landing && inside(*fm) != landing_inside;
+    const bool crossed = galloping && inside(*fm) != landing_inside;
     if (inside(*fm)) {
       before_a = a, a = {m, *fm, std::move(input)};
     } else {
       before_b = b, b = {m, *fm, std::move(input)};
     }
-    if (secant_step) landing = m, landing_inside = inside(*fm), gallop = 0, gallop_steps = 0;
-    if (crossed) landing.reset();
+    if (secant_step) landing = m, landing_inside = inside(*fm), gallop = 0, galloping = true;
+    if (crossed) galloping = false;
   }
   return side == Side::inside ? a.s : b.s;
 }
