@@ -44,7 +44,10 @@ Obb draw_obb(ValueSource& v, const GenerateOptions& options) {
   b.axes = draw_rotation(v);
   if (options.out_of_contract) {
     if (v.choices().chance(10)) b.axes = draw_non_orthonormal(v);
-    if (v.choices().chance(10)) b.half[static_cast<int>(v.choices().draw(3))] = -v.length() - 1;
+    if (v.choices().chance(10)) {
+      const double negative = -v.length() - 1;  // drawn before its component
+      b.half = with_one_component(b.half, negative, v.choices());
+    }
   }
   return b;
 }

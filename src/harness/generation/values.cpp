@@ -105,4 +105,9 @@ Vec3 ValueSource::point() {
   return {x, y, z};
 }
 
+Vec3 with_one_component(Vec3 p, double x, Choices& c) {
+  p[static_cast<int>(c.draw(3))] = x;
+  return p;
+}
+
 }  // namespace cc::harness

@@ -99,4 +99,8 @@ class ValueSource {
   PartsDrawn parts_;
 };
 
+/// `p` with one of its components, drawn from `c`, replaced by `x`: an out-of-contract case's
+/// one bad coordinate (a NaN, an infinity, a negative extent).
+Vec3 with_one_component(Vec3 p, double x, Choices& c);
+
 }  // namespace cc::harness

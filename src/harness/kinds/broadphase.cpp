@@ -181,7 +181,10 @@ void Query<BroadphaseInput>::touch(BroadphaseInput& in, ValueSource& v) {
     if (frame.size() < 2) {
       for (auto& other : in.frames) other.resize(2);  // every frame has the same slots
     }
-    if (present[f].empty()) frame[0] = Aabb{{0, 0, 0}, {1, 1, 1}}, present[f] = {0};
+    if (present[f].empty()) {  // an empty frame: a unit box to start from
+      frame[0] = Aabb{{0, 0, 0}, {1, 1, 1}};
+      present[f] = {0};
+    }
     const std::size_t held = present[f][0], empty = held == 0 ? 1 : 0;
     frame[empty] = frame[held];
     put_face_to_face(*frame[held], *frame[empty], c);

@@ -15,6 +15,7 @@
 #include "harness/generation/regimes.h"
 #include "harness/generation/rotation.h"
 #include "harness/generation/triangles.h"
+#include "harness/generation/values.h"
 #include "harness/judging/configurations.h"
 #include "harness/judging/features.h"
 #include "harness/model/mesh_collide.h"
@@ -188,8 +189,8 @@ RayMeshInput Query<RayMeshInput>::generate(ValueSource& v, const GenerateOptions
   }
   if (options.out_of_contract && c.chance(10)) {
     switch (c.draw(3)) {
-      case 0: r.origin[static_cast<int>(c.draw(3))] = NAN; break;
-      case 1: r.dir[static_cast<int>(c.draw(3))] = INFINITY; break;
+      case 0: r.origin = with_one_component(r.origin, NAN, c); break;
+      case 1: r.dir = with_one_component(r.dir, INFINITY, c); break;
       default: std::swap(r.tmin, r.tmax), r.tmin = 1, r.tmax = 0;
     }
   }

@@ -92,5 +92,20 @@ TEST(ValueSource, DrawsOnlyWhatItsRangeAllows) {
   EXPECT_EQ(drawn.greatest[generic], 30);
 }
 
+TEST(WithOneComponent, ReplacesEachComponentInTurnAndNoOther) {
+  RandomChoices c(7);
+  std::set<int> replaced;
+  for (int i = 0; i < 100; ++i) {
+    const Vec3 p = with_one_component({1, 2, 3}, NAN, c);
+    int nans = 0;
+    for (int k = 0; k < 3; ++k) {
+      if (std::isnan(p[k])) ++nans, replaced.insert(k);
+      else EXPECT_EQ(p[k], k + 1);
+    }
+    EXPECT_EQ(nans, 1);
+  }
+  EXPECT_EQ(replaced.size(), 3u);
+}
+
 }  // namespace
 }  // namespace cc::harness
