@@ -55,6 +55,7 @@ struct MutateArgs {
   std::string report;
   std::string json;
   std::string resume;
+  std::string first_catchers;
 };
 
 // A scratch copy of the tree with its own build directory.
@@ -209,16 +210,17 @@ struct CtestOutcome {
 constexpr const char* kCatalogueLabel = "^catalogue$";
 
 // Runs the tests of a label, leaving out those matching `exclude` (a regex; empty: none) and
-// those of kCatalogueLabel. With `limits`, ctest is stopped (and the test counts as failed by a
+// those of kCatalogueLabel; with `only` (a regex), only the tests it matches. With `limits`, ctest is stopped (and the test counts as failed by a
 // timeout) when the test it runs passes its limit: ctest runs one test at a time, and its log
 // names each test as it starts.
 CtestOutcome run_ctest(const Worker& w, const std::string& label, const TestTimeLimits* limits, const fs::path& log,
-                       bool stop_on_failure, const std::string& exclude) {
+                       bool stop_on_failure, const std::string& exclude, const std::string& only = {}) {
   fs::remove(log);
   std::vector<std::string> argv = {"ctest", "--test-dir", w.build.string(), "-L",  "^" + label + "$", "--timeout",
                                    "14400", "-LE",        kCatalogueLabel,  "--output-on-failure", "-j1"};
   if (stop_on_failure) argv.push_back("--stop-on-failure");
   if (!exclude.empty()) argv.insert(argv.end(), {"-E", exclude});
+  if (!only.empty()) argv.insert(argv.end(), {"-R", only});
   RunningTest running;
   std::optional<std::string> watched;  // the test running now, and since when
   double started = 0;
@@ -277,9 +279,11 @@ std::string line_with(const fs::path& log, const std::string& needle, bool at_st
   return {};
 }
 
-// Applies one mutant in a worker's tree, runs the checks, reverts it.
+// Applies one mutant in a worker's tree, runs the checks, reverts it. With `first`, the test
+// that caught it in an earlier run is run alone before the labels: a catch is a catch whatever
+// runs, and it usually catches it again in a few seconds.
 void run_mutant(const Worker& w, const MutateArgs& args, const std::string& exclude, const TestTimeLimits& limits,
-                MutantResult& result) {
+                const Catcher* first, MutantResult& result) {
   const Mutant& m = result.mutant;
   const fs::path file = w.tree / m.file;
   const double start = monotonic_seconds();
@@ -305,30 +309,38 @@ void run_mutant(const Worker& w, const MutateArgs& args, const std::string& excl
 
   const std::string stem = (w.logs / m.id).string();
   result.status = MutantStatus::survived;
-  for (std::size_t i = 0; i < args.labels.size(); ++i) {
-    const std::string& label = args.labels[i];
+  // Builds what the tests of label i run and runs them (with `only`, those it matches): true
+  // when the mutant's checks are over (caught, or they could not go on).
+  const auto checked_by = [&](std::size_t i, const std::string& only, const fs::path& log) {
     const fs::path build_log = stem + ".build.log";
     if (!build(w, w.label_targets[i], args, build_log, result.build_seconds)) {
       result.status = interrupted() ? MutantStatus::not_run : MutantStatus::build_failed;
       result.note = "see " + build_log.string();
-      result.seconds = monotonic_seconds() - start;
-      return;
+      return true;
     }
-    const CtestOutcome c = run_ctest(w, label, &limits, stem + "." + label + ".log", true, exclude);
+    const CtestOutcome c = run_ctest(w, args.labels[i], &limits, log, true, exclude, only);
     if (!c.problem.empty()) {
       result.status = interrupted() ? MutantStatus::not_run : MutantStatus::error;
       result.note = c.problem;
-      result.seconds = monotonic_seconds() - start;
-      return;
+      return true;
     }
-    if (c.failed) {
-      result.status = MutantStatus::caught_by_ctest;
-      result.check = label;
-      result.test = c.test;
-      result.seconds_to_catch = monotonic_seconds() - start;
-      result.seconds = result.seconds_to_catch;
-      return;
-    }
+    if (!c.failed) return false;
+    result.status = MutantStatus::caught_by_ctest;
+    result.check = args.labels[i];
+    result.test = c.test;
+    result.seconds_to_catch = monotonic_seconds() - start;
+    return true;
+  };
+  const auto first_label = first ? std::find(args.labels.begin(), args.labels.end(), first->label) : args.labels.end();
+  bool over = first_label != args.labels.end() &&
+              checked_by(static_cast<std::size_t>(first_label - args.labels.begin()), exact_names_pattern({first->test}),
+                         stem + ".first.log");
+  for (std::size_t i = 0; i < args.labels.size() && !over; ++i) {
+    over = checked_by(i, {}, stem + "." + args.labels[i] + ".log");
+  }
+  if (over) {
+    result.seconds = monotonic_seconds() - start;
+    return;
   }
   if (args.campaign_seconds > 0) {
     const fs::path build_log = stem + ".build.log";
@@ -378,6 +390,7 @@ std::string command_line(const MutateArgs& a) {
   if (a.campaign_seed != 1) s << " --campaign-seed " << a.campaign_seed;
   for (const std::string& id : a.only) s << " --only " << id;
   if (!a.resume.empty()) s << " --resume " << a.resume;
+  if (!a.first_catchers.empty()) s << " --first-catchers " << a.first_catchers;
   return s.str();
 }
 
@@ -453,8 +466,10 @@ void write_reports(const MutateArgs& args, const MutationRun& run) {
 // interrupted. The reports are written again as each mutant ends.
 class MutationRunner {
  public:
-  MutationRunner(const MutateArgs& args, MutationRun& run, std::vector<std::size_t> queue, double start)
-      : args_(args), run_(run), queue_(std::move(queue)), start_(start), exclude_(args.exclude_tests) {
+  MutationRunner(const MutateArgs& args, MutationRun& run, std::vector<std::size_t> queue,
+                 std::map<std::string, Catcher> catchers, double start)
+      : args_(args), run_(run), queue_(std::move(queue)), catchers_(std::move(catchers)), start_(start),
+        exclude_(args.exclude_tests) {
     // With ccache the scratch trees share one cache: paths below the work directory are hashed
     // relative to the build directory, so the first tree's compilations serve the others. The
     // first tree is then built alone with every job, and the others from the cache after it.
@@ -511,7 +526,8 @@ class MutationRunner {
     while (const std::optional<std::size_t> index = next_mutant()) {
       MutantResult r = run_.results[*index];  // (read under no lock: only this worker writes it)
       try {
-        run_mutant(w, args_, exclude_, limits_, r);
+        const auto catcher = catchers_.find(r.mutant.id);
+        run_mutant(w, args_, exclude_, limits_, catcher == catchers_.end() ? nullptr : &catcher->second, r);
       } catch (const std::exception& e) {
         r.status = MutantStatus::error;
         r.note = e.what();
@@ -602,6 +618,7 @@ class MutationRunner {
   const MutateArgs& args_;
   MutationRun& run_;
   const std::vector<std::size_t> queue_;
+  const std::map<std::string, Catcher> catchers_;  // --first-catchers: by mutant id
   const double start_;
   std::string exclude_;  // ctest -E: --exclude-tests and the tests failing on the unmutated tree
   TestTimeLimits limits_;
@@ -679,6 +696,19 @@ int run(const MutateArgs& args) {
               run.results.size(), queue.size(), stale, count_of(run, MutantStatus::equivalent), not_executable);
   if (args.check_only) return stale ? kExitFound : 0;
 
+  std::map<std::string, Catcher> catchers;
+  if (!args.first_catchers.empty()) {
+    try {
+      catchers = catchers_of(read_json_report(args.first_catchers));
+    } catch (const std::runtime_error& e) {
+      std::fprintf(stderr, "crosscheck mutate: --first-catchers %s: %s\n", args.first_catchers.c_str(), e.what());
+      return kExitBadInput;
+    }
+    run.first_catchers_from = args.first_catchers;
+    std::printf("first catchers from %s: %zu mutants' earlier catching tests run first\n", args.first_catchers.c_str(),
+                catchers.size());
+  }
+
   fs::create_directories(args.work);
   const SourceState source = source_state(args.source, fs::path(args.work) / "commit.log");
   run.commit = source.commit;
@@ -702,7 +732,7 @@ int run(const MutateArgs& args) {
   });
 
   interrupt_children_on_signal();
-  MutationRunner runner(args, run, queue, start);
+  MutationRunner runner(args, run, queue, std::move(catchers), start);
   if (!runner.run_workers()) {
     // An interrupt kills the set-up's build too: say so, not that the build failed.
     std::fprintf(stderr, "crosscheck mutate: %s\n",
@@ -756,6 +786,10 @@ void add_mutate_command(CLI::App& app, int& exit_code) {
   cmd->add_option("--resume", args->resume,
                   "JSON report of an earlier run on the same source (say, one cut short): its results that still "
                   "hold are taken, and only the other mutants run")
+      ->check(CLI::ExistingFile);
+  cmd->add_option("--first-catchers", args->first_catchers,
+                  "JSON report of an earlier run (any source): each mutant it saw caught by a ctest test runs that "
+                  "test alone first, then the labels as always")
       ->check(CLI::ExistingFile);
   cmd->callback([args, &exit_code] { exit_code = run(*args); });
 }

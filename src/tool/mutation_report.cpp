@@ -37,7 +37,7 @@ std::string cell(const std::string& s) {
 }
 
 // `text` with every path under the run's source tree shown by its path in the repository, every
-// path under its work folder as WORK/..., and the report it resumed from by its file name.
+// path under its work folder as WORK/..., and the earlier reports it read by their file names.
 std::string without_machine_paths(const MutationRun& run, std::string text) {
   for (const auto& [folder, shown] : {std::pair{run.source_folder, std::string()}, std::pair{run.work_folder, std::string("WORK/")}}) {
     if (folder.empty()) continue;
@@ -46,11 +46,12 @@ std::string without_machine_paths(const MutationRun& run, std::string text) {
       text.replace(at, prefix.size(), shown);
     }
   }
-  // A resumed report kept outside both (beside the work folder, say) is named by its file name.
-  if (run.resumed_from.starts_with('/')) {
-    const std::string name = std::filesystem::path(run.resumed_from).filename().string();
-    for (std::size_t at = text.find(run.resumed_from); at != std::string::npos; at = text.find(run.resumed_from, at + name.size())) {
-      text.replace(at, run.resumed_from.size(), name);
+  // An earlier report kept outside both (beside the work folder, say) is named by its file name.
+  for (const std::string& report : {run.resumed_from, run.first_catchers_from}) {
+    if (!report.starts_with('/')) continue;
+    const std::string name = std::filesystem::path(report).filename().string();
+    for (std::size_t at = text.find(report); at != std::string::npos; at = text.find(report, at + name.size())) {
+      text.replace(at, report.size(), name);
     }
   }
   return text;
@@ -131,7 +132,11 @@ std::string markdown_report(const MutationRun& run) {
   out += "\n";
   if (!run.finished) out += "**Unfinished**: written while the run goes on; mutants not run yet are marked so.\n\n";
   out += "Catalogue `" + without_machine_paths(run, run.catalogue) + "`, " + std::to_string(run.results.size()) + " mutants; " +
-         std::to_string(run.jobs) + " worker(s); checks in order: ctest labels ";
+         std::to_string(run.jobs) + " worker(s); checks in order: " +
+         (run.first_catchers_from.empty() ? ""
+                                          : "the test that caught the mutant in `" + without_machine_paths(run, run.first_catchers_from) +
+                                                "` (alone), then ") +
+         "ctest labels ";
   for (std::size_t i = 0; i < run.labels.size(); ++i) out += (i ? ", " : "") + run.labels[i];
   char line[256];
   std::snprintf(line, sizeof line,
@@ -225,6 +230,7 @@ std::string json_report(const MutationRun& run) {
   j["seconds"] = run.seconds;
   j["finished"] = run.finished;
   j["resumed_from"] = run.resumed_from;
+  j["first_catchers_from"] = run.first_catchers_from;
   j["score"] = {{"counted", s.counted},
                 {"caught_by_ctest", s.by_ctest},
                 {"caught_by_ctest_or_campaign", s.by_either},
@@ -359,6 +365,16 @@ std::vector<std::size_t> carry_over(MutationRun& run, const MutationRun& earlier
     carried.push_back(i);
   }
   return carried;
+}
+
+std::map<std::string, Catcher> catchers_of(const MutationRun& earlier) {
+  std::map<std::string, Catcher> out;
+  for (const MutantResult& r : earlier.results) {
+    if (r.status != MutantStatus::caught_by_ctest || r.check.empty()) continue;
+    const std::string test = r.test.substr(0, r.test.find(" ("));
+    if (!test.empty()) out[r.mutant.id] = {r.check, test};
+  }
+  return out;
 }
 
 }  // namespace cc::tool

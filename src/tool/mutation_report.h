@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -65,6 +66,7 @@ struct MutationRun {
   double seconds = 0;
   bool finished = true;      // false in the report written while the run goes on
   std::string resumed_from;  // the report whose results were carried over (--resume), if any
+  std::string first_catchers_from;  // the report whose catching tests run first (--first-catchers), if any
   std::vector<MutantResult> results;  // in catalogue order
 };
 
@@ -104,5 +106,17 @@ MutationRun read_json_report(const std::filesystem::path& path);
 /// does not build; survived, when `run` runs the same labels and campaign. Anything else (not
 /// run, errors, survivors of other checks) is left to run again.
 std::vector<std::size_t> carry_over(MutationRun& run, const MutationRun& earlier);
+
+/// The test that caught a mutant in an earlier run, to run first: a failing test is a catch
+/// whatever else runs, so a mutant the same test still catches costs that test alone.
+struct Catcher {
+  std::string label;  // its ctest label (the check that caught it)
+  std::string test;   // its ctest name
+};
+
+/// The catchers of an earlier run's mutants caught by ctest, by mutant id. The test's name is
+/// the report's `test` without the " (how it failed)" that follows it. Any source, any labels:
+/// a catcher is only an order to try the tests in.
+std::map<std::string, Catcher> catchers_of(const MutationRun& earlier);
 
 }  // namespace cc::tool

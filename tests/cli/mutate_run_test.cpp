@@ -4,6 +4,7 @@
 // left as it was and the scratch tree is reverted.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <csignal>
 #include <chrono>
 #include <filesystem>
@@ -188,6 +189,43 @@ TEST(MutateRun, AReportOfAnotherSourceIsNotResumed) {
   const Outcome missing = run(argv, scratch.path(), scratch.path());
   EXPECT_EQ(missing.status, 2);
   EXPECT_NE(missing.err.find("--resume"), std::string::npos) << missing.err;
+}
+
+// --first-catchers: the test that caught a mutant in an earlier run (of any source) runs alone
+// first, here answer_again of label property, before label unit's test; a report that cannot be
+// read is refused naming the flag, before anything is set up.
+TEST(MutateRun, AnEarlierCatcherRunsFirst) {
+  const TempFolder scratch("crosscheck_mutate_first_catchers");
+  const harness::Json earlier = harness::Json::parse(R"json({"date": "2026-11-20 09:00", "commit": "000000000000",
+      "changes": "", "labels": ["property"], "campaign_seconds": 0, "campaign_seed": 1, "mutants": [
+      {"id": "fixture.wrong_answer", "query": "aabb_aabb", "file": "answer.sh", "description": "",
+       "status": "caught by ctest", "check": "property", "test": "answer_again (Failed)", "note": "",
+       "seconds_to_catch": 1, "build_seconds": 0, "seconds": 1, "worker": 0}]})json");
+  std::ofstream(scratch.path() / "earlier.json") << earlier.dump();
+  std::vector<std::string> argv = mutate_argv(scratch.path(), "10");
+  argv[std::find(argv.begin(), argv.end(), "--labels") - argv.begin() + 1] = "unit,property";
+  argv.insert(argv.end(), {"--only", "fixture.wrong_answer", "--first-catchers", (scratch.path() / "earlier.json").string()});
+  const Outcome o = run(argv, scratch.path(), scratch.path());
+  EXPECT_EQ(o.status, 0) << o.out << o.err;
+  EXPECT_NE(o.out.find("1 mutants' earlier catching tests run first"), std::string::npos) << o.out;
+  const harness::Json report = report_in(scratch.path());
+  ASSERT_TRUE(report.is_object()) << o.err;
+  const harness::Json& caught = mutant(report, "fixture.wrong_answer");
+  EXPECT_EQ(caught["status"], "caught by ctest");
+  EXPECT_EQ(caught["check"], "property");
+  EXPECT_EQ(caught["test"], "answer_again (Failed)");
+  const fs::path logs = scratch.path() / "work" / "worker-0" / "logs";
+  EXPECT_TRUE(fs::exists(logs / "fixture.wrong_answer.first.log"));
+  EXPECT_FALSE(fs::exists(logs / "fixture.wrong_answer.unit.log")) << "label unit ran before the earlier catcher";
+  EXPECT_EQ(report["first_catchers_from"], (scratch.path() / "earlier.json").string());
+
+  std::ofstream(scratch.path() / "broken.json") << R"({"date": "2026-11-20 09:00"})";
+  argv.back() = (scratch.path() / "broken.json").string();
+  argv[std::find(argv.begin(), argv.end(), "--work") - argv.begin() + 1] = (scratch.path() / "refused").string();
+  const Outcome refused = run(argv, scratch.path(), scratch.path());
+  EXPECT_EQ(refused.status, 2) << refused.out << refused.err;
+  EXPECT_NE(refused.err.find("--first-catchers " + argv.back() + ": "), std::string::npos) << refused.err;
+  EXPECT_FALSE(fs::exists(scratch.path() / "refused" / "worker-0")) << "set up before the flag was checked";
 }
 
 // SIGTERM while the scratch trees are set up kills their build: the run says it was interrupted,

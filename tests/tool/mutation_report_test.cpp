@@ -238,6 +238,20 @@ TEST(MutationReport, EachLayerHasItsOwnScore) {
 }
 
 // Resuming: a report read back holds what carry_over needs, as written.
+TEST(MutationReport, TheCatchersAreTheTestsThatCaughtMutantsByCtest) {
+  MutationRun run;
+  run.results = {caught("a", MutantStatus::caught_by_ctest, "unit", "Suite.Test (Failed)", 3),
+                 caught("b", MutantStatus::caught_by_ctest, "property", "Prop/x (Timeout: past 50 s (5 x 10 s))", 60),
+                 caught("c", MutantStatus::caught_by_campaign, "campaign", "impl_bug ray_aabb ...", 70),
+                 result("d", MutantStatus::survived)};
+  const auto catchers = catchers_of(run);
+  ASSERT_EQ(catchers.size(), 2u);
+  EXPECT_EQ(catchers.at("a").label, "unit");
+  EXPECT_EQ(catchers.at("a").test, "Suite.Test");
+  EXPECT_EQ(catchers.at("b").label, "property");
+  EXPECT_EQ(catchers.at("b").test, "Prop/x");
+}
+
 TEST(MutationReport, AJsonReportReadsBackAsWritten) {
   MutationRun run = sample_run();
   run.changes = "changes 00000000000000ff";
