@@ -4,9 +4,18 @@
 #include <array>
 #include <cmath>
 
-#include "collide/obb_fit.h"
-
 namespace cc {
+
+std::array<Vec3, 8> corners(const Obb& box) {
+  const Vec3 e[3] = {box.half.x * box.axes.col[0], box.half.y * box.axes.col[1], box.half.z * box.axes.col[2]};
+  std::array<Vec3, 8> out;
+  for (int i = 0; i < 4; ++i) {  // corner i and its opposite, 7 - i
+    const Vec3 offset = ((i & 1 ? e[0] : -e[0]) + (i & 2 ? e[1] : -e[1])) - e[2];
+    out[i] = box.center + offset;
+    out[7 - i] = box.center - offset;
+  }
+  return out;
+}
 
 int farthest_feature(const Obb& box, const Vec3& n, double tolerance, const Vec3& shift, Triangle out[2]) {
   const std::array<Vec3, 8> corner = corners(box);  // bit k of an index set for +half_k

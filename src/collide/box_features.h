@@ -4,6 +4,7 @@
 #pragma once
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "collide/obb.h"
@@ -11,28 +12,45 @@
 
 namespace cc {
 
+// The distance queries sum their three terms left to right (dot_in_order): a distance is judged
+// on its certified bound, and the bounds hold for any order (fp.h).
+
 /// The radius of the box's projection on n: sum_k half_k |axis_k . n| (the parallelepiped's,
 /// exactly, but for rounding: 6u |n| |half|_1). NaN in, NaN out.
 inline double radius_along(const Obb& box, const Vec3& n) {
-  return fp::sum3(box.half.x * std::fabs(dot(box.axes.col[0], n)), box.half.y * std::fabs(dot(box.axes.col[1], n)),
-                  box.half.z * std::fabs(dot(box.axes.col[2], n)));
+  return (box.half.x * std::fabs(dot_in_order(box.axes.col[0], n)) + box.half.y * std::fabs(dot_in_order(box.axes.col[1], n))) +
+         box.half.z * std::fabs(dot_in_order(box.axes.col[2], n));
 }
+
+/// The 8 corners of the box, corner i at center + sum_k (bit k of i ? +1 : -1) half_k axis_k,
+/// rounded (7u (|center|_inf + |half|_1) in length, as a product, two sums and the centre's
+/// add); opposite corners are the centre plus and minus the same offset, exactly.
+std::array<Vec3, 8> corners(const Obb& box);
 
 /// The face, edge or corner of the box farthest along the unit direction n, every axis within
 /// `tolerance` of perpendicular to n taken whole (the one most along n never), as triangles of
-/// its corners (corners(box), obb_fit.h) moved by `shift`: two for a face, one degenerate for an
+/// its corners (corners(box)) moved by `shift`: two for a face, one degenerate for an
 /// edge or a corner. Returns how many. Flat boxes give their degenerate faces as they are.
 int farthest_feature(const Obb& box, const Vec3& n, double tolerance, const Vec3& shift, Triangle out[2]);
 
 /// p's coordinates in the box's frame: axes^T (p - center), as computed.
-inline Vec3 box_coordinates(const Obb& box, const Vec3& p) { return transpose_times(box.axes, p - box.center); }
+inline Vec3 box_coordinates(const Obb& box, const Vec3& p) {
+  const Vec3 q = p - box.center;
+  return {dot_in_order(box.axes.col[0], q), dot_in_order(box.axes.col[1], q), dot_in_order(box.axes.col[2], q)};
+}
+
+/// The coordinates q (in the box's frame) clamped to its extents, exactly.
+inline Vec3 clamped(const Obb& box, const Vec3& q) {
+  return {std::clamp(q.x, -box.half.x, box.half.x), std::clamp(q.y, -box.half.y, box.half.y),
+          std::clamp(q.z, -box.half.z, box.half.z)};
+}
 
 /// The point of the box at the coordinates q clamped to its extents: the nearest point of the
 /// box to the point with those coordinates (exactly so for orthonormal axes).
 inline Vec3 clamped_into(const Obb& box, const Vec3& q) {
-  const Vec3 c{std::clamp(q.x, -box.half.x, box.half.x), std::clamp(q.y, -box.half.y, box.half.y),
-               std::clamp(q.z, -box.half.z, box.half.z)};
-  return box.center + box.axes * c;
+  const Vec3 c = clamped(box, q);
+  const Mat3& m = box.axes;
+  return box.center + ((c.x * m.col[0] + c.y * m.col[1]) + c.z * m.col[2]);
 }
 
 /// The componentwise least and largest of points (in a box's frame).

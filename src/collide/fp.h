@@ -4,8 +4,9 @@
 //  * Every sum of three terms goes through sum3(), whose result depends only on the multiset of
 //    its terms, so permuting the axes, flipping an axis or swapping two shapes changes no rounding
 //    (but the fast paths of the sphere, OBB and triangle tests sum left to right, in the bounds,
-//    and so do the projection gaps and the triangle distance's choice of witnesses: a distance is
-//    judged on its certified bound, not bit for bit under those symmetries).
+//    and so do the projection gaps, the boxes' features in the distance queries (box_features.h,
+//    nearest_pair.h) and the triangle distance's choice of witnesses: a distance is judged on its
+//    certified bound, not bit for bit under those symmetries).
 //  * A test reports "disjoint" only when a separation exceeds a bound on the rounding error of
 //    the quantities that show it (a certified separation). Tests are therefore conservative:
 //    shapes that touch or overlap in exact arithmetic are never reported disjoint.

@@ -21,7 +21,7 @@ struct NearestPair {
   /// Keeps (p, q) when nearer than every pair before it.
   void keep_nearer(const Vec3& p, const Vec3& q) {
     const Vec3 v = scaled(q - p, exponent);
-    const double sq = dot(v, v);
+    const double sq = dot_in_order(v, v);
     if (sq < square) on_a = p, on_b = q, square = sq;
   }
 

@@ -164,14 +164,4 @@ Obb merge_obbs(const Obb& a, const Obb& b, const Mat3& axes) {
   return m;
 }
 
-std::array<Vec3, 8> corners(const Obb& box) {
-  std::array<Vec3, 8> out;
-  for (int i = 0; i < 8; ++i) {
-    const double s0 = (i & 1) ? box.half.x : -box.half.x, s1 = (i & 2) ? box.half.y : -box.half.y,
-                 s2 = (i & 4) ? box.half.z : -box.half.z;
-    out[i] = box.center + box.axes * Vec3{s0, s1, s2};
-  }
-  return out;
-}
-
 }  // namespace cc

@@ -48,7 +48,4 @@ Mat3 principal_axes(const std::array<double, 6>& symmetric);
 /// as fit_obb pads them, with the largest norm1 of a point of either box as the magnitude.
 Obb merge_obbs(const Obb& a, const Obb& b, const Mat3& axes);
 
-/// The 8 corners of the box: center +- half_0 axis_0 +- half_1 axis_1 +- half_2 axis_2, rounded.
-std::array<Vec3, 8> corners(const Obb& box);
-
 }  // namespace cc

@@ -10,7 +10,6 @@
 #include "collide/depth_axes.h"
 #include "collide/length.h"
 #include "collide/nearest_pair.h"
-#include "collide/obb_fit.h"
 #include "collide/record_sink.h"
 #include "collide/segment.h"
 #include "collide/segment_distance.h"

@@ -108,12 +108,5 @@ TEST(TriangleAxes, AreTheHullCovariancesAxes) {
   EXPECT_NEAR(std::fabs(flat->col[2].z), 1, 1e-15);  // the normal last
 }
 
-TEST(FitObb, CornersSpanTheBox) {
-  const Obb b{{1, 2, 3}, {1, 2, 3}, Mat3::identity()};
-  const auto c = corners(b);
-  EXPECT_EQ(c[0], (Vec3{0, 0, 0}));
-  EXPECT_EQ(c[7], (Vec3{2, 4, 6}));
-}
-
 }  // namespace
 }  // namespace cc
