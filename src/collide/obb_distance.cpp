@@ -30,11 +30,19 @@ bool in_domain(const Obb& b) {
 // a.center): > 0 overlapping by that much, < 0 apart by that much; +infinity for a zero direction
 // (no information). Within ObbDistanceBound::evaluation() of the exact overlap on the computed
 // direction.
+double overlap_on(const Obb& a, const Obb& b, const Vec3& d, const Vec3& n, double n_length) {
+  if (!(n_length > 0)) return kInf;
+  return ((radius_along(a, n) + radius_along(b, n)) - std::fabs(dot_in_order(d, n))) / n_length;
+}
 double overlap_along(const Obb& a, const Obb& b, const Vec3& d, const Vec3& direction) {
   const Vec3 n = unit_scaled(direction);  // |n| in [1, 2 sqrt 3]: no underflow, no overflow
-  const double n_length = length(n);
-  if (!(n_length > 0)) return kInf;
-  return ((radius_along(a, n) + radius_along(b, n)) - std::fabs(dot(d, n))) / n_length;
+  return overlap_on(a, b, d, n, length(n));
+}
+
+// The same on a box's axis, 1 long within 2^-48 in the domain: it needs no scaling, and its
+// length is the root of its squares' sum in order (within 2.6u, as length() gives it).
+double overlap_along_axis(const Obb& a, const Obb& b, const Vec3& d, const Vec3& axis) {
+  return overlap_on(a, b, d, axis, std::sqrt(dot_in_order(axis, axis)));
 }
 
 // The faces' axes, then the edge pairs', until one shows the boxes apart for certain (then the
@@ -44,10 +52,11 @@ using Axes = DepthAxes<15>;
 Axes measure_axes(const Obb& a, const Obb& b, const Vec3& d, const bounds::ObbDistanceBound& bound) {
   Axes axes;
   const auto overlap = [&](const Vec3& n) { return overlap_along(a, b, d, n); };
+  const auto face_overlap = [&](const Vec3& n) { return overlap_along_axis(a, b, d, n); };
   const double face_angle = 8 * kObbOrthonormalTolerance;
   for (int k = 0; k < 6; ++k) {
     axes.add((k % 2 == 0 ? a : b).axes.col[k / 2], bound.face_direction(), face_angle);
-    axes.measure(axes.count - 1, overlap);
+    axes.measure(axes.count - 1, face_overlap);
     if (axes.least_depth() + bound.evaluation() < 0) return axes;
   }
   for (int i = 0; i < 3; ++i) {
