@@ -92,13 +92,13 @@ Separation depth(const Obb& a, const Obb& b, const Vec3& d, const Axes& axes, do
   Triangle on_a[2], on_b[2];
   const int na = farthest_feature(a, n, tolerance, {}, on_a);
   const int nb = farthest_feature(b, -n, tolerance, shift, on_b);
+  // The features meet but for rounding: a pair of their triangles as near as the witnesses'
+  // own bound ends the search (its gap joins that bound below).
   Separation nearest;
   nearest.distance = kInf;
-  for (int i = 0; i < na; ++i) {
-    for (int j = 0; j < nb; ++j) {
-      const Separation s = distance_triangle_triangle(on_a[i], on_b[j]);
-      if (s.distance < nearest.distance) nearest = s;
-    }
+  for (int k = 0; k < na * nb && !(nearest.distance <= bound.point()); ++k) {
+    const Separation s = distance_triangle_triangle(on_a[k / nb], on_b[k % nb]);
+    if (s.distance < nearest.distance) nearest = s;
   }
   // The pair meets where the least axis is a face of a - b; its gap counts in the witnesses'
   // bound, so that they are as far apart as the depth says within it.

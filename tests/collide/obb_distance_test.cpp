@@ -78,6 +78,21 @@ TEST(DistanceObbObb, OverlappingThroughAFaceIsTheLeastOverlap) {
   expect_vec(s.on_a - s.on_b, {0.5, 0, 0}, 1e-14);
 }
 
+// A small box sunk 0.1 into a cube's top face near each of its corners: whichever of the
+// face's two triangles it lies over, the witnesses are a meeting pair, 0.1 apart.
+TEST(DistanceObbObb, ADepthsWitnessesMeetWhereverOnTheFace) {
+  for (const double x : {-0.7, 0.7}) {
+    for (const double y : {-0.7, 0.7}) {
+      const Obb small{{x, y, 1.9}, {0.25, 0.25, 1}, Mat3::identity()};
+      const Separation s = distance_obb_obb(cube({0, 0, 0}), small);
+      EXPECT_NEAR(s.distance, -0.1, 1e-12) << x << " " << y;
+      EXPECT_NEAR(length(s.on_b - s.on_a), 0.1, 1e-12) << x << " " << y;
+      EXPECT_NEAR(s.on_a.z, 1, 1e-12) << x << " " << y;
+      EXPECT_LT(s.point_error, 1e-12) << x << " " << y;
+    }
+  }
+}
+
 TEST(DistanceObbObb, OverlappingThroughCrossingEdgesIsTheirDepth) {
   // The crossing edges of ApartEdgeToCrossingEdge pushed 0.1 into each other: the edges' axis (z)
   // is the least; the face axes of both cubes overlap by more than 1.
