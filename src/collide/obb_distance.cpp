@@ -26,14 +26,16 @@ bool in_domain(const Obb& b) {
   return finite(b.center) && finite(b.half) && finite(b.axes) && b.half.x >= 0 && b.half.y >= 0 && b.half.z >= 0;
 }
 
-// The overlap of the boxes' projections on `direction` over its length (d = b.center -
-// a.center): > 0 overlapping by that much, < 0 apart by that much; +infinity for a zero direction
-// (no information). Within ObbDistanceBound::evaluation() of the exact overlap on the computed
-// direction.
+// The overlap of the boxes' projections on n over its length n_length (d = b.center - a.center):
+// > 0 overlapping by that much, < 0 apart by that much; +infinity for a zero length (no
+// information).
 double overlap_on(const Obb& a, const Obb& b, const Vec3& d, const Vec3& n, double n_length) {
   if (!(n_length > 0)) return kInf;
   return ((radius_along(a, n) + radius_along(b, n)) - std::fabs(dot_in_order(d, n))) / n_length;
 }
+
+// The same on `direction`, scaled first: within ObbDistanceBound::evaluation() of the exact
+// overlap on the computed direction.
 double overlap_along(const Obb& a, const Obb& b, const Vec3& d, const Vec3& direction) {
   const Vec3 n = unit_scaled(direction);  // |n| in [1, 2 sqrt 3]: no underflow, no overflow
   return overlap_on(a, b, d, n, length(n));

@@ -37,7 +37,7 @@ struct Interval {
   double lo, hi;
 };
 Interval projection(const Relative& w, const Vec3& n) {
-  const double p0 = dot(w[0], n), p1 = dot(w[1], n), p2 = dot(w[2], n);
+  const double p0 = dot_in_order(w[0], n), p1 = dot_in_order(w[1], n), p2 = dot_in_order(w[2], n);
   return {std::min({p0, p1, p2}), std::max({p0, p1, p2})};
 }
 
@@ -45,13 +45,21 @@ Interval projection(const Relative& w, const Vec3& n) {
 // over its length: > 0 overlapping by that much, < 0 apart by that much; +infinity for a zero
 // direction (no information). Within Bound::evaluation() of the exact overlap on the computed
 // direction.
-double overlap_along(const Relative& w, const Obb& box, const Vec3& direction) {
-  const Vec3 n = unit_scaled(direction);  // |n| in [1, 2 sqrt 3]: no underflow, no overflow
-  const double n_length = length(n);
+double overlap_on(const Relative& w, const Obb& box, const Vec3& n, double n_length) {
   if (!(n_length > 0)) return kInf;
   const double r = radius_along(box, n);
   const Interval t = projection(w, n);
   return std::min(t.hi + r, r - t.lo) / n_length;
+}
+double overlap_along(const Relative& w, const Obb& box, const Vec3& direction) {
+  const Vec3 n = unit_scaled(direction);  // |n| in [1, 2 sqrt 3]: no underflow, no overflow
+  return overlap_on(w, box, n, length(n));
+}
+
+// The same on one of the box's axes, 1 long within 2^-48 in the domain: it needs no scaling,
+// and its length is the root of its squares' sum in order (within 2.6u, as length() gives it).
+double overlap_along_axis(const Relative& w, const Obb& box, const Vec3& axis) {
+  return overlap_on(w, box, axis, std::sqrt(dot_in_order(axis, axis)));
 }
 
 // The box's axes, then the triangle's normal and its edges' cross products with the box's axes,
@@ -59,10 +67,13 @@ double overlap_along(const Relative& w, const Obb& box, const Vec3& direction) {
 Axes measure_axes(const Triangle& t, const Relative& w, const Obb& box, const Bound& bound) {
   Axes axes;
   const auto overlap = [&](const Vec3& n) { return overlap_along(w, box, n); };
+  const auto face_overlap = [&](const Vec3& n) { return overlap_along_axis(w, box, n); };
   const double face_angle = 8 * kObbOrthonormalTolerance;
-  for (int k = 0; k < 3; ++k) axes.add(box.axes.col[k], bound.face_direction(), face_angle);
-  axes.measure(0, overlap);
-  if (axes.least_depth() + bound.evaluation() < 0) return axes;
+  for (int k = 0; k < 3; ++k) {
+    axes.add(box.axes.col[k], bound.face_direction(), face_angle);
+    axes.measure(k, face_overlap);
+    if (axes.least_depth() + bound.evaluation() < 0) return axes;
+  }
   std::array<ExactDifference, 3> edge;  // edge k from v[k] to v[k + 1], exactly, scaled
   std::array<double, 3> edge_length;    // as given, not scaled
   for (int k = 0; k < 3; ++k) {
@@ -123,9 +134,11 @@ Separation depth(const Triangle& t, const Relative& w, const Obb& box, const Axe
   for (int k = kept; k < 3; ++k) on_t.v[k] = on_t.v[k - 1];
   Triangle on_box[2];
   const int count = farthest_feature(box, -n, tolerance, shift, on_box);
+  // The features meet but for rounding: a triangle of the box's feature as near as the
+  // witnesses' own bound ends the search (its gap joins that bound below).
   Separation nearest;
   nearest.distance = kInf;
-  for (int i = 0; i < count; ++i) {
+  for (int i = 0; i < count && !(nearest.distance <= bound.point()); ++i) {
     const Separation s = distance_triangle_triangle(on_t, on_box[i]);
     if (s.distance < nearest.distance) nearest = s;
   }
@@ -167,12 +180,12 @@ NearestPair nearest_features(const Triangle& t, const Relative& w, const Obb& bo
   }
   const double margin = 0x1p-30 * bound.size;
   const Vec3 normal = unit_scaled(cross(t.v[1] - t.v[0], t.v[2] - t.v[0]));  // for pruning only
-  const double normal_square = dot(normal, normal);
+  const double normal_square = dot_in_order(normal, normal);
   for (int i = 0; i < 8; ++i) {
     if (!reaches_beyond(box, triangle, i, -1, margin)) continue;
     const Vec3& c = corner[i];
     if (normal_square > 0) {
-      const double height = fp::scale2(dot(c - t.v[0], normal), -exponent);
+      const double height = fp::scale2(dot_in_order(c - t.v[0], normal), -exponent);
       if (!best.may_improve_on(height * height / normal_square)) continue;
     }
     Vec3 foot;

@@ -103,6 +103,20 @@ TEST(DistanceTriangleObb, OverlappingThroughTheTopFace) {
   EXPECT_NEAR(s.on_a.z, 0.25, 1e-12);
 }
 
+// A small flat triangle sunk 0.1 under a cube's top face near each of its corners: whichever of
+// the face's two triangles it lies under, the witnesses are a meeting pair, 0.1 apart.
+TEST(DistanceTriangleObb, ADepthsWitnessesMeetWhereverOnTheFace) {
+  for (const double x : {-0.7, 0.7}) {
+    for (const double y : {-0.7, 0.7}) {
+      const Triangle t = tri({x - 0.2, y - 0.2, 0.9}, {x + 0.2, y - 0.2, 0.9}, {x, y + 0.2, 0.9});
+      const Separation s = distance_triangle_obb(t, cube({0, 0, 0}));
+      EXPECT_NEAR(s.distance, -0.1, 1e-12) << x << " " << y;
+      EXPECT_NEAR(length(s.on_b - s.on_a), 0.1, 1e-12) << x << " " << y;
+      EXPECT_LT(s.point_error, 1e-12) << x << " " << y;
+    }
+  }
+}
+
 TEST(DistanceTriangleObb, OverlappingThroughAFaceFromOutside) {
   // A vertex 0.125 inside the top face, the triangle rising away from it: 0.125 deep.
   const Triangle t = tri({0.25, 0.25, 0.875}, {4, 1, 6}, {1, 4, 6});
