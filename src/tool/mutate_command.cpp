@@ -133,9 +133,27 @@ void must(const std::vector<std::string>& argv, const fs::path& cwd, const fs::p
   }
 }
 
+// Every target ninja can build in the worker's build directory (`ninja -t targets all`), as
+// paths relative to it.
+std::set<std::string> ninja_targets(const Worker& w) {
+  const fs::path out = w.logs / "ninja-targets.txt", err = w.logs / "ninja-targets.err";
+  fs::remove(out), fs::remove(err);
+  const ChildResult r = run_child({"ninja", "-C", w.build.string(), "-t", "targets", "all"}, {}, out, 600, err);
+  if (r.exit_status != 0) throw std::runtime_error("listing ninja's targets failed (see " + err.string() + ")");
+  std::set<std::string> targets;
+  std::ifstream in(out);
+  for (std::string line; std::getline(in, line);) {
+    const std::size_t colon = line.rfind(": ");
+    if (colon != std::string::npos) targets.insert(line.substr(0, colon));
+  }
+  return targets;
+}
+
 // The ninja targets (paths relative to the build directory) of the executables the tests of a
-// label run: every argument word naming a file inside the build directory.
-std::vector<std::string> targets_of_label(const Worker& w, const std::string& label) {
+// label run: every argument word naming a file inside the build directory that ninja builds (a
+// file configure wrote, such as a list a test reads, is no target).
+std::vector<std::string> targets_of_label(const Worker& w, const std::string& label,
+                                          const std::set<std::string>& buildable) {
   const fs::path out = w.logs / ("list-" + label + ".json"), err = w.logs / ("list-" + label + ".err");
   fs::remove(out), fs::remove(err);
   const ChildResult r =
@@ -152,7 +170,8 @@ std::vector<std::string> targets_of_label(const Worker& w, const std::string& la
       const std::string text = arg.get<std::string>();
       for (auto it = std::sregex_iterator(text.begin(), text.end(), word); it != std::sregex_iterator(); ++it) {
         const std::string path = it->str();
-        if (path.rfind(prefix, 0) == 0 && fs::is_regular_file(path)) targets.insert(path.substr(prefix.size()));
+        if (path.rfind(prefix, 0) != 0 || !fs::is_regular_file(path)) continue;
+        if (const std::string target = path.substr(prefix.size()); buildable.contains(target)) targets.insert(target);
       }
     }
   }
@@ -181,7 +200,8 @@ void set_up(Worker& w, const MutateArgs& args, int build_jobs, const std::functi
   may_build();
   must({"ninja", "-C", w.build.string(), "-j", std::to_string(build_jobs)}, {}, w.logs / "setup-build.log",
        "building the unmutated tree in " + w.build.string());
-  for (const std::string& label : args.labels) w.label_targets.push_back(targets_of_label(w, label));
+  const std::set<std::string> buildable = ninja_targets(w);
+  for (const std::string& label : args.labels) w.label_targets.push_back(targets_of_label(w, label, buildable));
 }
 
 // A ctest -E pattern matching exactly these test names.
