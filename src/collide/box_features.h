@@ -12,8 +12,13 @@
 
 namespace cc {
 
-// The distance queries sum their three terms left to right (dot_in_order): a distance is judged
-// on its certified bound, and the bounds hold for any order (fp.h).
+// radius_along, box_coordinates and clamped_into sum their three terms left to right
+// (dot_in_order): a distance is judged on its certified bound, and the bounds hold for any order
+// (fp.h).
+
+/// The length of one of a box's axes, 1 long within 2^-48 in the domain: the root of its
+/// squares summed in order, within 2.6u as length() gives it, with no scaling needed.
+inline double axis_length(const Vec3& axis) { return std::sqrt(dot_in_order(axis, axis)); }
 
 /// The radius of the box's projection on n: sum_k half_k |axis_k . n| (the parallelepiped's,
 /// exactly, but for rounding: 6u |n| |half|_1). NaN in, NaN out.

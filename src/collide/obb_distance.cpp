@@ -41,10 +41,9 @@ double overlap_along(const Obb& a, const Obb& b, const Vec3& d, const Vec3& dire
   return overlap_on(a, b, d, n, length(n));
 }
 
-// The same on a box's axis, 1 long within 2^-48 in the domain: it needs no scaling, and its
-// length is the root of its squares' sum in order (within 2.6u, as length() gives it).
+// The same on a box's axis (axis_length, box_features.h).
 double overlap_along_axis(const Obb& a, const Obb& b, const Vec3& d, const Vec3& axis) {
-  return overlap_on(a, b, d, axis, std::sqrt(dot_in_order(axis, axis)));
+  return overlap_on(a, b, d, axis, axis_length(axis));
 }
 
 // The faces' axes, then the edge pairs', until one shows the boxes apart for certain (then the

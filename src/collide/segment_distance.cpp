@@ -19,9 +19,7 @@ std::pair<double, double> closest_segment_parameters(const Segment& a, const Seg
     const int e = fp::exponent_of(m);
     da = scaled(da, e), db = scaled(db, e), r = scaled(r, e);
   }
-  // Only a choice depends on the parameters (the pair is certified by its caller): plain dots.
-  const auto plain_dot = [](const Vec3& x, const Vec3& y) { return dot_in_order(x, y); };
-  return detail::closest_parameters(da, db, r, dot_in_order(da, da), dot_in_order(db, db), plain_dot);
+  return detail::closest_parameters(da, db, r, dot_in_order(da, da), dot_in_order(db, db));
 }
 
 double segment_gap_along(const Segment& a, const Segment& b, const Vec3& direction) {

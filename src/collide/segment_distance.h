@@ -32,19 +32,18 @@ namespace detail {
 /// closest_segment_parameters on the segments' differences da = a.b - a.a, db = b.b - b.a and
 /// r = a.a - b.a, all three scaled by one power of two (products of four of them must neither
 /// overflow nor, but for features far smaller than the largest, underflow), with
-/// length2_a = da . da and length2_b = db . db, and dot_of the dot product it takes (dot, or a
-/// plain one where only a choice depends on the parameters). Inline: distance_triangle_triangle
-/// calls it for nine edge pairs that share their edges.
-template <class Dot>
+/// length2_a = da . da and length2_b = db . db. Its dot products sum in order (dot_in_order): only
+/// the choice of a pair depends on them, and every caller certifies the pair it takes. Inline:
+/// distance_triangle_triangle calls it for nine edge pairs that share their edges.
 inline std::pair<double, double> closest_parameters(const Vec3& da, const Vec3& db, const Vec3& r, double length2_a,
-                                                    double length2_b, Dot dot_of) {
+                                                    double length2_b) {
   // The parameter of b's point nearest a's point at s, and of a's point nearest b's point at t,
   // each clamped to its segment (0 on a point segment).
   const auto on_b_nearest = [&](double s) {
-    return length2_b > 0 ? std::clamp(dot_of(r + s * da, db) / length2_b, 0.0, 1.0) : 0.0;
+    return length2_b > 0 ? std::clamp(dot_in_order(r + s * da, db) / length2_b, 0.0, 1.0) : 0.0;
   };
   const auto on_a_nearest = [&](double t) {
-    return length2_a > 0 ? std::clamp(dot_of(t * db - r, da) / length2_a, 0.0, 1.0) : 0.0;
+    return length2_a > 0 ? std::clamp(dot_in_order(t * db - r, da) / length2_a, 0.0, 1.0) : 0.0;
   };
   // The distance is a convex quadratic in (s, t). Its minimiser on the lines, s0 = ((r x db).n) /
   // n.n with n = da x db (0 for parallel or point segments, where every s is as good), is
@@ -53,8 +52,8 @@ inline std::pair<double, double> closest_parameters(const Vec3& da, const Vec3& 
   // parallel segments accurate: n errs by u |da| |db| per component, where
   // |da|^2 |db|^2 - (da.db)^2 would err by u |da|^2 |db|^2 against the tiny |n|^2.
   const Vec3 n = cross(da, db);
-  const double n2 = dot_of(n, n);
-  const double s0 = n2 > 0 ? std::clamp(dot_of(n, cross(db, r)) / n2, 0.0, 1.0) : 0.0;
+  const double n2 = dot_in_order(n, n);
+  const double s0 = n2 > 0 ? std::clamp(dot_in_order(n, cross(db, r)) / n2, 0.0, 1.0) : 0.0;
   const double t = on_b_nearest(s0);
   return {on_a_nearest(t), t};
 }

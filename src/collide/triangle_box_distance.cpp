@@ -56,10 +56,9 @@ double overlap_along(const Relative& w, const Obb& box, const Vec3& direction) {
   return overlap_on(w, box, n, length(n));
 }
 
-// The same on one of the box's axes, 1 long within 2^-48 in the domain: it needs no scaling,
-// and its length is the root of its squares' sum in order (within 2.6u, as length() gives it).
+// The same on one of the box's axes (axis_length, box_features.h).
 double overlap_along_axis(const Relative& w, const Obb& box, const Vec3& axis) {
-  return overlap_on(w, box, axis, std::sqrt(dot_in_order(axis, axis)));
+  return overlap_on(w, box, axis, axis_length(axis));
 }
 
 // The box's axes, then the triangle's normal and its edges' cross products with the box's axes,

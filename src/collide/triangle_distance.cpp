@@ -198,8 +198,7 @@ struct Search {
   // before it; whether it is proven closest (first_edge_pair).
   bool edge_pair(int k) {
     const int i = k / 3, j = k % 3;
-    const auto [s, t] = detail::closest_parameters(a.e[i], b.e[j], a.v[i] - b.v[j], a.length2[i], b.length2[j],
-                                                    [](const Vec3& x, const Vec3& y) { return dot_in_order(x, y); });
+    const auto [s, t] = detail::closest_parameters(a.e[i], b.e[j], a.v[i] - b.v[j], a.length2[i], b.length2[j]);
     const Place on_a{i, s, 0}, on_b{j, t, 0};
     // A proven pair is a closest one, so nearer than any before it: only a kept pair is tried.
     if (!keep(on_a, on_b, k)) return false;

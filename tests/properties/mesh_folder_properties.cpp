@@ -10,12 +10,11 @@
 #include <filesystem>
 #include <string>
 
-#include <unistd.h>
-
 #include "harness/formats/input_json.h"
 #include "harness/formats/mesh_files.h"
 #include "harness/generation/generate.h"
 #include "properties/property.h"
+#include "temp_folder.h"
 #include "test_paths.h"
 
 namespace cc::test {
@@ -24,22 +23,22 @@ namespace {
 using namespace harness;
 namespace fs = std::filesystem;
 
-// A fresh folder holding the named files of FCL's meshes.
-fs::path folder_with(const std::string& name, std::initializer_list<const char*> files) {
-  const fs::path dir = fs::temp_directory_path() / ("crosscheck-mesh-folder-" + name + "-" + std::to_string(::getpid()));
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  for (const char* f : files) fs::copy_file(fcl_mesh_folder() / f, dir / f);
-  return dir;
-}
+// A fresh folder (removed with the test) holding the named files of FCL's meshes.
+struct MeshFolder {
+  TempFolder folder;
+  MeshFolder(const std::string& name, std::initializer_list<const char*> files) : folder("crosscheck_mesh_folder_" + name) {
+    for (const char* f : files) fs::copy_file(fcl_mesh_folder() / f, folder.path() / f);
+  }
+  const fs::path& path() const { return folder.path(); }
+};
 
 bool names(const Input& input, const std::string& file) {
   return input_to_json(input).dump().find("/" + file + "\"") != std::string::npos;
 }
 
 TEST(MeshFolders, WithoutBothOfFclsMeshesEveryMeshIsDrawn) {
-  const fs::path env_only = folder_with("env", {"env.obj"}), rob_only = folder_with("rob", {"rob.obj"}),
-                 neither = folder_with("none", {});
+  const MeshFolder env_folder("env", {"env.obj"}), rob_folder("rob", {"rob.obj"}), empty_folder("none", {});
+  const fs::path &env_only = env_folder.path(), &rob_only = rob_folder.path(), &neither = empty_folder.path();
   // The folders above them must not hold the other file: the generators look upward for it.
   ASSERT_FALSE(find_mesh_file("rob.obj", env_only)) << "a rob.obj above " << env_only;
   ASSERT_FALSE(find_mesh_file("env.obj", rob_only)) << "an env.obj above " << rob_only;
@@ -64,7 +63,6 @@ TEST(MeshFolders, WithoutBothOfFclsMeshesEveryMeshIsDrawn) {
     for (const int n : drawn) EXPECT_GT(n, 0) << name(kind);
     EXPECT_GT(with_files, 0) << name(kind) << " never drew FCL's meshes from their folder";
   }
-  for (const fs::path& dir : {env_only, rob_only, neither}) fs::remove_all(dir);
 }
 
 }  // namespace
