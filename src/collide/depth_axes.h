@@ -26,7 +26,10 @@ struct DepthAxis {
 /// width), and the axis of least overlap (-1 before any is measured).
 template <int N>
 struct DepthAxes {
-  std::array<DepthAxis, N> axis;
+  DepthAxes() {}  // the axes past `count` are left unset: they are never read
+  union {
+    std::array<DepthAxis, N> axis;
+  };
   int count = 0;
   double sliver = 0;
   int least = -1;
