@@ -53,9 +53,7 @@ TimeWindow overlap_window(double projection, double rate, double radius_a, doubl
 }
 
 bool in_contract(const MovingObb& m) {
-  const Obb& b = m.box;
-  return finite(b.center) && finite(b.half) && finite(b.axes) && finite(m.velocity) && b.half.x >= 0 &&
-         b.half.y >= 0 && b.half.z >= 0;
+  return in_domain(m.box) && finite(m.velocity);
 }
 
 // ---- Axis-aligned boxes ----

@@ -94,9 +94,7 @@ bool test(const Obb& a, const Obb& b, Records& records) {
     if (T::bits(min(abs(in_a), abs(in_b)) - (ra + rb) > error) != 0) return false;
   }
   // On the hit path only: inputs outside the contract give false.
-  return finite(a.center) && finite(b.center) && finite(a.half) && finite(b.half) && finite(a.axes) &&
-         finite(b.axes) && a.half.x >= 0 && a.half.y >= 0 && a.half.z >= 0 && b.half.x >= 0 && b.half.y >= 0 &&
-         b.half.z >= 0;
+  return in_domain(a) && in_domain(b);
 }
 
 [[gnu::flatten]] bool test_scalar(const Obb& a, const Obb& b) {

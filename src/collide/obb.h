@@ -16,6 +16,15 @@ struct Obb {
   friend constexpr bool operator==(const Obb&, const Obb&) = default;
 };
 
+/// True when the box is in the domain of every query on boxes: its centre, half extents and axes
+/// finite (one comparison: x - x is 0 only for a finite x), no half extent negative (0 is a flat
+/// box). NaN anywhere: false.
+inline bool in_domain(const Obb& b) {
+  const Vec3 zero = ((b.center - b.center) + (b.half - b.half)) +
+                    ((b.axes.col[0] - b.axes.col[0]) + (b.axes.col[1] - b.axes.col[1]) + (b.axes.col[2] - b.axes.col[2]));
+  return finite(zero) && b.half.x >= 0 && b.half.y >= 0 && b.half.z >= 0;
+}
+
 /// How far from orthonormal the axes of an Obb may be: 2^-48, which a rotation computed in
 /// double precision from a unit quaternion, or a product of a few such, satisfies.
 inline constexpr double kObbOrthonormalTolerance = 0x1p-48;

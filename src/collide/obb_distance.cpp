@@ -22,10 +22,6 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 
-bool in_domain(const Obb& b) {
-  return finite(b.center) && finite(b.half) && finite(b.axes) && b.half.x >= 0 && b.half.y >= 0 && b.half.z >= 0;
-}
-
 // The overlap of the boxes' projections on n over its length n_length (d = b.center - a.center):
 // > 0 overlapping by that much, < 0 apart by that much; +infinity for a zero length (no
 // information).

@@ -65,8 +65,7 @@ bool test_obb(const Triangle& t, const Obb& box, Records& records) {
   records.add(bounds::FrameChange{t, box, local, bound});
   const double perturbation = bound.total();
   if (!test_in_box_frame(local, Aabb{-box.half, box.half}, perturbation, records)) return false;
-  return finite(t) && finite(box.center) && finite(box.half) && finite(box.axes) && box.half.x >= 0 &&
-         box.half.y >= 0 && box.half.z >= 0;
+  return finite(t) && in_domain(box);
 }
 
 }  // namespace

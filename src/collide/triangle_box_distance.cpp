@@ -24,11 +24,6 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 using Bound = bounds::TriangleBoxDistanceBound;
 using Axes = DepthAxes<13>;
 
-bool in_domain(const Triangle& t, const Obb& b) {
-  return finite(t) && finite(b.center) && finite(b.half) && finite(b.axes) && b.half.x >= 0 && b.half.y >= 0 &&
-         b.half.z >= 0;
-}
-
 // The triangle's vertices less the box's centre, as computed.
 using Relative = std::array<Vec3, 3>;
 
@@ -227,7 +222,7 @@ Separation closest(const Triangle& t, const Relative& w, const Obb& box, const A
 
 template <class Records>
 Separation triangle_obb(const Triangle& t, const Obb& box, Records& records) {
-  if (!in_domain(t, box)) return Separation::outside_the_domain();
+  if (!finite(t) || !in_domain(box)) return Separation::outside_the_domain();
   const Relative w{t.v[0] - box.center, t.v[1] - box.center, t.v[2] - box.center};
   const double reach = std::max({norm1(w[0]), norm1(w[1]), norm1(w[2])});
   const double magnitude = std::max({max_abs(t.v[0]), max_abs(t.v[1]), max_abs(t.v[2]), max_abs(box.center)});

@@ -119,5 +119,24 @@ TEST(TestObbObb, OutOfContractInputsGiveNoContact) {
   EXPECT_FALSE(test_obb_obb(kUnit, box({INFINITY, 0, 0}, {1, 1, 1})));
 }
 
+TEST(InDomain, EveryNonFiniteEntryAndEveryNegativeHalfExtentIsOutside) {
+  EXPECT_TRUE(in_domain(kUnit));
+  EXPECT_TRUE(in_domain(box({0, 0, 0}, {0, -0.0, 0})));  // a point; -0 is not negative
+  EXPECT_TRUE(in_domain(box({1e300, -1e300, 0}, {1e300, 1e300, 1e300})));
+  for (const double bad : {std::numeric_limits<double>::quiet_NaN(), double{INFINITY}, -double{INFINITY}}) {
+    for (int k = 0; k < 15; ++k) {  // centre, half extents, then the axes column by column
+      Obb b = kUnit;
+      Vec3& v = k < 3 ? b.center : k < 6 ? b.half : b.axes.col[(k - 6) / 3];
+      v = {k % 3 == 0 ? bad : v.x, k % 3 == 1 ? bad : v.y, k % 3 == 2 ? bad : v.z};
+      EXPECT_FALSE(in_domain(b)) << "entry " << k << " = " << bad;
+    }
+  }
+  for (int k = 0; k < 3; ++k) {
+    Obb b = kUnit;
+    b.half = {k == 0 ? -0x1p-1074 : 1, k == 1 ? -0x1p-1074 : 1, k == 2 ? -0x1p-1074 : 1};
+    EXPECT_FALSE(in_domain(b)) << "half extent " << k;
+  }
+}
+
 }  // namespace
 }  // namespace cc
