@@ -48,8 +48,8 @@ inline bool in_domain(const Sphere& a, const Sphere& b) {
   return finite(zero) && std::min(a.radius, b.radius) >= 0;
 }
 inline bool in_domain(const Sphere& a, const Obb& b) {
-  const Vec3 zero = (a.center - a.center) + (b.center - b.center) + (b.half - b.half) + Vec3{a.radius - a.radius, 0, 0};
-  return finite(zero) && finite(b.axes) && std::min({a.radius, b.half.x, b.half.y, b.half.z}) >= 0;
+  const Vec3 zero = (a.center - a.center) + Vec3{a.radius - a.radius, 0, 0};
+  return finite(zero) && a.radius >= 0 && cc::in_domain(b);
 }
 
 template <class Records>
