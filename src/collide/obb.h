@@ -16,9 +16,9 @@ struct Obb {
   friend constexpr bool operator==(const Obb&, const Obb&) = default;
 };
 
-/// True when the box is in the domain of every query on boxes: its centre, half extents and axes
-/// finite (one comparison: x - x is 0 only for a finite x), no half extent negative (0 is a flat
-/// box). NaN anywhere: false.
+/// What every query on boxes asks of a box (some ask more: a bound on the magnitude): its centre,
+/// half extents and axes finite (one comparison: x - x is 0 only for a finite x), no half extent
+/// negative (0 is a flat box). NaN anywhere: false. Orthonormal axes are the caller's promise.
 inline bool in_domain(const Obb& b) {
   const Vec3 zero = ((b.center - b.center) + (b.half - b.half)) +
                     ((b.axes.col[0] - b.axes.col[0]) + (b.axes.col[1] - b.axes.col[1]) + (b.axes.col[2] - b.axes.col[2]));
