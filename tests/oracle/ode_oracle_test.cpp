@@ -13,6 +13,7 @@
 #include "harness/model/mesh_query.h"
 #include "harness/model/party.h"
 #include "oracle/ode/ode_call.h"
+#include "oracle/ode/trimesh.h"
 
 namespace cc::ode_oracle {
 namespace {
@@ -176,6 +177,29 @@ TEST(OdeSecondOpinion, AnAbortInsideACallIsAFailedOpinion) {
   const Opinion o = ode_call([]() -> Opinion { std::abort(); });
   EXPECT_EQ(o.status, Opinion::Status::failed);
   EXPECT_EQ(ode_call([] { return harness::answered(true); }).status, Opinion::Status::answered);
+}
+
+TEST(OdeContacts, EachCallReportsItsOwnContactsAndNoOthers) {
+  // contacts() keeps one buffer from call to call: a call finding fewer contacts than the one
+  // before it, or none, reports only its own.
+  std::vector<dContactGeom> crossing, apart, again;
+  const Opinion o = ode_call([&] {
+    const Mesh flat{{{-2, -2, 0}, {2, -2, 0}, {0, 2, 0}}, {{0, 1, 2}}};
+    const TriMesh a(flat), through(Mesh{{{0, 0, -1}, {0, 0, 1}, {1, 0, 0}}, {{0, 1, 2}}}),
+        above(Mesh{{{0, 0, 1}, {0, 0, 2}, {1, 0, 1}}, {{0, 1, 2}}});
+    crossing = contacts(a.geom(), through.geom());
+    apart = contacts(a.geom(), above.geom());
+    again = contacts(a.geom(), through.geom());
+    return harness::answered(true);
+  });
+  ASSERT_EQ(o.status, Opinion::Status::answered) << o.detail;
+  ASSERT_FALSE(crossing.empty());
+  EXPECT_TRUE(apart.empty());
+  ASSERT_EQ(again.size(), crossing.size());
+  for (std::size_t i = 0; i < again.size(); ++i) {
+    EXPECT_EQ(again[i].depth, crossing[i].depth);
+    for (int k = 0; k < 3; ++k) EXPECT_EQ(again[i].pos[k], crossing[i].pos[k]);
+  }
 }
 
 TEST(OdeSecondOpinion, ItsVersionIsPkgConfigs) { EXPECT_EQ(ode_version(), "0.16.2"); }
