@@ -29,7 +29,7 @@ TriMesh::~TriMesh() {
 std::vector<dContactGeom> contacts(dGeomID a, dGeomID b) {
   constexpr int kMost = 0xffff;  // NUMC_MASK: the most contacts one dCollide reports
   // dCollide writes only the contacts it reports, so one buffer per thread, made once, holds
-  // them (zeroing a fresh 6 MB for every call was three quarters of a tri_tri case).
+  // them (zeroing a fresh 6 MB for every call took three quarters of a case of two triangles).
   static thread_local std::vector<dContactGeom> buffer(kMost);
   const int found = dCollide(a, b, kMost, buffer.data(), sizeof(dContactGeom));
   return {buffer.begin(), buffer.begin() + std::max(found, 0)};
