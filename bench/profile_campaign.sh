@@ -51,7 +51,8 @@ cd "$root"
 for k in "${kinds[@]}"; do
   perf record -q -o "$scratch/$k.data" -F 999 -- "$tool" campaign --query "$k" --seconds "$seconds" --workers 1 \
     --json "$scratch/$k.json" --out "$scratch/new" --max-new 0 --max-print 0 >/dev/null 2>&1 || true
-  [ -f "$scratch/$k.json" ] || { echo "profile_campaign.sh: the $k campaign wrote no summary" >&2; exit 1; }
+  [ -f "$scratch/$k.json" ] ||
+    { echo "profile_campaign.sh: the $k campaign under perf wrote no summary (is perf allowed? kernel.perf_event_paranoid <= 2)" >&2; exit 1; }
   perf report -i "$scratch/$k.data" --no-children --sort dso,sym --stdio 2>/dev/null | grep '%' >"$scratch/$k.txt" || true
 done
 
