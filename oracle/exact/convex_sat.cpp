@@ -176,13 +176,9 @@ std::vector<CandidateAxis> candidate_axes_for_any_offset(const ExactShape& a, co
   return candidates;
 }
 
-double separation_along(const Rational& gap, Magnitude conditioning) {
-  return (Magnitude::of(gap) / conditioning).to_double();
-}
+double separation_along(Magnitude gap, Magnitude conditioning) { return (gap / conditioning).to_double(); }
 
-double overlap_along(const Rational& gap, Magnitude length) {
-  return sgn(gap) == 0 ? 0.0 : -(Magnitude::of(gap) / length).to_double();
-}
+double overlap_along(Magnitude gap, Magnitude length) { return gap.m == 0 ? 0.0 : -(gap / length).to_double(); }
 
 SatResult exact_sat(const ExactShape& a, const ExactShape& b) {
   const Directions d = directions_of(a, b);
@@ -209,10 +205,10 @@ SatResult exact_sat(const ExactShape& a, const ExactShape& b) {
     const int index = static_cast<int>(result.axes.size());
     if (sgn(r.gap) > 0) {
       result.hit = false;
-      const double separation = separation_along(r.gap, r.conditioning);
+      const double separation = separation_along(Magnitude::of(r.gap), r.conditioning);
       if (separation > best_separation) best_separation = separation, separation_axis = index;
     } else {
-      const double overlap = overlap_along(r.gap, r.length);
+      const double overlap = overlap_along(Magnitude::of(r.gap), r.length);
       if (overlap < worst_overlap) worst_overlap = overlap, overlap_axis = index;
     }
     result.axes.push_back(std::move(r));

@@ -68,12 +68,12 @@ struct SatResult {
 
 SatResult exact_sat(const ExactShape& a, const ExactShape& b);
 
-/// What a gap > 0 along an axis counts for in SatResult::margin: gap / conditioning, rounded as
-/// exact_sat rounds it (0 or inf beyond the double range).
-double separation_along(const Rational& gap, Magnitude conditioning);
-/// What a gap <= 0 along an axis counts for in SatResult::margin: the overlap -gap / length
-/// (exactly 0 when the shapes touch along it), rounded as exact_sat rounds it.
-double overlap_along(const Rational& gap, Magnitude length);
+/// What a gap > 0 along an axis counts for in SatResult::margin, from the gap rounded
+/// (Magnitude::of): gap / conditioning (0 or inf beyond the double range).
+double separation_along(Magnitude gap, Magnitude conditioning);
+/// What a gap <= 0 along an axis counts for in SatResult::margin, from the gap rounded: the
+/// overlap -gap / length, exactly 0 when the shapes touch along it (a zero gap).
+double overlap_along(Magnitude gap, Magnitude length);
 
 /// A candidate separating axis and the divisor that turns a gap along it into a length (see
 /// SatResult).

@@ -1,10 +1,13 @@
 #include "oracle/exact/filtered_sat.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <optional>
 #include <vector>
 
 #include "oracle/exact/bounded.h"
+#include "oracle/exact/dyadic.h"
 
 namespace cc::exact {
 namespace {
@@ -116,33 +119,173 @@ struct Candidate {
   std::optional<double> exact;     // the value itself, where taken in rationals
 };
 
-// The rational side, built when first needed: exact_sat's shapes, directions and lengths.
+// The exact side, built when first needed, on integers: every double of both inputs on one
+// power of two 2^L, L below 0 and below the last bit of each of them, so that 1 and a box's
+// halves (lo + hi) / 2 and (hi - lo) / 2 are integers too. Vertices, centres and directions are
+// then on 2^L, half edges and cross products on 2^2L, and projections are taken on 2^4L (one
+// onto a vertex or a centre, on 2^3L, shifted by -L bits). The same shapes as exact_shape, the
+// same gaps, and the same roundings of the margins (dyadic.h), without a gcd.
 class ExactSide {
  public:
-  ExactSide(const SatInput& a, const SatInput& b) : a_(exact_shape(a, "A")), b_(exact_shape(b, "B")) {
-    dirs_ = a_.directions;
-    dirs_.insert(dirs_.end(), b_.directions.begin(), b_.directions.end());
-    for (const QVec3& d : dirs_) lengths_.push_back(length(d));
+  ExactSide(const SatInput& a, const SatInput& b) {
+    long lowest = 0;
+    const auto note = [&lowest](double x) {
+      if (x != 0) lowest = std::min(lowest, lowest_exponent(x));
+    };
+    for (const SatInput* s : {&a, &b}) {
+      if (const auto* t = std::get_if<Triangle>(s)) {
+        for (const Vec3& v : t->v) note(v.x), note(v.y), note(v.z);
+      } else if (const auto* o = std::get_if<Obb>(s)) {
+        for (const Vec3* v : {&o->center, &o->half, &o->axes.col[0], &o->axes.col[1], &o->axes.col[2]}) {
+          note(v->x), note(v->y), note(v->z);
+        }
+      } else {
+        const Aabb& box = std::get<Aabb>(*s);
+        for (const Vec3* v : {&box.lo, &box.hi}) note(v->x), note(v->y), note(v->z);
+      }
+    }
+    exponent_ = lowest - 1;
+    unit_shift_ = static_cast<unsigned long>(-exponent_);
+    shapes_[0] = shape(a);
+    shapes_[1] = shape(b);
+    for (const Shape& s : shapes_) dirs_.insert(dirs_.end(), s.directions.begin(), s.directions.end());
+    lengths_.resize(dirs_.size());
   }
   std::size_t direction_count() const { return dirs_.size(); }
 
-  // The candidate's axis in rationals: whether it exists, whether it separates, and its value.
-  void settle(Candidate& c) const {
+  // The candidate's axis exactly: whether it exists, whether it separates, and its value.
+  void settle(Candidate& c) {
     ++t_counts.exact_axes;
-    const QVec3 axis = cross(dirs_[c.i], dirs_[c.j]);
-    c.present = !exact::is_zero(axis);
+    cross(axis_, dirs_[c.i], dirs_[c.j]);
+    c.present = sgn(axis_[0]) != 0 || sgn(axis_[1]) != 0 || sgn(axis_[2]) != 0;
     if (!c.present) return;
-    const ExactShape::Interval pa = a_.project(axis), pb = b_.project(axis);
-    const Rational g1 = pb.lo - pa.hi, g2 = pa.lo - pb.hi;
-    const Rational& gap = g1 > g2 ? g1 : g2;
-    c.separates = sgn(gap) > 0;
-    c.exact = c.separates ? separation_along(gap, lengths_[c.i] * lengths_[c.j]) : overlap_along(gap, length(axis));
+    project(shapes_[0], lo_a_, hi_a_);
+    project(shapes_[1], lo_b_, hi_b_);
+    mpz_sub(gap_.get_mpz_t(), lo_b_.get_mpz_t(), hi_a_.get_mpz_t());
+    mpz_sub(other_.get_mpz_t(), lo_a_.get_mpz_t(), hi_b_.get_mpz_t());
+    if (other_ > gap_) mpz_swap(other_.get_mpz_t(), gap_.get_mpz_t());
+    c.separates = sgn(gap_) > 0;
+    const Magnitude gap = nearest_magnitude(gap_, 4 * exponent_, scratch_);
+    if (c.separates) {
+      c.exact = separation_along(gap, length_of(c.i) * length_of(c.j));
+    } else {
+      dot(product_, axis_, axis_);
+      c.exact = overlap_along(gap, length_from_square(product_, 2 * exponent_, scratch_));
+    }
   }
 
  private:
-  ExactShape a_, b_;
-  std::vector<QVec3> dirs_;
-  std::vector<Magnitude> lengths_;
+  using Vec = std::array<mpz_class, 3>;
+  struct Shape {
+    std::vector<Vec> vertices;    // triangles, on 2^L
+    Vec center;                   // parallelepipeds, on 2^L
+    std::vector<Vec> half_edges;  // parallelepipeds, on 2^2L
+    std::vector<Vec> directions;  // on 2^L
+  };
+
+  Vec on_grid(const Vec3& v) const {
+    Vec out;
+    for (int k = 0; k < 3; ++k) set_on(out[k], v[k], exponent_);
+    return out;
+  }
+
+  // The skips of float_shape and exact_shape.
+  Shape shape(const SatInput& input) const {
+    Shape s;
+    if (const auto* t = std::get_if<Triangle>(&input)) {
+      for (const Vec3& v : t->v) s.vertices.push_back(on_grid(v));
+      for (int i = 0; i < 3; ++i) {
+        if (t->v[i] == t->v[(i + 1) % 3]) continue;
+        Vec e;
+        for (int k = 0; k < 3; ++k) mpz_sub(e[k].get_mpz_t(), s.vertices[(i + 1) % 3][k].get_mpz_t(), s.vertices[i][k].get_mpz_t());
+        s.directions.push_back(std::move(e));
+      }
+    } else if (const auto* b = std::get_if<Obb>(&input)) {
+      s.center = on_grid(b->center);
+      for (int i = 0; i < 3; ++i) {
+        const Vec3& column = b->axes.col[i];
+        if (b->half[i] == 0 || (column.x == 0 && column.y == 0 && column.z == 0)) continue;
+        Vec k = on_grid(column), h;
+        mpz_class half;
+        set_on(half, b->half[i], exponent_);
+        for (int j = 0; j < 3; ++j) mpz_mul(h[j].get_mpz_t(), half.get_mpz_t(), k[j].get_mpz_t());
+        s.half_edges.push_back(std::move(h));
+        s.directions.push_back(std::move(k));
+      }
+    } else {
+      const Aabb& box = std::get<Aabb>(input);
+      const Vec lo = on_grid(box.lo), hi = on_grid(box.hi);  // even integers: L is below their last bits
+      for (int k = 0; k < 3; ++k) {
+        mpz_add(s.center[k].get_mpz_t(), lo[k].get_mpz_t(), hi[k].get_mpz_t());
+        mpz_tdiv_q_2exp(s.center[k].get_mpz_t(), s.center[k].get_mpz_t(), 1);
+      }
+      for (int i = 0; i < 3; ++i) {
+        if (box.lo[i] == box.hi[i]) continue;
+        Vec h{0, 0, 0}, axis{0, 0, 0};
+        mpz_sub(h[i].get_mpz_t(), hi[i].get_mpz_t(), lo[i].get_mpz_t());
+        mpz_mul_2exp(h[i].get_mpz_t(), h[i].get_mpz_t(), unit_shift_ - 1);  // (hi - lo) / 2 times 2^-L
+        mpz_set_ui(axis[i].get_mpz_t(), 1);
+        mpz_mul_2exp(axis[i].get_mpz_t(), axis[i].get_mpz_t(), unit_shift_);  // 1 on 2^L
+        s.half_edges.push_back(std::move(h));
+        s.directions.push_back(std::move(axis));
+      }
+    }
+    return s;
+  }
+
+  static void cross(Vec& out, const Vec& u, const Vec& v) {
+    for (int i = 0; i < 3; ++i) {
+      const int j = (i + 1) % 3, k = (i + 2) % 3;
+      mpz_mul(out[i].get_mpz_t(), u[j].get_mpz_t(), v[k].get_mpz_t());
+      mpz_submul(out[i].get_mpz_t(), u[k].get_mpz_t(), v[j].get_mpz_t());
+    }
+  }
+  static void dot(mpz_class& out, const Vec& u, const Vec& v) {
+    mpz_mul(out.get_mpz_t(), u[0].get_mpz_t(), v[0].get_mpz_t());
+    mpz_addmul(out.get_mpz_t(), u[1].get_mpz_t(), v[1].get_mpz_t());
+    mpz_addmul(out.get_mpz_t(), u[2].get_mpz_t(), v[2].get_mpz_t());
+  }
+
+  // The shape's extent along axis_, on 2^4L.
+  void project(const Shape& s, mpz_class& lo, mpz_class& hi) {
+    if (!s.vertices.empty()) {
+      for (std::size_t i = 0; i < s.vertices.size(); ++i) {
+        dot(product_, axis_, s.vertices[i]);
+        if (i == 0 || product_ < lo) lo = product_;
+        if (i == 0 || product_ > hi) hi = product_;
+      }
+      mpz_mul_2exp(lo.get_mpz_t(), lo.get_mpz_t(), unit_shift_);
+      mpz_mul_2exp(hi.get_mpz_t(), hi.get_mpz_t(), unit_shift_);
+      return;
+    }
+    dot(product_, axis_, s.center);
+    mpz_mul_2exp(product_.get_mpz_t(), product_.get_mpz_t(), unit_shift_);
+    radius_ = 0;
+    for (const Vec& h : s.half_edges) {
+      dot(other_, axis_, h);
+      mpz_abs(other_.get_mpz_t(), other_.get_mpz_t());
+      radius_ += other_;
+    }
+    mpz_sub(lo.get_mpz_t(), product_.get_mpz_t(), radius_.get_mpz_t());
+    mpz_add(hi.get_mpz_t(), product_.get_mpz_t(), radius_.get_mpz_t());
+  }
+
+  // The length of direction i, computed when first asked (an intersecting pair needs none).
+  Magnitude length_of(std::size_t i) {
+    if (!lengths_[i]) {
+      dot(product_, dirs_[i], dirs_[i]);
+      lengths_[i] = length_from_square(product_, exponent_, scratch_);
+    }
+    return *lengths_[i];
+  }
+
+  long exponent_ = 0;             // L
+  unsigned long unit_shift_ = 0;  // -L: 1 on 2^L is 2^-L
+  std::array<Shape, 2> shapes_;
+  std::vector<Vec> dirs_;
+  std::vector<std::optional<Magnitude>> lengths_;
+  Vec axis_;
+  mpz_class lo_a_, hi_a_, lo_b_, hi_b_, gap_, other_, product_, radius_, scratch_;
 };
 
 std::optional<TriangleSatVerdict> filtered(const SatInput& a, const SatInput& b) {

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "oracle/exact/convex_sat.h"
+#include "oracle/exact/dyadic.h"
 #include "oracle/exact/rational.h"
 
 namespace cc::exact {
@@ -15,42 +16,6 @@ void split(double d, long& m, long& e) {
   const double f = std::frexp(d, &k);
   m = static_cast<long>(std::ldexp(f, 53));
   e = k - 53;
-}
-
-// m 2^e as a Magnitude (as rational.cpp normalises one).
-Magnitude normalised(double m, long e) {
-  if (m == 0 || !std::isfinite(m)) return {m, 0};
-  int k = 0;
-  const double f = std::frexp(m, &k);
-  return {2 * f, e + k - 1};
-}
-
-// The Magnitude of x 2^exponent: x rounded to 53 bits, to nearest, ties to even (as
-// Magnitude::of rounds the rational).
-Magnitude nearest(const mpz_class& x, long exponent, mpz_class& scratch) {
-  const int sign = sgn(x);
-  if (sign == 0) return {};
-  const std::size_t bits = mpz_sizeinbase(x.get_mpz_t(), 2);
-  if (bits <= 53) return normalised(mpz_get_d(x.get_mpz_t()), exponent);
-  const std::size_t shift = bits - 53;
-  mpz_abs(scratch.get_mpz_t(), x.get_mpz_t());
-  const bool half = mpz_tstbit(scratch.get_mpz_t(), shift - 1) != 0;
-  const bool beyond_half = mpz_scan1(scratch.get_mpz_t(), 0) < shift - 1;
-  mpz_tdiv_q_2exp(scratch.get_mpz_t(), scratch.get_mpz_t(), shift);
-  unsigned long q = mpz_get_ui(scratch.get_mpz_t());
-  if (half && (beyond_half || (q & 1))) ++q;  // 2^53 at most: exact in a double
-  return normalised(sign * static_cast<double>(q), exponent + static_cast<long>(shift));
-}
-
-// The Euclidean length of a vector whose squared norm is `square` 2^(2 exponent), as
-// exact::length computes it: the square rounded to a double, its square root rounded (an even
-// power of two taken out of the square does not change either rounding).
-Magnitude length_of(const mpz_class& square, long exponent, mpz_class& scratch) {
-  const Magnitude s = nearest(square, 0, scratch);
-  if (s.m == 0) return {};
-  const bool odd = (s.e % 2) != 0;
-  const double root = std::sqrt(odd ? 2 * s.m : s.m);
-  return normalised(root, (odd ? s.e - 1 : s.e) / 2 + exponent);
 }
 
 }  // namespace
@@ -201,7 +166,7 @@ std::optional<TriangleSatVerdict> TriangleSat::operator()(const std::array<const
     zero[e] = sgn(edges_[e][0]) == 0 && sgn(edges_[e][1]) == 0 && sgn(edges_[e][2]) == 0;
     if (zero[e]) continue;
     dot(squares_[n], edges_[e], edges_[e]);
-    lengths[n] = length_of(squares_[n], least, scratch_);
+    lengths[n] = length_from_square(squares_[n], least, scratch_);
     direction[n++] = e;
   }
   // Cross products of every pair of directions, and triple products of every three; rank 3 when
@@ -249,13 +214,13 @@ std::optional<TriangleSatVerdict> TriangleSat::operator()(const std::array<const
   bool separated = false;
   // The gap (in gap_, on 2^(axis_exponent + E)) along an axis: separating or overlapping.
   const auto consider = [&](const Vec& axis, long axis_exponent, const Magnitude& conditioning) {
-    const Magnitude g = nearest(gap_, axis_exponent + least, scratch_);
+    const Magnitude g = nearest_magnitude(gap_, axis_exponent + least, scratch_);
     if (sgn(gap_) > 0) {
       separated = true;
       best_separation = std::max(best_separation, (g / conditioning).to_double());
     } else if (verdict.rank == 3 && !separated) {  // the overlap counts only when nothing separates
       dot(product_, axis, axis);
-      const double overlap = sgn(gap_) == 0 ? 0.0 : -(g / length_of(product_, axis_exponent, scratch_)).to_double();
+      const double overlap = sgn(gap_) == 0 ? 0.0 : -(g / length_from_square(product_, axis_exponent, scratch_)).to_double();
       worst_overlap = std::min(worst_overlap, overlap);
     }
   };

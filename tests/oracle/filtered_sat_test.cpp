@@ -1,6 +1,6 @@
 // sat_verdict: exact_sat's answer bit for bit on boxes and triangles that touch, lie apart,
 // overlap, have parallel edges, are flat or degenerate, and sit at extreme scales; and which
-// path decided each: the filter with few axes in rationals, or exact_sat whole.
+// path decided each: the filter with few axes taken exactly, or exact_sat whole.
 #include "oracle/exact/filtered_sat.h"
 
 #include <gtest/gtest.h>
@@ -36,7 +36,7 @@ Outcome checked(const SatInput& a, const SatInput& b) {
 
 const Aabb kUnitBox{{0, 0, 0}, {1, 1, 1}};
 
-TEST(SatVerdict, ATriangleTouchingABoxFaceIsAHitOfMarginZeroWithoutRationals) {
+TEST(SatVerdict, ATriangleTouchingABoxFaceIsAHitOfMarginZeroInFloatingPointAlone) {
   // A vertex on the face x = 1 and the triangle's plane parallel to it: the gap along x is
   // exactly 0 in floating point.
   const Outcome o = checked(kUnitBox, Triangle{{{{1, 0.5, 0.5}, {2, 0.5, 0.5}, {2, 0.75, 0.5}}}});
@@ -46,7 +46,7 @@ TEST(SatVerdict, ATriangleTouchingABoxFaceIsAHitOfMarginZeroWithoutRationals) {
   EXPECT_EQ(o.exact_axes, 0);
 }
 
-TEST(SatVerdict, ATriangleApartFromABoxTakesTheDecidingAxisInRationals) {
+TEST(SatVerdict, ATriangleApartFromABoxTakesTheDecidingAxisExactly) {
   const Outcome o = checked(kUnitBox, Triangle{{{{1.1, 0.3, 0.3}, {2, 0.1, 0.7}, {1.7, 0.9, 0.2}}}});
   EXPECT_FALSE(o.verdict.hit);
   EXPECT_LT(o.verdict.margin, 0);
@@ -93,7 +93,7 @@ TEST(SatVerdict, ExtremeScalesGoToExactSatWhole) {
   EXPECT_EQ(checked(Aabb{{0, 0, 0}, {l, l, l}}, Triangle{{{{l, 0, 0}, {2 * l, l, 0}, {l, 0, l}}}}).path, Path::filtered);
 }
 
-TEST(SatVerdict, EdgesParallelToTheBoxAxesNeedNoRationalsToBeDropped) {
+TEST(SatVerdict, EdgesParallelToTheBoxAxesAreDroppedInFloatingPoint) {
   // Every triangle edge along a box axis: the cross products that vanish are exact zeros.
   const Outcome o = checked(kUnitBox, Triangle{{{{2, 0, 0}, {3, 0, 0}, {2, 1, 0}}}});
   EXPECT_FALSE(o.verdict.hit);

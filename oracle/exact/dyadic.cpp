@@ -1,0 +1,74 @@
+#include "oracle/exact/dyadic.h"
+
+#include <cmath>
+
+namespace cc::exact {
+namespace {
+
+// m 2^e as a Magnitude (as rational.cpp normalises one).
+Magnitude normalised(double m, long e) {
+  if (m == 0 || !std::isfinite(m)) return {m, 0};
+  int k = 0;
+  const double f = std::frexp(m, &k);
+  return {2 * f, e + k - 1};
+}
+
+}  // namespace
+
+namespace {
+
+// x = odd 2^exponent, for a finite nonzero x.
+void split(double x, long long& odd, long& exponent) {
+  int k = 0;
+  const double f = std::frexp(x, &k);
+  const auto m = static_cast<long long>(std::ldexp(f, 53));  // x = m 2^(k - 53), 0 < |m| < 2^53
+  const int zeros = __builtin_ctzll(static_cast<unsigned long long>(m));
+  odd = m >> zeros;  // exact: the bits shifted out are zeros
+  exponent = k - 53 + zeros;
+}
+
+}  // namespace
+
+long lowest_exponent(double x) {
+  long long odd = 0;
+  long exponent = 0;
+  split(x, odd, exponent);
+  return exponent;
+}
+
+void set_on(mpz_class& out, double x, long exponent) {
+  if (x == 0) {
+    out = 0;
+    return;
+  }
+  long long odd = 0;
+  long e = 0;
+  split(x, odd, e);
+  mpz_set_si(out.get_mpz_t(), static_cast<long>(odd));
+  mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<unsigned long>(e - exponent));
+}
+
+Magnitude nearest_magnitude(const mpz_class& x, long exponent, mpz_class& scratch) {
+  const int sign = sgn(x);
+  if (sign == 0) return {};
+  const std::size_t bits = mpz_sizeinbase(x.get_mpz_t(), 2);
+  if (bits <= 53) return normalised(mpz_get_d(x.get_mpz_t()), exponent);
+  const std::size_t shift = bits - 53;
+  mpz_abs(scratch.get_mpz_t(), x.get_mpz_t());
+  const bool half = mpz_tstbit(scratch.get_mpz_t(), shift - 1) != 0;
+  const bool beyond_half = mpz_scan1(scratch.get_mpz_t(), 0) < shift - 1;
+  mpz_tdiv_q_2exp(scratch.get_mpz_t(), scratch.get_mpz_t(), shift);
+  unsigned long q = mpz_get_ui(scratch.get_mpz_t());
+  if (half && (beyond_half || (q & 1))) ++q;  // 2^53 at most: exact in a double
+  return normalised(sign * static_cast<double>(q), exponent + static_cast<long>(shift));
+}
+
+Magnitude length_from_square(const mpz_class& square, long exponent, mpz_class& scratch) {
+  const Magnitude s = nearest_magnitude(square, 0, scratch);
+  if (s.m == 0) return {};
+  const bool odd = (s.e % 2) != 0;
+  const double root = std::sqrt(odd ? 2 * s.m : s.m);
+  return normalised(root, (odd ? s.e - 1 : s.e) / 2 + exponent);
+}
+
+}  // namespace cc::exact
