@@ -48,6 +48,16 @@ void set_on(mpz_class& out, double x, long exponent) {
   mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<unsigned long>(e - exponent));
 }
 
+Rational rational_on(const mpz_class& x, long exponent) {
+  Rational q{x};
+  if (exponent >= 0) {
+    mpq_mul_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<unsigned long>(exponent));
+  } else {
+    mpq_div_2exp(q.get_mpq_t(), q.get_mpq_t(), static_cast<unsigned long>(-exponent));
+  }
+  return q;
+}
+
 Magnitude nearest_magnitude(const mpz_class& x, long exponent, mpz_class& scratch) {
   const int sign = sgn(x);
   if (sign == 0) return {};

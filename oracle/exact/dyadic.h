@@ -16,6 +16,9 @@ long lowest_exponent(double x);
 /// x == 0).
 void set_on(mpz_class& out, double x, long exponent);
 
+/// x 2^exponent as a rational.
+Rational rational_on(const mpz_class& x, long exponent);
+
 /// Magnitude::of(x 2^exponent): x rounded to 53 bits, to nearest, ties to even. `scratch` is
 /// storage reused between calls.
 Magnitude nearest_magnitude(const mpz_class& x, long exponent, mpz_class& scratch);

@@ -1,11 +1,16 @@
 // The exact time window of moving boxes: ExactWindow::restrict keeps the times t in the window
 // at which |p + t s| <= r, checked against that definition at times on a grid and at the
-// window's ends and just beyond them.
+// window's ends and just beyond them. moving_axes gives the candidate axes of the boxes as
+// parallelepipeds and their p, s and r, checked against those definitions in rationals on the
+// moving_obb generator's boxes (flat, rotated, touching, at every scale).
 #include "oracle/exact/exact_sweep.h"
 
 #include <gtest/gtest.h>
 
 #include <random>
+
+#include "harness/generation/choices.h"
+#include "harness/generation/generate.h"
 
 namespace cc::exact {
 namespace {
@@ -57,6 +62,43 @@ TEST(ExactWindow, RestrictKeepsTheTimesOfItsDefinition) {
   }
   EXPECT_GT(hits, 300);
   EXPECT_GT(misses, 300);
+}
+
+TEST(MovingAxes, AreTheParallelepipedsCandidateAxesWithTheirOffsetsRatesAndRadii) {
+  int spanning = 0, flat = 0;
+  for (std::uint64_t seed = 0; seed < 3000; ++seed) {
+    harness::RandomChoices choices(seed);
+    const auto in = std::get<harness::MovingObbInput>(harness::generate(harness::QueryKind::moving_obb, choices));
+    bool finite_boxes = true;
+    for (const MovingObb* m : {&in.a, &in.b}) {
+      finite_boxes = finite_boxes && finite(m->box.center) && finite(m->box.half) && finite(m->box.axes) &&
+                     finite(m->velocity) && m->box.half.x >= 0 && m->box.half.y >= 0 && m->box.half.z >= 0;
+    }
+    if (!finite_boxes) continue;
+    const ExactShape sa = parallelepiped_shape(in.a.box.center, in.a.box.half, in.a.box.axes, "A");
+    const ExactShape sb = parallelepiped_shape(in.b.box.center, in.b.box.half, in.b.box.axes, "B");
+    const std::vector<CandidateAxis> expected = candidate_axes_for_any_offset(sa, sb);
+    const std::vector<MovingAxis> got = moving_axes(in.a, in.b);
+    ASSERT_EQ(got.size(), expected.size()) << "seed " << seed;
+    const QVec3 d = sb.center - sa.center, w = rational(in.b.velocity) - rational(in.a.velocity);
+    for (std::size_t i = 0; i < got.size(); ++i) {
+      const CandidateAxis& c = expected[i];
+      ASSERT_EQ(got[i].axis.name, c.name) << "seed " << seed;
+      for (int k = 0; k < 3; ++k) ASSERT_EQ(got[i].axis.axis[k], c.axis[k]) << "seed " << seed;
+      ASSERT_EQ(got[i].axis.conditioning.m, c.conditioning.m) << "seed " << seed;
+      ASSERT_EQ(got[i].axis.conditioning.e, c.conditioning.e) << "seed " << seed;
+      Rational r = 0;
+      for (const ExactShape* s : {&sa, &sb}) {
+        for (const QVec3& h : s->half_edges) r += abs(dot(c.axis, h));
+      }
+      ASSERT_EQ(got[i].p, dot(c.axis, d)) << "seed " << seed << " axis " << c.name;
+      ASSERT_EQ(got[i].s, dot(c.axis, w)) << "seed " << seed << " axis " << c.name;
+      ASSERT_EQ(got[i].r, r) << "seed " << seed << " axis " << c.name;
+    }
+    (sa.directions.size() + sb.directions.size() == 6 ? spanning : flat) += 1;
+  }
+  EXPECT_GT(spanning, 1000);
+  EXPECT_GT(flat, 50);  // flat boxes: fewer directions, down to the points' candidate axes
 }
 
 }  // namespace
