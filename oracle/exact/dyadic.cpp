@@ -58,23 +58,8 @@ Rational rational_on(const mpz_class& x, long exponent) {
   return q;
 }
 
-Magnitude nearest_magnitude(const mpz_class& x, long exponent, mpz_class& scratch) {
-  const int sign = sgn(x);
-  if (sign == 0) return {};
-  const std::size_t bits = mpz_sizeinbase(x.get_mpz_t(), 2);
-  if (bits <= 53) return normalised(mpz_get_d(x.get_mpz_t()), exponent);
-  const std::size_t shift = bits - 53;
-  mpz_abs(scratch.get_mpz_t(), x.get_mpz_t());
-  const bool half = mpz_tstbit(scratch.get_mpz_t(), shift - 1) != 0;
-  const bool beyond_half = mpz_scan1(scratch.get_mpz_t(), 0) < shift - 1;
-  mpz_tdiv_q_2exp(scratch.get_mpz_t(), scratch.get_mpz_t(), shift);
-  unsigned long q = mpz_get_ui(scratch.get_mpz_t());
-  if (half && (beyond_half || (q & 1))) ++q;  // 2^53 at most: exact in a double
-  return normalised(sign * static_cast<double>(q), exponent + static_cast<long>(shift));
-}
-
-Magnitude length_from_square(const mpz_class& square, long exponent, mpz_class& scratch) {
-  const Magnitude s = nearest_magnitude(square, 0, scratch);
+Magnitude length_from_square(const mpz_class& square, long exponent) {
+  const Magnitude s = nearest_magnitude(square, 0);
   if (s.m == 0) return {};
   const bool odd = (s.e % 2) != 0;
   const double root = std::sqrt(odd ? 2 * s.m : s.m);

@@ -1,6 +1,7 @@
 // Dyadic rationals as integers on a power of two: every double is m 2^e with an integer m, so
 // sums and products of doubles are integers on a common power of two, computed by GMP without
-// a gcd. The roundings here are the ones rational.h takes on the same values.
+// a gcd. The roundings here are the ones rational.h takes on the same values (its
+// nearest_magnitude rounds such an integer as Magnitude::of rounds the rational).
 #pragma once
 
 #include <gmpxx.h>
@@ -19,13 +20,9 @@ void set_on(mpz_class& out, double x, long exponent);
 /// x 2^exponent as a rational.
 Rational rational_on(const mpz_class& x, long exponent);
 
-/// Magnitude::of(x 2^exponent): x rounded to 53 bits, to nearest, ties to even. `scratch` is
-/// storage reused between calls.
-Magnitude nearest_magnitude(const mpz_class& x, long exponent, mpz_class& scratch);
-
 /// exact::length of a vector whose squared norm is square 2^(2 exponent): the square rounded to
 /// a double, then its square root rounded (an even power of two taken out of the square
 /// changes neither rounding).
-Magnitude length_from_square(const mpz_class& square, long exponent, mpz_class& scratch);
+Magnitude length_from_square(const mpz_class& square, long exponent);
 
 }  // namespace cc::exact

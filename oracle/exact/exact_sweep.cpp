@@ -89,7 +89,7 @@ std::optional<std::vector<MovingAxis>> spanning_moving_axes(const MovingObb& a, 
   const std::size_t n = dirs.size();
   std::vector<IntVec> crosses(n * n);
   bool spans = false;
-  mpz_class t, scratch;
+  mpz_class t;
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = i + 1; j < n; ++j) {
       cross(crosses[i * n + j], dirs[i], dirs[j]);
@@ -103,7 +103,7 @@ std::optional<std::vector<MovingAxis>> spanning_moving_axes(const MovingObb& a, 
   std::vector<Magnitude> lengths;
   for (const IntVec& d : dirs) {
     dot(t, d, d);
-    lengths.push_back(length_from_square(t, columns, scratch));
+    lengths.push_back(length_from_square(t, columns));
   }
   IntVec d = on_grid(b.box.center, centres), w = on_grid(b.velocity, velocities);
   const IntVec ca = on_grid(a.box.center, centres), va = on_grid(a.velocity, velocities);

@@ -165,12 +165,12 @@ class ExactSide {
     mpz_sub(other_.get_mpz_t(), lo_a_.get_mpz_t(), hi_b_.get_mpz_t());
     if (other_ > gap_) mpz_swap(other_.get_mpz_t(), gap_.get_mpz_t());
     c.separates = sgn(gap_) > 0;
-    const Magnitude gap = nearest_magnitude(gap_, 4 * exponent_, scratch_);
+    const Magnitude gap = nearest_magnitude(gap_, 4 * exponent_);
     if (c.separates) {
       c.exact = separation_along(gap, length_of(c.i) * length_of(c.j));
     } else {
       dot(product_, axis_, axis_);
-      c.exact = overlap_along(gap, length_from_square(product_, 2 * exponent_, scratch_));
+      c.exact = overlap_along(gap, length_from_square(product_, 2 * exponent_));
     }
   }
 
@@ -274,7 +274,7 @@ class ExactSide {
   Magnitude length_of(std::size_t i) {
     if (!lengths_[i]) {
       dot(product_, dirs_[i], dirs_[i]);
-      lengths_[i] = length_from_square(product_, exponent_, scratch_);
+      lengths_[i] = length_from_square(product_, exponent_);
     }
     return *lengths_[i];
   }
@@ -285,7 +285,7 @@ class ExactSide {
   std::vector<Vec> dirs_;
   std::vector<std::optional<Magnitude>> lengths_;
   Vec axis_;
-  mpz_class lo_a_, hi_a_, lo_b_, hi_b_, gap_, other_, product_, radius_, scratch_;
+  mpz_class lo_a_, hi_a_, lo_b_, hi_b_, gap_, other_, product_, radius_;
 };
 
 std::optional<TriangleSatVerdict> filtered(const SatInput& a, const SatInput& b) {

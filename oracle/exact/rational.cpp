@@ -16,7 +16,28 @@ Rational rational(double x) {
   return q;
 }
 
+namespace {
+
+// Whether q's denominator is a power of two, 2^shift (so q is an integer times 2^-shift): every
+// sum and product of doubles is such a rational.
+bool dyadic(const Rational& q, unsigned long& shift) {
+  const mpz_srcptr den = q.get_den_mpz_t();
+  const std::size_t bits = mpz_sizeinbase(den, 2);
+  if (mpz_scan1(den, 0) != bits - 1) return false;
+  shift = static_cast<unsigned long>(bits - 1);
+  return true;
+}
+
+}  // namespace
+
 double to_double(const Rational& q) {
+  // A dyadic rational whose rounding lands among the normal doubles: its numerator rounded to
+  // 53 bits is the nearest double.
+  if (unsigned long shift = 0; dyadic(q, shift)) {
+    const Magnitude m = nearest_magnitude(q.get_num(), -static_cast<long>(shift));
+    if (m.m == 0) return 0;
+    if (m.e >= -1022 && m.e <= 1023) return std::ldexp(m.m, static_cast<int>(m.e));
+  }
   // mpq_get_d truncates; round to nearest by comparing with the two neighbours.
   const double t = mpq_get_d(q.get_mpq_t());
   if (!std::isfinite(t)) return t;
@@ -88,8 +109,25 @@ Magnitude normalised(double m, long e) {
 
 }  // namespace
 
+Magnitude nearest_magnitude(const mpz_class& x, long exponent) {
+  const int sign = sgn(x);
+  if (sign == 0) return {};
+  const std::size_t bits = mpz_sizeinbase(x.get_mpz_t(), 2);
+  if (bits <= 53) return normalised(mpz_get_d(x.get_mpz_t()), exponent);
+  const std::size_t shift = bits - 53;
+  thread_local mpz_class top;
+  mpz_abs(top.get_mpz_t(), x.get_mpz_t());
+  const bool half = mpz_tstbit(top.get_mpz_t(), shift - 1) != 0;
+  const bool beyond_half = mpz_scan1(top.get_mpz_t(), 0) < shift - 1;
+  mpz_tdiv_q_2exp(top.get_mpz_t(), top.get_mpz_t(), shift);
+  unsigned long q = mpz_get_ui(top.get_mpz_t());
+  if (half && (beyond_half || (q & 1))) ++q;  // 2^53 at most: exact in a double
+  return normalised(sign * static_cast<double>(q), exponent + static_cast<long>(shift));
+}
+
 Magnitude Magnitude::of(const Rational& q) {
   if (sgn(q) == 0) return {};
+  if (unsigned long shift = 0; dyadic(q, shift)) return nearest_magnitude(q.get_num(), -static_cast<long>(shift));
   const long e = rough_log2(q);
   return normalised(exact::to_double(scaled(q, e)), e);
 }

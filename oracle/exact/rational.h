@@ -43,6 +43,8 @@ struct Magnitude {
   static Magnitude of(const Rational& q);  // rounded to double precision
   double to_double() const;                 // saturates to 0 or inf outside the double range
 };
+/// Magnitude::of(x 2^exponent) for an integer x: x rounded to 53 bits, to nearest, ties to even.
+Magnitude nearest_magnitude(const mpz_class& x, long exponent);
 Magnitude operator*(Magnitude a, Magnitude b);
 Magnitude operator/(Magnitude a, Magnitude b);
 /// a + b for a, b >= 0 (rounded).

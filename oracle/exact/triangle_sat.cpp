@@ -166,7 +166,7 @@ std::optional<TriangleSatVerdict> TriangleSat::operator()(const std::array<const
     zero[e] = sgn(edges_[e][0]) == 0 && sgn(edges_[e][1]) == 0 && sgn(edges_[e][2]) == 0;
     if (zero[e]) continue;
     dot(squares_[n], edges_[e], edges_[e]);
-    lengths[n] = length_from_square(squares_[n], least, scratch_);
+    lengths[n] = length_from_square(squares_[n], least);
     direction[n++] = e;
   }
   // Cross products of every pair of directions, and triple products of every three; rank 3 when
@@ -214,13 +214,13 @@ std::optional<TriangleSatVerdict> TriangleSat::operator()(const std::array<const
   bool separated = false;
   // The gap (in gap_, on 2^(axis_exponent + E)) along an axis: separating or overlapping.
   const auto consider = [&](const Vec& axis, long axis_exponent, const Magnitude& conditioning) {
-    const Magnitude g = nearest_magnitude(gap_, axis_exponent + least, scratch_);
+    const Magnitude g = nearest_magnitude(gap_, axis_exponent + least);
     if (sgn(gap_) > 0) {
       separated = true;
       best_separation = std::max(best_separation, (g / conditioning).to_double());
     } else if (verdict.rank == 3 && !separated) {  // the overlap counts only when nothing separates
       dot(product_, axis, axis);
-      const double overlap = sgn(gap_) == 0 ? 0.0 : -(g / length_from_square(product_, axis_exponent, scratch_)).to_double();
+      const double overlap = sgn(gap_) == 0 ? 0.0 : -(g / length_from_square(product_, axis_exponent)).to_double();
       worst_overlap = std::min(worst_overlap, overlap);
     }
   };

@@ -67,7 +67,7 @@ class TriangleSat {
   std::array<mpz_class, 6> squares_;
   std::array<mpz_class, 4> t_;
   Vec w_, axis_;
-  mpz_class product_, lo_a_, hi_a_, lo_b_, hi_b_, gap_, other_, scratch_;
+  mpz_class product_, lo_a_, hi_a_, lo_b_, hi_b_, gap_, other_;
 };
 
 }  // namespace cc::exact
