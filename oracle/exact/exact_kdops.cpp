@@ -1,32 +1,60 @@
 #include "oracle/exact/exact_kdops.h"
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
-#include <tuple>
 
 #include "collide/kdop.h"
+#include "oracle/exact/dyadic.h"
 
 namespace cc::exact {
 
+// On integers: every coordinate of both sets on one power of two 2^L (dyadic.h), so that a
+// projection onto a direction of components 0 and +-1 is a sum and difference of integers; the
+// slab's ends and overlap become rationals at the end.
 std::vector<ExactSlab> exact_kdop_slabs(int k, const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
-  std::vector<ExactSlab> slabs;
-  for (const KdopDirection& dir : kdop_directions(k)) {
-    const QVec3 d{dir.x, dir.y, dir.z};
-    const auto extent = [&d](const std::vector<Vec3>& points) {
-      Rational lo = dot(d, rational(points[0])), hi = lo;
-      for (const Vec3& p : points) {
-        const Rational s = dot(d, rational(p));
-        if (s < lo) lo = s;
-        if (s > hi) hi = s;
+  long lowest = 0;
+  for (const auto* set : {&a, &b}) {
+    for (const Vec3& p : *set) {
+      for (int i = 0; i < 3; ++i) {
+        if (p[i] != 0) lowest = std::min(lowest, lowest_exponent(p[i]));
       }
-      return std::pair{lo, hi};
+    }
+  }
+  using IntPoint = std::array<mpz_class, 3>;
+  const auto on_grid = [lowest](const std::vector<Vec3>& points) {
+    std::vector<IntPoint> out(points.size());
+    for (std::size_t j = 0; j < points.size(); ++j) {
+      for (int i = 0; i < 3; ++i) set_on(out[j][i], points[j][i], lowest);
+    }
+    return out;
+  };
+  const std::vector<IntPoint> ia = on_grid(a), ib = on_grid(b);
+  std::vector<ExactSlab> slabs;
+  mpz_class s, a_lo, a_hi, b_lo, b_hi, overlap;
+  for (const KdopDirection& dir : kdop_directions(k)) {
+    const std::array<int, 3> d{dir.x, dir.y, dir.z};
+    const auto extent = [&d, &s](const std::vector<IntPoint>& points, mpz_class& lo, mpz_class& hi) {
+      for (std::size_t j = 0; j < points.size(); ++j) {
+        s = 0;
+        for (int i = 0; i < 3; ++i) {
+          if (d[i] > 0) s += points[j][i];
+          if (d[i] < 0) s -= points[j][i];
+        }
+        if (j == 0 || s < lo) lo = s;
+        if (j == 0 || s > hi) hi = s;
+      }
     };
-    ExactSlab s;
-    std::tie(s.a_lo, s.a_hi) = extent(a);
-    std::tie(s.b_lo, s.b_hi) = extent(b);
-    s.overlap = (s.a_hi < s.b_hi ? s.a_hi : s.b_hi) - (s.a_lo > s.b_lo ? s.a_lo : s.b_lo);
-    s.length = std::sqrt(static_cast<double>(std::abs(dir.x) + std::abs(dir.y) + std::abs(dir.z)));
-    slabs.push_back(s);
+    extent(ia, a_lo, a_hi);
+    extent(ib, b_lo, b_hi);
+    overlap = (a_hi < b_hi ? a_hi : b_hi) - (a_lo > b_lo ? a_lo : b_lo);
+    ExactSlab slab;
+    slab.a_lo = rational_on(a_lo, lowest), slab.a_hi = rational_on(a_hi, lowest);
+    slab.b_lo = rational_on(b_lo, lowest), slab.b_hi = rational_on(b_hi, lowest);
+    slab.overlap = rational_on(overlap, lowest);
+    slab.length = std::sqrt(static_cast<double>(std::abs(dir.x) + std::abs(dir.y) + std::abs(dir.z)));
+    slabs.push_back(std::move(slab));
   }
   return slabs;
 }
