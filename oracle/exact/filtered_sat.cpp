@@ -116,7 +116,7 @@ struct Candidate {
   bool present = true;   // false: the exact cross product vanishes, not an axis
   bool separates = false;
   Estimate value;                  // of separation_along or overlap_along
-  std::optional<double> exact;     // the value itself, where taken in rationals
+  std::optional<double> exact;     // the value itself, where taken exactly
 };
 
 // The exact side, built when first needed, on integers: every double of both inputs on one
