@@ -48,6 +48,28 @@ void set_on(mpz_class& out, double x, long exponent) {
   mpz_mul_2exp(out.get_mpz_t(), out.get_mpz_t(), static_cast<unsigned long>(e - exponent));
 }
 
+IntVec3 on_grid(const Vec3& v, long exponent) {
+  IntVec3 out;
+  for (int k = 0; k < 3; ++k) set_on(out[k], v[k], exponent);
+  return out;
+}
+
+void cross(IntVec3& out, const IntVec3& u, const IntVec3& v) {
+  for (int i = 0; i < 3; ++i) {
+    const int j = (i + 1) % 3, k = (i + 2) % 3;
+    mpz_mul(out[i].get_mpz_t(), u[j].get_mpz_t(), v[k].get_mpz_t());
+    mpz_submul(out[i].get_mpz_t(), u[k].get_mpz_t(), v[j].get_mpz_t());
+  }
+}
+
+void dot(mpz_class& out, const IntVec3& u, const IntVec3& v) {
+  mpz_mul(out.get_mpz_t(), u[0].get_mpz_t(), v[0].get_mpz_t());
+  mpz_addmul(out.get_mpz_t(), u[1].get_mpz_t(), v[1].get_mpz_t());
+  mpz_addmul(out.get_mpz_t(), u[2].get_mpz_t(), v[2].get_mpz_t());
+}
+
+bool is_zero(const IntVec3& v) { return sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0; }
+
 Rational rational_on(const mpz_class& x, long exponent) {
   Rational q{x};
   if (exponent >= 0) {

@@ -6,6 +6,10 @@
 
 #include <gmpxx.h>
 
+#include <array>
+
+#include "collide/vec3.h"
+
 #include "oracle/exact/rational.h"
 
 namespace cc::exact {
@@ -16,6 +20,16 @@ long lowest_exponent(double x);
 /// out = x / 2^exponent, an integer: requires x finite and exponent <= lowest_exponent(x) (or
 /// x == 0).
 void set_on(mpz_class& out, double x, long exponent);
+
+/// A vector of integers, all on one power of two.
+using IntVec3 = std::array<mpz_class, 3>;
+
+/// v's coordinates on 2^exponent (each as set_on).
+IntVec3 on_grid(const Vec3& v, long exponent);
+/// out = u x v, and out = u . v, in integers (out must not be u or v).
+void cross(IntVec3& out, const IntVec3& u, const IntVec3& v);
+void dot(mpz_class& out, const IntVec3& u, const IntVec3& v);
+bool is_zero(const IntVec3& v);
 
 /// x 2^exponent as a rational.
 Rational rational_on(const mpz_class& x, long exponent);

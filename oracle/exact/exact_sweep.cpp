@@ -22,24 +22,6 @@ void ExactWindow::restrict(const Rational& p, const Rational& s, const Rational&
 
 namespace {
 
-using IntVec = std::array<mpz_class, 3>;
-
-void cross(IntVec& out, const IntVec& u, const IntVec& v) {
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    mpz_mul(out[i].get_mpz_t(), u[j].get_mpz_t(), v[k].get_mpz_t());
-    mpz_submul(out[i].get_mpz_t(), u[k].get_mpz_t(), v[j].get_mpz_t());
-  }
-}
-
-void dot(mpz_class& out, const IntVec& u, const IntVec& v) {
-  mpz_mul(out.get_mpz_t(), u[0].get_mpz_t(), v[0].get_mpz_t());
-  mpz_addmul(out.get_mpz_t(), u[1].get_mpz_t(), v[1].get_mpz_t());
-  mpz_addmul(out.get_mpz_t(), u[2].get_mpz_t(), v[2].get_mpz_t());
-}
-
-bool is_zero(const IntVec& v) { return sgn(v[0]) == 0 && sgn(v[1]) == 0 && sgn(v[2]) == 0; }
-
 // moving_axes for boxes whose edge directions span space, on integers (dyadic.h): the columns
 // of both boxes on one power of two 2^C, their centres on 2^P, their velocities on 2^V and their
 // half extents on 2^H (each the lowest last bit of its kind, so that a tiny velocity does not
@@ -64,14 +46,9 @@ std::optional<std::vector<MovingAxis>> spanning_moving_axes(const MovingObb& a, 
   const long centres = lowest_of([](const MovingObb& m) { return std::array<const Vec3*, 1>{&m.box.center}; });
   const long velocities = lowest_of([](const MovingObb& m) { return std::array<const Vec3*, 1>{&m.velocity}; });
   const long halves = lowest_of([](const MovingObb& m) { return std::array<const Vec3*, 1>{&m.box.half}; });
-  const auto on_grid = [](const Vec3& v, long exponent) {
-    IntVec out;
-    for (int k = 0; k < 3; ++k) set_on(out[k], v[k], exponent);
-    return out;
-  };
   // The directions of parallelepiped_shape: the columns with a nonzero half extent and length.
   static const char* kAxisNames[] = {"x", "y", "z"};
-  std::vector<IntVec> dirs, half_edges;
+  std::vector<IntVec3> dirs, half_edges;
   std::vector<std::string> names;
   for (const MovingObb* m : {&a, &b}) {
     for (int i = 0; i < 3; ++i) {
@@ -80,14 +57,14 @@ std::optional<std::vector<MovingAxis>> spanning_moving_axes(const MovingObb& a, 
       dirs.push_back(on_grid(column, columns));
       mpz_class half;
       set_on(half, m->box.half[i], halves);
-      IntVec h;
+      IntVec3 h;
       for (int k = 0; k < 3; ++k) mpz_mul(h[k].get_mpz_t(), half.get_mpz_t(), dirs.back()[k].get_mpz_t());
       half_edges.push_back(std::move(h));
       names.push_back(std::string(m == &a ? "A" : "B") + "." + kAxisNames[i]);
     }
   }
   const std::size_t n = dirs.size();
-  std::vector<IntVec> crosses(n * n);
+  std::vector<IntVec3> crosses(n * n);
   bool spans = false;
   mpz_class t;
   for (std::size_t i = 0; i < n; ++i) {
@@ -101,21 +78,21 @@ std::optional<std::vector<MovingAxis>> spanning_moving_axes(const MovingObb& a, 
   }
   if (!spans) return std::nullopt;
   std::vector<Magnitude> lengths;
-  for (const IntVec& d : dirs) {
+  for (const IntVec3& d : dirs) {
     dot(t, d, d);
     lengths.push_back(length_from_square(t, columns));
   }
-  IntVec d = on_grid(b.box.center, centres), w = on_grid(b.velocity, velocities);
-  const IntVec ca = on_grid(a.box.center, centres), va = on_grid(a.velocity, velocities);
+  IntVec3 d = on_grid(b.box.center, centres), w = on_grid(b.velocity, velocities);
+  const IntVec3 ca = on_grid(a.box.center, centres), va = on_grid(a.velocity, velocities);
   for (int k = 0; k < 3; ++k) d[k] -= ca[k], w[k] -= va[k];
   std::vector<MovingAxis> out;
   mpz_class p, s, r;
   for (std::size_t i = 0; i < n; ++i) {
     for (std::size_t j = i + 1; j < n; ++j) {
-      const IntVec& c = crosses[i * n + j];
+      const IntVec3& c = crosses[i * n + j];
       if (is_zero(c)) continue;
       r = 0;
-      for (const IntVec& h : half_edges) {
+      for (const IntVec3& h : half_edges) {
         dot(t, c, h);
         mpz_abs(t.get_mpz_t(), t.get_mpz_t());
         r += t;

@@ -157,7 +157,7 @@ class ExactSide {
   void settle(Candidate& c) {
     ++t_counts.exact_axes;
     cross(axis_, dirs_[c.i], dirs_[c.j]);
-    c.present = sgn(axis_[0]) != 0 || sgn(axis_[1]) != 0 || sgn(axis_[2]) != 0;
+    c.present = !exact::is_zero(axis_);
     if (!c.present) return;
     project(shapes_[0], lo_a_, hi_a_);
     project(shapes_[1], lo_b_, hi_b_);
@@ -175,7 +175,7 @@ class ExactSide {
   }
 
  private:
-  using Vec = std::array<mpz_class, 3>;
+  using Vec = IntVec3;
   struct Shape {
     std::vector<Vec> vertices;    // triangles, on 2^L
     Vec center;                   // parallelepipeds, on 2^L
@@ -183,17 +183,11 @@ class ExactSide {
     std::vector<Vec> directions;  // on 2^L
   };
 
-  Vec on_grid(const Vec3& v) const {
-    Vec out;
-    for (int k = 0; k < 3; ++k) set_on(out[k], v[k], exponent_);
-    return out;
-  }
-
   // The skips of float_shape and exact_shape.
   Shape shape(const SatInput& input) const {
     Shape s;
     if (const auto* t = std::get_if<Triangle>(&input)) {
-      for (const Vec3& v : t->v) s.vertices.push_back(on_grid(v));
+      for (const Vec3& v : t->v) s.vertices.push_back(on_grid(v, exponent_));
       for (int i = 0; i < 3; ++i) {
         if (t->v[i] == t->v[(i + 1) % 3]) continue;
         Vec e;
@@ -201,11 +195,11 @@ class ExactSide {
         s.directions.push_back(std::move(e));
       }
     } else if (const auto* b = std::get_if<Obb>(&input)) {
-      s.center = on_grid(b->center);
+      s.center = on_grid(b->center, exponent_);
       for (int i = 0; i < 3; ++i) {
         const Vec3& column = b->axes.col[i];
         if (b->half[i] == 0 || (column.x == 0 && column.y == 0 && column.z == 0)) continue;
-        Vec k = on_grid(column), h;
+        Vec k = on_grid(column, exponent_), h;
         mpz_class half;
         set_on(half, b->half[i], exponent_);
         for (int j = 0; j < 3; ++j) mpz_mul(h[j].get_mpz_t(), half.get_mpz_t(), k[j].get_mpz_t());
@@ -214,7 +208,7 @@ class ExactSide {
       }
     } else {
       const Aabb& box = std::get<Aabb>(input);
-      const Vec lo = on_grid(box.lo), hi = on_grid(box.hi);  // even integers: L is below their last bits
+      const Vec lo = on_grid(box.lo, exponent_), hi = on_grid(box.hi, exponent_);  // even integers: L is below their last bits
       for (int k = 0; k < 3; ++k) {
         mpz_add(s.center[k].get_mpz_t(), lo[k].get_mpz_t(), hi[k].get_mpz_t());
         mpz_tdiv_q_2exp(s.center[k].get_mpz_t(), s.center[k].get_mpz_t(), 1);
@@ -231,19 +225,6 @@ class ExactSide {
       }
     }
     return s;
-  }
-
-  static void cross(Vec& out, const Vec& u, const Vec& v) {
-    for (int i = 0; i < 3; ++i) {
-      const int j = (i + 1) % 3, k = (i + 2) % 3;
-      mpz_mul(out[i].get_mpz_t(), u[j].get_mpz_t(), v[k].get_mpz_t());
-      mpz_submul(out[i].get_mpz_t(), u[k].get_mpz_t(), v[j].get_mpz_t());
-    }
-  }
-  static void dot(mpz_class& out, const Vec& u, const Vec& v) {
-    mpz_mul(out.get_mpz_t(), u[0].get_mpz_t(), v[0].get_mpz_t());
-    mpz_addmul(out.get_mpz_t(), u[1].get_mpz_t(), v[1].get_mpz_t());
-    mpz_addmul(out.get_mpz_t(), u[2].get_mpz_t(), v[2].get_mpz_t());
   }
 
   // The shape's extent along axis_, on 2^4L.

@@ -87,20 +87,6 @@ int triple_index(int i, int j, int k) { return kTriple.of[i][j][k]; }
 
 }  // namespace
 
-void TriangleSat::cross(Vec& out, const Vec& u, const Vec& v) {
-  for (int i = 0; i < 3; ++i) {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    mpz_mul(out[i].get_mpz_t(), u[j].get_mpz_t(), v[k].get_mpz_t());
-    mpz_submul(out[i].get_mpz_t(), u[k].get_mpz_t(), v[j].get_mpz_t());
-  }
-}
-
-void TriangleSat::dot(mpz_class& out, const Vec& u, const Vec& v) {
-  mpz_mul(out.get_mpz_t(), u[0].get_mpz_t(), v[0].get_mpz_t());
-  mpz_addmul(out.get_mpz_t(), u[1].get_mpz_t(), v[1].get_mpz_t());
-  mpz_addmul(out.get_mpz_t(), u[2].get_mpz_t(), v[2].get_mpz_t());
-}
-
 // [e_i, e_j, e_k] into out (0 when two indices are equal or an edge is zero).
 void TriangleSat::triple(mpz_class& out, int i, int j, int k) {
   if (i == j || j == k || i == k) {

@@ -51,8 +51,6 @@ class TriangleSat {
 
  private:
   using Vec = std::array<mpz_class, 3>;
-  void cross(Vec& out, const Vec& u, const Vec& v);
-  void dot(mpz_class& out, const Vec& u, const Vec& v);
   // out = [e_i, e_j, e_k], the triple product of three edges, from triples_.
   void triple(mpz_class& out, int i, int j, int k);
   // gap_ = max(b.lo - a.hi, a.lo - b.hi) along an axis, from the projections of the edges
