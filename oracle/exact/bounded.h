@@ -11,6 +11,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "collide/vec3.h"
+
 namespace cc::exact {
 
 struct Bounded {
@@ -57,6 +59,10 @@ struct BoundedVec3 {
   Bounded x, y, z;
   Bounded operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
 };
+
+/// A double, or a vector of them, standing for itself: a bound of 0.
+inline Bounded exactly(double x) { return {x, 0}; }
+inline BoundedVec3 exactly(const Vec3& v) { return {exactly(v.x), exactly(v.y), exactly(v.z)}; }
 
 inline BoundedVec3 operator+(const BoundedVec3& a, const BoundedVec3& b) { return {a.x + b.x, a.y + b.y, a.z + b.z}; }
 inline BoundedVec3 operator-(const BoundedVec3& a, const BoundedVec3& b) { return {a.x - b.x, a.y - b.y, a.z - b.z}; }

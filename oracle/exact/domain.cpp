@@ -82,11 +82,7 @@ std::optional<std::string> not_orthonormal(const Mat3& axes) {
   for (int i = 0; i < 3; ++i) {
     for (int j = i; j < 3; ++j) {
       // In floating point when the entry's bound puts it clearly inside the tolerance.
-      const auto column = [&axes](int k) {
-        const Vec3& c = axes.col[k];
-        return BoundedVec3{{c.x, 0}, {c.y, 0}, {c.z, 0}};
-      };
-      const Bounded filtered = dot(column(i), column(j)) - Bounded{i == j ? 1.0 : 0.0, 0};
+      const Bounded filtered = dot(exactly(axes.col[i]), exactly(axes.col[j])) - exactly(i == j ? 1.0 : 0.0);
       if (filtered.finite() && std::fabs(filtered.v) + filtered.e < kObbOrthonormalTolerance * (1 - 0x1p-40)) continue;
       Rational g = dot(rational(axes.col[i]), rational(axes.col[j]));
       if (i == j) g -= 1;

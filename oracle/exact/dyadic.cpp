@@ -1,20 +1,9 @@
 #include "oracle/exact/dyadic.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace cc::exact {
-namespace {
-
-// m 2^e as a Magnitude (as rational.cpp normalises one).
-Magnitude normalised(double m, long e) {
-  if (m == 0 || !std::isfinite(m)) return {m, 0};
-  int k = 0;
-  const double f = std::frexp(m, &k);
-  return {2 * f, e + k - 1};
-}
-
-}  // namespace
-
 namespace {
 
 // x = odd 2^exponent, for a finite nonzero x.
@@ -34,6 +23,13 @@ long lowest_exponent(double x) {
   long exponent = 0;
   split(x, odd, exponent);
   return exponent;
+}
+
+long lowest_exponent(const Vec3& v, long bound) {
+  for (int k = 0; k < 3; ++k) {
+    if (v[k] != 0) bound = std::min(bound, lowest_exponent(v[k]));
+  }
+  return bound;
 }
 
 void set_on(mpz_class& out, double x, long exponent) {
@@ -81,11 +77,7 @@ Rational rational_on(const mpz_class& x, long exponent) {
 }
 
 Magnitude length_from_square(const mpz_class& square, long exponent) {
-  const Magnitude s = nearest_magnitude(square, 0);
-  if (s.m == 0) return {};
-  const bool odd = (s.e % 2) != 0;
-  const double root = std::sqrt(odd ? 2 * s.m : s.m);
-  return normalised(root, (odd ? s.e - 1 : s.e) / 2 + exponent);
+  return sqrt(nearest_magnitude(square, 2 * exponent));
 }
 
 }  // namespace cc::exact

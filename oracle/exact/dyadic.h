@@ -16,6 +16,9 @@ namespace cc::exact {
 
 /// The binary exponent of the last bit of a finite nonzero double: x = m 2^e with an odd m.
 long lowest_exponent(double x);
+/// The least of `bound` and the last bits' exponents of v's nonzero coordinates: every
+/// coordinate of v is an integer on 2^result.
+long lowest_exponent(const Vec3& v, long bound);
 
 /// out = x / 2^exponent, an integer: requires x finite and exponent <= lowest_exponent(x) (or
 /// x == 0).

@@ -1,6 +1,5 @@
 #include "oracle/exact/exact_kdops.h"
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -16,26 +15,19 @@ namespace cc::exact {
 std::vector<ExactSlab> exact_kdop_slabs(int k, const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
   long lowest = 0;
   for (const auto* set : {&a, &b}) {
-    for (const Vec3& p : *set) {
-      for (int i = 0; i < 3; ++i) {
-        if (p[i] != 0) lowest = std::min(lowest, lowest_exponent(p[i]));
-      }
-    }
+    for (const Vec3& p : *set) lowest = lowest_exponent(p, lowest);
   }
-  using IntPoint = std::array<mpz_class, 3>;
-  const auto on_grid = [lowest](const std::vector<Vec3>& points) {
-    std::vector<IntPoint> out(points.size());
-    for (std::size_t j = 0; j < points.size(); ++j) {
-      for (int i = 0; i < 3; ++i) set_on(out[j][i], points[j][i], lowest);
-    }
+  const auto placed = [lowest](const std::vector<Vec3>& points) {
+    std::vector<IntVec3> out;
+    for (const Vec3& p : points) out.push_back(on_grid(p, lowest));
     return out;
   };
-  const std::vector<IntPoint> ia = on_grid(a), ib = on_grid(b);
+  const std::vector<IntVec3> ia = placed(a), ib = placed(b);
   std::vector<ExactSlab> slabs;
   mpz_class s, a_lo, a_hi, b_lo, b_hi, overlap;
   for (const KdopDirection& dir : kdop_directions(k)) {
     const std::array<int, 3> d{dir.x, dir.y, dir.z};
-    const auto extent = [&d, &s](const std::vector<IntPoint>& points, mpz_class& lo, mpz_class& hi) {
+    const auto extent = [&d, &s](const std::vector<IntVec3>& points, mpz_class& lo, mpz_class& hi) {
       for (std::size_t j = 0; j < points.size(); ++j) {
         s = 0;
         for (int i = 0; i < 3; ++i) {

@@ -32,11 +32,7 @@ std::optional<std::vector<MovingAxis>> spanning_moving_axes(const MovingObb& a, 
   const auto lowest_of = [&a, &b](auto member) {
     long lowest = 0;
     for (const MovingObb* m : {&a, &b}) {
-      for (const Vec3* v : member(*m)) {
-        for (int k = 0; k < 3; ++k) {
-          if ((*v)[k] != 0) lowest = std::min(lowest, lowest_exponent((*v)[k]));
-        }
-      }
+      for (const Vec3* v : member(*m)) lowest = lowest_exponent(*v, lowest);
     }
     return lowest;
   };

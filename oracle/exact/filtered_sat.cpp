@@ -14,9 +14,6 @@ namespace {
 
 thread_local SatFilterCounts t_counts;
 
-Bounded exactly(double x) { return {x, 0}; }
-BoundedVec3 exactly(const Vec3& p) { return {exactly(p.x), exactly(p.y), exactly(p.z)}; }
-
 // A shape as exact_shape builds it, in floating point: the same directions in the same order.
 struct FloatShape {
   std::vector<BoundedVec3> vertices;    // triangles
@@ -129,19 +126,16 @@ class ExactSide {
  public:
   ExactSide(const SatInput& a, const SatInput& b) {
     long lowest = 0;
-    const auto note = [&lowest](double x) {
-      if (x != 0) lowest = std::min(lowest, lowest_exponent(x));
-    };
     for (const SatInput* s : {&a, &b}) {
       if (const auto* t = std::get_if<Triangle>(s)) {
-        for (const Vec3& v : t->v) note(v.x), note(v.y), note(v.z);
+        for (const Vec3& v : t->v) lowest = lowest_exponent(v, lowest);
       } else if (const auto* o = std::get_if<Obb>(s)) {
         for (const Vec3* v : {&o->center, &o->half, &o->axes.col[0], &o->axes.col[1], &o->axes.col[2]}) {
-          note(v->x), note(v->y), note(v->z);
+          lowest = lowest_exponent(*v, lowest);
         }
       } else {
         const Aabb& box = std::get<Aabb>(*s);
-        for (const Vec3* v : {&box.lo, &box.hi}) note(v->x), note(v->y), note(v->z);
+        lowest = lowest_exponent(box.hi, lowest_exponent(box.lo, lowest));
       }
     }
     exponent_ = lowest - 1;
