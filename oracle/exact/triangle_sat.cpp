@@ -203,11 +203,10 @@ std::optional<TriangleSatVerdict> TriangleSat::operator()(const std::array<const
     const Magnitude g = nearest_magnitude(gap_, axis_exponent + least);
     if (sgn(gap_) > 0) {
       separated = true;
-      best_separation = std::max(best_separation, (g / conditioning).to_double());
+      best_separation = std::max(best_separation, separation_along(g, conditioning));
     } else if (verdict.rank == 3 && !separated) {  // the overlap counts only when nothing separates
       dot(product_, axis, axis);
-      const double overlap = sgn(gap_) == 0 ? 0.0 : -(g / length_from_square(product_, axis_exponent)).to_double();
-      worst_overlap = std::min(worst_overlap, overlap);
+      worst_overlap = std::min(worst_overlap, overlap_along(g, length_from_square(product_, axis_exponent)));
     }
   };
   // Along e_i x e_j: the triple products with the edges a0->a1, a2->a0, b0->b1, b2->b0.
